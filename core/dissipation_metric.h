@@ -1,0 +1,57 @@
+// DissipationMetric: the symmetric semi-definite k: g* × g* → R through its
+// musical map k♯: g* → g (paper, eq. "varphi"): φ(ξ) = k♯(ad*_ξ ∂l/∂ξ(ξ)).
+// A negative scale (α < 0) is allowed: energy ascent on the orbit (DESIGN.md §4).
+#pragma once
+
+#include <string>
+
+#include "core/errors.h"
+
+namespace ddb {
+
+template <class G>
+class DissipationMetric {
+ public:
+  using Algebra = typename G::template Algebra<double>;
+  using Dual = typename G::template Dual<double>;
+
+  virtual ~DissipationMetric() = default;
+  /// k♯(mu); linear in mu.
+  virtual Algebra sharp(const Dual& mu) const = 0;
+};
+
+/// k♯ = α · identity (coordinates of g* identified with those of g by the basis,
+/// or by the trace pairing for matrix algebras). The rigid body of Section 5.
+template <class G>
+class ScaledIdentityMetric : public DissipationMetric<G> {
+ public:
+  using typename DissipationMetric<G>::Algebra;
+  using typename DissipationMetric<G>::Dual;
+
+  explicit ScaledIdentityMetric(double alpha) : alpha_(requireFinite("alpha", alpha)) {}
+  Algebra sharp(const Dual& mu) const override { return alpha_ * mu; }
+  double alpha() const { return alpha_; }
+
+ private:
+  double alpha_;
+};
+
+/// k♯ = α · diag(k), k_i >= 0 (the heavy-top and Kirchhoff metrics of DESIGN.md §5).
+template <class G>
+class DiagonalMetric : public DissipationMetric<G> {
+ public:
+  using typename DissipationMetric<G>::Algebra;
+  using typename DissipationMetric<G>::Dual;
+
+  DiagonalMetric(double alpha, const Algebra& k) : alpha_(requireFinite("alpha", alpha)), k_(k) {
+    requireFinite("metric", k_);
+    if ((k_.array() < 0).any()) throwInvalid("metric", formatValue(k_), "entries must be >= 0");
+  }
+  Algebra sharp(const Dual& mu) const override { return alpha_ * k_.cwiseProduct(mu); }
+
+ private:
+  double alpha_;
+  Algebra k_;
+};
+
+}  // namespace ddb

@@ -1,0 +1,23 @@
+// Lagrangian and Hamiltonian interfaces (paper, Section 2): a reduced Lagrangian
+// l: g → R with ∂l/∂ξ ∈ g*, and a Hamiltonian H: g* → R with ∂H/∂μ ∈ g.
+#pragma once
+
+#include "core/smooth_function.h"
+
+namespace ddb {
+
+template <class G>
+class Lagrangian : public SmoothFunction<typename G::template Algebra<double>,
+                                         typename G::template Dual<double>> {
+ public:
+  using Group = G;
+};
+
+template <class G>
+class Hamiltonian : public SmoothFunction<typename G::template Dual<double>,
+                                          typename G::template Algebra<double>> {
+ public:
+  using Group = G;
+};
+
+}  // namespace ddb

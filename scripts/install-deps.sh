@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages this project builds with (run as root).
+# Skips apt-get entirely when everything is already present.
+set -euo pipefail
+packages=(cmake g++ make libeigen3-dev libceres-dev libspdlog-dev libgtest-dev libgmock-dev
+          libbenchmark-dev libboost-dev libcli11-dev python3-matplotlib)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ "${#missing[@]}" -gt 0 ]; then
+  echo "installing: ${missing[*]}"
+  apt-get update
+  DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
+fi

@@ -1,0 +1,56 @@
+// The free rigid body with double-bracket dissipation (paper, Sections 3 and 5):
+//   l(Ω) = ½ Ω·𝕀Ω,  H(M) = ½ M·𝕀^{-1}M,  k♯ = α I,  φ(Ω) = α 𝕀Ω × Ω,
+//   Ṁ = M × Ω + α M × (M × Ω)   (eq. "diss_rbd"),  Casimir |M|.
+#pragma once
+
+#include <memory>
+
+#include "core/autodiff.h"
+#include "core/dissipation_metric.h"
+#include "core/lie_poisson_system.h"
+#include "groups/so3.h"
+
+namespace ddb {
+
+class RigidBodyLagrangian : public AutoDiffLagrangian<RigidBodyLagrangian, SO3> {
+ public:
+  explicit RigidBodyLagrangian(const Eigen::Vector3d& inertia)
+      : inertia_(requirePositive("inertia", inertia)) {}
+
+  template <class T>
+  T evaluate(const Eigen::Matrix<T, 3, 1>& omega) const {
+    T sum = constant<T>(0.0);
+    for (int i = 0; i < 3; ++i) sum += constant<T>(inertia_(i)) * omega(i) * omega(i);
+    return constant<T>(0.5) * sum;
+  }
+
+ private:
+  Eigen::Vector3d inertia_;
+};
+
+class RigidBodyHamiltonian : public AutoDiffHamiltonian<RigidBodyHamiltonian, SO3> {
+ public:
+  explicit RigidBodyHamiltonian(const Eigen::Vector3d& inertia)
+      : inertia_(requirePositive("inertia", inertia)) {}
+
+  template <class T>
+  T evaluate(const Eigen::Matrix<T, 3, 1>& m) const {
+    T sum = constant<T>(0.0);
+    for (int i = 0; i < 3; ++i) sum += m(i) * m(i) / constant<T>(inertia_(i));
+    return constant<T>(0.5) * sum;
+  }
+
+ private:
+  Eigen::Vector3d inertia_;
+};
+
+/// The rigid body of principal moments `inertia` (all > 0) and damping `alpha`.
+inline std::shared_ptr<const LiePoissonSystem<SO3>> makeRigidBody(const Eigen::Vector3d& inertia,
+                                                                  double alpha) {
+  return std::make_shared<const LiePoissonSystem<SO3>>(
+      "rigid-body", std::make_shared<const RigidBodyHamiltonian>(inertia),
+      std::make_shared<const ScaledIdentityMetric<SO3>>(alpha),
+      std::make_shared<const RigidBodyLagrangian>(inertia));
+}
+
+}  // namespace ddb

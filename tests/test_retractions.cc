@@ -1,0 +1,133 @@
+// Generic retraction suite over every (group, retraction) pair: τ(0) = e,
+// τ(x)τ(-x) = e, τ^{-1}∘τ = id, dτ against central differences of τ,
+// dτ∘dτ^{-1} = I, the dual against the pairing, and the paper's identity
+// (dτ^{-1}_{-x})* = Ad*_{τ(x)} (dτ^{-1}_x)* (Section 4.1).
+#include <unsupported/Eigen/MatrixFunctions>
+
+#include "test_support.h"
+
+namespace ddb::test {
+namespace {
+
+template <class R>
+class RetractionTest : public ::testing::Test {
+ protected:
+  using G = typename R::Group;
+  using A = typename G::template Algebra<double>;
+  using D = typename G::template Dual<double>;
+  R retraction;
+  Sampler sampler;
+  std::vector<A> points() {
+    // Cayley is singular nowhere on compact groups but the near-π points matter only for exp.
+    auto p = samplePoints<G>(sampler, /*near_pi=*/true);
+    for (int i = 0; i < 2; ++i) p.push_back(1.5 * sampler.vector<A>());
+    return p;
+  }
+};
+
+// Adding a group or a retraction: append the pair here.
+using Retractions = ::testing::Types<Cayley<SO3>, Exponential<SO3>>;
+TYPED_TEST_SUITE(RetractionTest, Retractions);
+
+TYPED_TEST(RetractionTest, IdentityAndInverseProperty) {
+  using G = typename TestFixture::G;
+  using A = typename TestFixture::A;
+  const auto& r = this->retraction;
+  EXPECT_LT((r.tau(A::Zero().eval()) - G::template identity<double>()).norm(), kTight);
+  for (const auto& x : this->points()) {
+    const A minus = -x;
+    EXPECT_LT((G::compose(r.tau(x), r.tau(minus)) - G::template identity<double>()).norm(), 1e-12)
+        << "x = " << x.transpose();
+  }
+}
+
+TYPED_TEST(RetractionTest, TauInverseInvertsTau) {
+  for (const auto& x : this->points()) {
+    const double tolerance = x.norm() > 3.0 ? 1e-8 : 1e-12;
+    EXPECT_LT((this->retraction.tauInverse(this->retraction.tau(x)) - x).norm(),
+              tolerance * (1 + x.norm()))
+        << "x = " << x.transpose();
+  }
+}
+
+TYPED_TEST(RetractionTest, TangentMatchesCentralDifferences) {
+  using G = typename TestFixture::G;
+  using A = typename TestFixture::A;
+  const auto& r = this->retraction;
+  const double eps = 1e-6;
+  for (const auto& x : this->points()) {
+    const A y = this->sampler.template vector<A>();
+    const A xp = x + eps * y, xm = x - eps * y;
+    const auto difference = ((r.tau(xp) - r.tau(xm)) / (2 * eps)).eval();
+    // T_xτ(y) = dτ_x(y) τ(x)
+    const auto expected = (G::hat(r.dTau(x, y)) * r.tau(x)).eval();
+    EXPECT_LT((difference - expected).norm(), 1e-8 * (1 + x.squaredNorm()))
+        << "x = " << x.transpose();
+  }
+}
+
+TYPED_TEST(RetractionTest, TangentInverseAndDual) {
+  using G = typename TestFixture::G;
+  using A = typename TestFixture::A;
+  using D = typename TestFixture::D;
+  const auto& r = this->retraction;
+  for (const auto& x : this->points()) {
+    const A y = this->sampler.template vector<A>();
+    const D mu = this->sampler.template vector<D>();
+    const double scale = 1 + x.squaredNorm();
+    EXPECT_LT((r.dTau(x, r.dTauInverse(x, y)) - y).norm(), 1e-12 * scale);
+    EXPECT_LT((r.dTauInverse(x, r.dTau(x, y)) - y).norm(), 1e-12 * scale);
+    EXPECT_NEAR(G::pairing(r.dTauInverseDual(x, mu), y), G::pairing(mu, r.dTauInverse(x, y)),
+                1e-12 * scale);
+    const A minus = -x;
+    const D lhs = r.dTauInverseDual(minus, mu);
+    const D rhs = G::AdDual(r.tau(x), r.dTauInverseDual(x, mu));
+    EXPECT_LT((lhs - rhs).norm(), 1e-12 * scale) << "x = " << x.transpose();
+  }
+}
+
+TEST(Cayley, SO3DualMatchesPaperClosedForm) {
+  // (dcay^{-1}_x)* = I + x̂/2 + x xᵀ/4 (paper, Section 4.1).
+  Sampler s;
+  Cayley<SO3> cay;
+  for (int i = 0; i < 5; ++i) {
+    const Eigen::Vector3d x = 2 * s.vector<Eigen::Vector3d>(), mu = s.vector<Eigen::Vector3d>();
+    const Eigen::Matrix3d closed =
+        Eigen::Matrix3d::Identity() + SO3::hat(x) / 2 + x * x.transpose() / 4;
+    EXPECT_LT((cay.dTauInverseDual(x, mu) - closed * mu).norm(), 1e-14);
+  }
+}
+
+// Truncated dexp^{-1}: the error against the closed form scales like |x|^q, q the
+// index of the first omitted non-zero Bernoulli term (B_j = 0 for odd j > 1), so
+// q = order + 1 when order + 1 is even and order + 2 otherwise. Fitted log-log slope.
+TEST(TruncatedExponential, ErrorShrinksLikeFirstOmittedPower) {
+  Sampler s;
+  const Eigen::Vector3d direction = s.vector<Eigen::Vector3d>().normalized();
+  const Eigen::Vector3d mu = s.vector<Eigen::Vector3d>();
+  for (int order = 1; order <= 6; ++order) {
+    TruncatedExponential<SO3> truncated(order);
+    Exponential<SO3> exact;
+    std::vector<double> lx, le;
+    for (double r : {1.0, 0.7, 0.5, 0.35, 0.25, 0.18, 0.125, 0.09}) {
+      const Eigen::Vector3d x = r * direction;
+      const double error = (truncated.dTauInverseDual(x, mu) - exact.dTauInverseDual(x, mu)).norm();
+      if (error < 1e-13) continue;  // round-off plateau
+      lx.push_back(std::log(r));
+      le.push_back(std::log(error));
+    }
+    ASSERT_GE(lx.size(), 4u) << "order " << order;
+    const double mx = std::accumulate(lx.begin(), lx.end(), 0.0) / lx.size();
+    const double me = std::accumulate(le.begin(), le.end(), 0.0) / le.size();
+    double sxy = 0, sxx = 0;
+    for (size_t i = 0; i < lx.size(); ++i) {
+      sxy += (lx[i] - mx) * (le[i] - me);
+      sxx += (lx[i] - mx) * (lx[i] - mx);
+    }
+    const int expected = (order + 1) % 2 == 0 ? order + 1 : order + 2;
+    EXPECT_NEAR(sxy / sxx, expected, 0.1) << "order " << order;
+  }
+}
+
+}  // namespace
+}  // namespace ddb::test
