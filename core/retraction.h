@@ -25,7 +25,7 @@ class Retraction {
                                          const typename G::template Algebra<T>& b,
                                          const typename G::template Dual<T>& mu) const {
     const auto& self = static_cast<const Derived&>(*this);
-    return G::AdDual(G::template compose<T>(self.tau(a), self.tau(b)), mu);
+    return G::AdDual(G::compose(self.tau(a), self.tau(b)), mu);
   }
 };
 

@@ -1,0 +1,68 @@
+// OneStepMethod: the interface every integrator implements, and integrate(), which
+// drives one over N steps and shows an observer every state μ_k (the read-out, not
+// a method's internal variables). A failed step keeps the valid prefix: the
+// observer has seen every state before it when the typed SolveFailure propagates.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/errors.h"
+
+namespace ddb {
+
+template <class G>
+class OneStepMethod {
+ public:
+  using Group = G;
+  using Dual = typename G::template Dual<double>;
+
+  virtual ~OneStepMethod() = default;
+  virtual std::string name() const = 0;
+  /// Forgets warm-start data; integrate() calls it before a new trajectory.
+  virtual void reset() {}
+  /// μ(t + h) from μ(t). Throws SolveFailure (step index -1) if an implicit solve fails.
+  virtual Dual step(const Dual& mu, double t, double h) = 0;
+};
+
+/// Advances `steps` steps of size h from (t0, mu0); observer(k, t_k, mu_k) sees k = 0..steps.
+/// Throws SolveFailure with the failing step index, after the observer saw the states before it.
+template <class G, class Observer>
+void integrate(OneStepMethod<G>& method, const typename G::template Dual<double>& mu0, double t0,
+               double h, long steps, Observer&& observer) {
+  requireFinite("mu0", mu0);
+  requireFinite("t0", t0);
+  requirePositive("h", h);
+  if (steps < 0) throwInvalid("steps", std::to_string(steps), "must be >= 0");
+  method.reset();
+  typename G::template Dual<double> mu = mu0;
+  observer(0L, t0, mu);
+  for (long k = 0; k < steps; ++k) {
+    const double t = t0 + static_cast<double>(k) * h;
+    try {
+      mu = method.step(mu, t, h);
+    } catch (const SolveFailure& failure) {
+      throw failure.atStep(k);
+    }
+    if (!mu.allFinite()) {
+      throw SolveFailure(method.name() + " step (state became non-finite)", k, t, h, INFINITY, 0);
+    }
+    observer(k + 1, t0 + static_cast<double>(k + 1) * h, mu);
+  }
+}
+
+/// The states of a trajectory, filled by integrate() through record().
+template <class G>
+struct Trajectory {
+  std::vector<double> times;
+  std::vector<typename G::template Dual<double>> states;
+
+  auto record() {
+    return [this](long, double t, const typename G::template Dual<double>& mu) {
+      times.push_back(t);
+      states.push_back(mu);
+    };
+  }
+};
+
+}  // namespace ddb

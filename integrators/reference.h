@@ -1,0 +1,77 @@
+// The reference solver: Boost.Odeint's controlled runge_kutta_fehlberg78 (order 8
+// with embedded 7) on the continuous vector field, stepping adaptively from each
+// step time to the next so that every observed state is at t_k exactly (the role
+// of the paper's DOP853 with tight tolerances).
+#pragma once
+
+#include <array>
+#include <boost/numeric/odeint.hpp>
+#include <memory>
+#include <string>
+
+#include "core/lie_poisson_system.h"
+#include "integrators/one_step_method.h"
+
+namespace ddb {
+
+/// The continuous vector field as an odeint system on std::array states.
+template <class G>
+struct OdeintSystem {
+  using State = std::array<double, G::kDim>;
+  using Dual = typename G::template Dual<double>;
+  const LiePoissonSystem<G>& system;
+  void operator()(const State& x, State& dxdt, double) const {
+    Eigen::Map<Dual>(dxdt.data()) = system.vectorField(Dual(Eigen::Map<const Dual>(x.data())));
+  }
+};
+
+template <class G>
+class ReferenceSolver : public OneStepMethod<G> {
+ public:
+  using Dual = typename G::template Dual<double>;
+  using State = typename OdeintSystem<G>::State;
+
+  explicit ReferenceSolver(std::shared_ptr<const LiePoissonSystem<G>> system,
+                           double tolerance = 1e-13)
+      : system_(std::move(system)), tolerance_(requirePositive("tolerance", tolerance)) {}
+
+  std::string name() const override { return "reference"; }
+  void reset() override { dt_ = 0.0; }
+
+  Dual step(const Dual& mu, double t, double h) override {
+    namespace odeint = boost::numeric::odeint;
+    auto stepper =
+        odeint::make_controlled<odeint::runge_kutta_fehlberg78<State>>(tolerance_, tolerance_);
+    const OdeintSystem<G> rhs{*system_};
+    State x;
+    Eigen::Map<Dual>(x.data()) = mu;
+    const double end = t + h;
+    double time = t;
+    double dt = dt_ > 0.0 ? dt_ : h;
+    int rejected = 0;
+    while (end - time > 1e-14 * std::abs(end)) {
+      const bool last = time + dt >= end;
+      double trial = last ? end - time : dt;
+      const double before = trial;
+      if (stepper.try_step(rhs, x, time, trial) == odeint::success) {
+        if (last) time = end;  // land on t_{k+1} exactly
+        dt = (last && trial > before) ? std::max(dt, trial) : trial;
+        rejected = 0;
+      } else {
+        dt = trial;
+        if (++rejected > 100) {
+          throw SolveFailure("reference step-size control", -1, time, dt, INFINITY, tolerance_);
+        }
+      }
+    }
+    dt_ = dt;
+    return Eigen::Map<const Dual>(x.data());
+  }
+
+ private:
+  std::shared_ptr<const LiePoissonSystem<G>> system_;
+  double tolerance_;
+  double dt_ = 0.0;
+};
+
+}  // namespace ddb

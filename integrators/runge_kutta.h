@@ -1,0 +1,104 @@
+// Runge–Kutta methods on the continuous vector field μ̇ = ad*_{ξ+φ(ξ)} μ, driven by
+// a ButcherTableau: explicit tableaus step directly, implicit ones solve the stage
+// equations K_i = f(μ + h Σ_j a_ij K_j) with Ceres TinySolver (S·n unknowns).
+// Neither keeps the coadjoint orbit: they are the paper's general-purpose peers.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+
+#include "core/errors.h"
+#include "core/lie_poisson_system.h"
+#include "integrators/butcher_tableau.h"
+#include "integrators/one_step_method.h"
+#include "integrators/tiny_solver.h"
+
+namespace ddb {
+
+template <class G, int S>
+class ExplicitRungeKutta : public OneStepMethod<G> {
+ public:
+  using Dual = typename G::template Dual<double>;
+
+  ExplicitRungeKutta(std::shared_ptr<const LiePoissonSystem<G>> system,
+                     const ButcherTableau<S>& tableau)
+      : system_(std::move(system)), tableau_(tableau) {
+    if (!tableau_.isExplicit()) {
+      throw InvalidArgument(std::string("tableau = ") + tableau_.name + " is not explicit");
+    }
+  }
+  std::string name() const override { return tableau_.name; }
+
+  Dual step(const Dual& mu, double, double h) override {
+    std::array<Dual, S> k;
+    Dual sum = Dual::Zero();
+    for (int i = 0; i < S; ++i) {
+      Dual stage = mu;
+      for (int j = 0; j < i; ++j) {
+        if (tableau_.a[i][j] != 0.0) stage += (h * tableau_.a[i][j]) * k[j];
+      }
+      k[i] = system_->vectorField(stage);
+      sum += tableau_.b[i] * k[i];
+    }
+    return mu + h * sum;
+  }
+
+ private:
+  std::shared_ptr<const LiePoissonSystem<G>> system_;
+  ButcherTableau<S> tableau_;
+};
+
+template <class G, int S>
+class ImplicitRungeKutta : public OneStepMethod<G> {
+ public:
+  using Dual = typename G::template Dual<double>;
+  static constexpr int kDim = G::kDim;
+  static constexpr int kUnknowns = S * kDim;
+  using Stages = Eigen::Matrix<double, kUnknowns, 1>;
+
+  ImplicitRungeKutta(std::shared_ptr<const LiePoissonSystem<G>> system,
+                     const ButcherTableau<S>& tableau, SolverOptions options = {})
+      : system_(std::move(system)), tableau_(tableau), options_(options) {}
+  std::string name() const override { return tableau_.name; }
+
+  Dual step(const Dual& mu, double t, double h) override {
+    const Dual f0 = system_->vectorField(mu);
+    Stages K;
+    for (int i = 0; i < S; ++i) K.template segment<kDim>(i * kDim) = f0;  // warm start
+    const StageEquations equations{*system_, tableau_, mu, h};
+    // Scale: the stage slopes and the state (so that equilibria, K = 0, are handled).
+    solveTiny<kUnknowns>(equations, K, f0.norm() * std::sqrt(double(S)) + mu.norm(), options_,
+                         "Runge-Kutta stage equations", t, h);
+    Dual next = mu;
+    for (int i = 0; i < S; ++i) next += (h * tableau_.b[i]) * K.template segment<kDim>(i * kDim);
+    return next;
+  }
+
+ private:
+  // r_i = K_i - f(μ + h Σ_j a_ij K_j)
+  struct StageEquations {
+    const LiePoissonSystem<G>& system;
+    const ButcherTableau<S>& tableau;
+    const Dual& mu;
+    double h;
+    template <class T>
+    bool operator()(const T* x, T* r) const {
+      using D = typename G::template Dual<T>;
+      for (int i = 0; i < S; ++i) {
+        D stage = mu.template cast<T>();
+        for (int j = 0; j < S; ++j) {
+          stage += Eigen::Map<const D>(x + j * kDim) * T(h * tableau.a[i][j]);
+        }
+        Eigen::Map<D>(r + i * kDim) = Eigen::Map<const D>(x + i * kDim) - system.vectorField(stage);
+      }
+      return true;
+    }
+  };
+
+  std::shared_ptr<const LiePoissonSystem<G>> system_;
+  ButcherTableau<S> tableau_;
+  SolverOptions options_;
+};
+
+}  // namespace ddb

@@ -1,0 +1,194 @@
+// Integrators on the rigid body of Scenario A (DESIGN.md §3): orders fitted against
+// the reference solver, exact Casimir preservation of DDB, agreement of its two
+// forms, the reference against itself, and a failed solve keeping the prefix.
+#include <gmock/gmock.h>
+
+#include "integrators/ddb.h"
+#include "integrators/reference.h"
+#include "integrators/runge_kutta.h"
+#include "order_fit.h"
+#include "systems/rigid_body.h"
+#include "test_support.h"
+
+namespace ddb::test {
+namespace {
+
+const Eigen::Vector3d kInertia(1.0, 1.3, 0.5);
+const Eigen::Vector3d kOmega0(0.0, 0.05, 1.0);
+const Eigen::Vector3d kM0 = kInertia.cwiseProduct(kOmega0);
+
+Eigen::Vector3d finalState(OneStepMethod<SO3>& method, double h, double t_end) {
+  Eigen::Vector3d last;
+  const long steps = std::lround(t_end / h);
+  integrate(method, kM0, 0.0, h, steps,
+            [&](long, double, const Eigen::Vector3d& mu) { last = mu; });
+  return last;
+}
+
+Eigen::Vector3d referenceState(double alpha, double t_end, double tolerance = 1e-13) {
+  ReferenceSolver<SO3> reference(makeRigidBody(kInertia, alpha), tolerance);
+  return finalState(reference, 0.5, t_end);
+}
+
+struct OrderCase {
+  std::string method;
+  double alpha;
+  double expected;
+  std::vector<double> hs;
+};
+
+std::unique_ptr<OneStepMethod<SO3>> makeMethod(const std::string& name, double alpha) {
+  auto body = makeRigidBody(kInertia, alpha);
+  if (name == "ddb-cay") return std::make_unique<Ddb<Cayley<SO3>>>(body);
+  if (name == "ddb-exp")
+    return std::make_unique<Ddb<TruncatedExponential<SO3>>>(body, TruncatedExponential<SO3>(2));
+  if (name == "ddb-exp-exact") return std::make_unique<Ddb<Exponential<SO3>>>(body);
+  if (name == "rk4") return std::make_unique<ExplicitRungeKutta<SO3, 4>>(body, kClassicalRk4);
+  if (name == "lobatto3c") return std::make_unique<ImplicitRungeKutta<SO3, 3>>(body, kLobattoIIIC3);
+  throw std::invalid_argument(name);
+}
+
+class OrderTest : public ::testing::TestWithParam<OrderCase> {};
+
+TEST_P(OrderTest, FittedSlopeMatchesTheoreticalOrder) {
+  const OrderCase& c = GetParam();
+  const double t_end = 10.0;
+  const Eigen::Vector3d reference = referenceState(c.alpha, t_end);
+  std::vector<double> errors;
+  for (double h : c.hs) {
+    auto method = makeMethod(c.method, c.alpha);
+    errors.push_back((finalState(*method, h, t_end) - reference).norm());
+  }
+  const OrderFit fit = fitOrder(c.hs, errors);
+  ASSERT_GE(fit.points, 4) << "too few step sizes above the round-off plateau";
+  EXPECT_NEAR(fit.slope, c.expected, 0.25) << c.method << " alpha " << c.alpha;
+  RecordProperty("slope", std::to_string(fit.slope));
+  std::cout << c.method << " alpha=" << c.alpha << " slope=" << fit.slope << "\n";
+}
+
+const std::vector<double> kDdbSteps{0.1, 0.05, 0.025, 0.0125, 0.00625};
+const std::vector<double> kRkSteps{0.2, 0.1, 0.05, 0.025, 0.0125};
+
+INSTANTIATE_TEST_SUITE_P(ScenarioA, OrderTest,
+                         ::testing::Values(OrderCase{"ddb-cay", 0.5, 1.0, kDdbSteps},
+                                           OrderCase{"ddb-exp", 0.5, 1.0, kDdbSteps},
+                                           OrderCase{"ddb-exp-exact", 0.5, 1.0, kDdbSteps},
+                                           OrderCase{"ddb-cay", 0.0, 2.0, kDdbSteps},
+                                           OrderCase{"ddb-exp", 0.0, 2.0, kDdbSteps},
+                                           OrderCase{"ddb-exp-exact", 0.0, 2.0, kDdbSteps},
+                                           OrderCase{"rk4", 0.5, 4.0, kRkSteps},
+                                           OrderCase{"lobatto3c", 0.5, 4.0, kRkSteps}),
+                         [](const auto& info) {
+                           std::string name =
+                               info.param.method + "_alpha" + (info.param.alpha > 0 ? "05" : "0");
+                           for (char& ch : name)
+                             if (ch == '-') ch = '_';
+                           return name;
+                         });
+
+TEST(Ddb, KeepsCasimirOverTenThousandSteps) {
+  auto body = makeRigidBody(kInertia, 0.5);
+  std::vector<std::unique_ptr<OneStepMethod<SO3>>> methods;
+  for (LegendreForm form : {LegendreForm::kLagrangian, LegendreForm::kHamiltonian}) {
+    methods.push_back(std::make_unique<Ddb<Cayley<SO3>>>(body, Cayley<SO3>(), form));
+    methods.push_back(
+        std::make_unique<Ddb<TruncatedExponential<SO3>>>(body, TruncatedExponential<SO3>(2), form));
+    methods.push_back(std::make_unique<Ddb<Exponential<SO3>>>(body, Exponential<SO3>(), form));
+  }
+  const double c0 = kM0.norm();
+  for (auto& method : methods) {
+    double drift = 0.0;
+    integrate(*method, kM0, 0.0, 0.1, 10000, [&](long, double, const Eigen::Vector3d& mu) {
+      drift = std::max(drift, std::abs(mu.norm() - c0) / c0);
+    });
+    EXPECT_LE(drift, 1e-13) << method->name();
+    std::cout << method->name() << " max relative Casimir drift " << drift << "\n";
+  }
+}
+
+TEST(Ddb, LagrangianAndHamiltonianFormsAgree) {
+  auto body = makeRigidBody(kInertia, 0.5);
+  Ddb<Cayley<SO3>> lagrangian(body, Cayley<SO3>(), LegendreForm::kLagrangian);
+  Ddb<Cayley<SO3>> hamiltonian(body, Cayley<SO3>(), LegendreForm::kHamiltonian);
+  Ddb<Exponential<SO3>> lagrangian_exp(body, Exponential<SO3>(), LegendreForm::kLagrangian);
+  Ddb<Exponential<SO3>> hamiltonian_exp(body, Exponential<SO3>(), LegendreForm::kHamiltonian);
+  EXPECT_LT((finalState(lagrangian, 0.1, 30.0) - finalState(hamiltonian, 0.1, 30.0)).norm(), 1e-12);
+  EXPECT_LT((finalState(lagrangian_exp, 0.1, 30.0) - finalState(hamiltonian_exp, 0.1, 30.0)).norm(),
+            1e-12);
+}
+
+TEST(Ddb, FirstStepSolvesTheDiscreteLegendreEquation) {
+  // Independent check of one step for Cayley on SO(3): with ξ from the step, the
+  // paper's closed form (dcay^{-1}_{hξ})* = I + hξ̂/2 + h²ξξᵀ/4 maps 𝕀ξ back to M_0,
+  // and M_1 = (cay(hξ) cay(hφ))ᵀ M_0 with φ = α 𝕀ξ × ξ.
+  const double h = 0.1, alpha = 0.5;
+  auto body = makeRigidBody(kInertia, alpha);
+  Ddb<Cayley<SO3>> ddb(body);
+  const Eigen::Vector3d M1 = ddb.step(kM0, 0.0, h);
+  // Solve for ξ by a plain fixed-point iteration ξ = 𝕀^{-1}(I + hξ̂/2 + h²ξξᵀ/4)^{-1} M_0.
+  Eigen::Vector3d xi = kOmega0;
+  for (int i = 0; i < 200; ++i) {
+    const Eigen::Matrix3d A =
+        Eigen::Matrix3d::Identity() + h * SO3::hat(xi) / 2 + h * h * xi * xi.transpose() / 4;
+    xi = (A.inverse() * kM0).cwiseQuotient(kInertia);
+  }
+  auto cay = [](const Eigen::Vector3d& x) {
+    const Eigen::Matrix3d X = SO3::hat(x);
+    return Eigen::Matrix3d((Eigen::Matrix3d::Identity() - X / 2).inverse() *
+                           (Eigen::Matrix3d::Identity() + X / 2));
+  };
+  const Eigen::Vector3d phi = alpha * kInertia.cwiseProduct(xi).cross(xi);
+  const Eigen::Vector3d expected = (cay(h * xi) * cay(h * phi)).transpose() * kM0;
+  EXPECT_LT((M1 - expected).norm(), 1e-14);
+}
+
+TEST(Reference, AgreesWithItselfAtTighterTolerance) {
+  auto body = makeRigidBody(kInertia, 0.5);
+  ReferenceSolver<SO3> loose(body, 1e-12), tight(body, 1e-13);
+  Trajectory<SO3> a, b;
+  integrate(loose, kM0, 0.0, 0.1, 300, a.record());
+  integrate(tight, kM0, 0.0, 0.1, 300, b.record());
+  double worst = 0.0;
+  for (size_t k = 0; k < a.states.size(); ++k)
+    worst = std::max(worst, (a.states[k] - b.states[k]).norm());
+  EXPECT_LT(worst, 1e-10);
+}
+
+TEST(Ddb, TooLargeStepThrowsTypedErrorAndKeepsPrefix) {
+  // With τ = exp, |hξ| approaches the poles of dexp^{-1} at 2π: the Legendre equation has
+  // no nearby solution and Newton fails (at h = 10, after 14 good steps). Cayley DDB has
+  // solutions for every h, so it is not the probe here.
+  auto body = makeRigidBody(kInertia, 0.5);
+  Ddb<Exponential<SO3>> ddb(body);
+  Trajectory<SO3> trajectory;
+  const double h = 10.0;
+  try {
+    integrate(ddb, kM0, 0.0, h, 40, trajectory.record());
+    FAIL() << "expected SolveFailure";
+  } catch (const SolveFailure& failure) {
+    EXPECT_GE(failure.step(), 1);
+    EXPECT_EQ(static_cast<long>(trajectory.states.size()), failure.step() + 1);
+    EXPECT_DOUBLE_EQ(failure.time(), failure.step() * h);
+    EXPECT_DOUBLE_EQ(failure.h(), h);
+    EXPECT_GT(failure.residual(), failure.tolerance());
+    EXPECT_THAT(failure.what(), ::testing::HasSubstr("step " + std::to_string(failure.step())));
+    for (const auto& mu : trajectory.states) EXPECT_TRUE(mu.allFinite());
+    std::cout << failure.what() << "\n";
+  }
+}
+
+TEST(Integrate, RejectsBadInputNamingIt) {
+  auto body = makeRigidBody(kInertia, 0.5);
+  ExplicitRungeKutta<SO3, 4> rk4(body, kClassicalRk4);
+  auto ignore = [](long, double, const Eigen::Vector3d&) {};
+  const Eigen::Vector3d bad(1, NAN, 0);
+  EXPECT_THAT([&] { integrate(rk4, bad, 0.0, 0.1, 1, ignore); },
+              ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("mu0")));
+  EXPECT_THAT([&] { integrate(rk4, kM0, 0.0, -0.1, 1, ignore); },
+              ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("h = -0.1")));
+  EXPECT_THAT([&] { integrate(rk4, kM0, 0.0, INFINITY, 1, ignore); },
+              ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("h = inf")));
+}
+
+}  // namespace
+}  // namespace ddb::test
