@@ -81,6 +81,49 @@ struct LieGroupBase {
     return Derived::dualVee(M(g.adjoint() * Derived::dualHat(mu) * gInvH));
   }
 
+  /// Cayley map cay(x) = (I - X/2)^{-1}(I + X/2) (paper, Section 4.1 b)).
+  template <class A>
+  static auto cay(const A& x) {
+    const auto half = matrix<A>(Derived::hat(x) * typename A::Scalar(0.5));
+    const auto I = identityLike(half);
+    return matrix<A>((I - half).partialPivLu().solve(I + half));
+  }
+
+  /// cay^{-1}(g) = 2 (g - I)(g + I)^{-1} (g and its generator commute).
+  template <class M>
+  static auto cayInverse(const M& g) {
+    const M I = identityLike(g);
+    const M X = (g + I).transpose().partialPivLu().solve((g - I).transpose()).transpose();
+    return Derived::vee(M(X * typename M::Scalar(2)));
+  }
+
+  /// dcay_x y = (I - X/2)^{-1} Y (I + X/2)^{-1} (eq. "dcay").
+  template <class A>
+  static A dcay(const A& x, const A& y) {
+    const auto half = matrix<A>(Derived::hat(x) * typename A::Scalar(0.5));
+    const auto I = identityLike(half);
+    const auto left = matrix<A>((I - half).partialPivLu().solve(Derived::hat(y)));
+    const auto both = matrix<A>((I + half).transpose().partialPivLu().solve(left.transpose()));
+    return Derived::vee(matrix<A>(both.transpose()));
+  }
+
+  /// dcay^{-1}_x y = (I - X/2) Y (I + X/2) (eq. "dcayinv").
+  template <class A>
+  static A dcayInv(const A& x, const A& y) {
+    const auto half = matrix<A>(Derived::hat(x) * typename A::Scalar(0.5));
+    const auto I = identityLike(half);
+    return Derived::vee(matrix<A>((I - half) * Derived::hat(y) * (I + half)));
+  }
+
+  /// (dcay^{-1}_x)* mu = dualVee((I - X/2)^H M (I + X/2)^H), M = dualHat(mu).
+  template <class A, class D>
+  static D dcayInvDual(const A& x, const D& mu) {
+    const auto half = matrix<A>(Derived::hat(x) * typename A::Scalar(0.5));
+    const auto I = identityLike(half);
+    return Derived::dualVee(
+        matrix<A>((I - half).adjoint() * Derived::dualHat(mu) * (I + half).adjoint()));
+  }
+
   /// Right-trivialised tangent of exp: dexp_x y = Σ_j ad_x^j y / (j+1)!  (paper, "dexpxy").
   template <class A>
   static A dexp(const A& x, const A& y) {
@@ -127,6 +170,11 @@ struct LieGroupBase {
   }
 
  protected:
+  template <class M>
+  static M identityLike(const M& m) {
+    return M::Identity(m.rows(), m.cols());
+  }
+
   /// The group's matrix type for algebra type A, materialised from an expression.
   template <class A, class Expression>
   static auto matrix(const Expression& e) {

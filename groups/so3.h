@@ -133,6 +133,29 @@ struct SO3 : LieGroupBase<SO3> {
     return v * (T(2) * atan2(vn, w) / vn);
   }
 
+  /// Closed form cay(x) = I + 4/(4 + |x|²) (X + X²/2).
+  template <class T>
+  static Matrix<T> cay(const Algebra<T>& x) {
+    const Matrix<T> X = hat(x);
+    const T c = T(4) / (T(4) + x.squaredNorm());
+    return Matrix<T>::Identity() + (X + X * X * T(0.5)) * c;
+  }
+  /// dcay_x = 4/(4 + |x|²) (I + X/2) (paper, Section 4.1).
+  template <class T>
+  static Algebra<T> dcay(const Algebra<T>& x, const Algebra<T>& y) {
+    return (y + x.cross(y) * T(0.5)) * (T(4) / (T(4) + x.squaredNorm()));
+  }
+  /// dcay^{-1}_x = I - X/2 + x xᵀ/4 (paper, Section 4.1).
+  template <class T>
+  static Algebra<T> dcayInv(const Algebra<T>& x, const Algebra<T>& y) {
+    return y - x.cross(y) * T(0.5) + x * (x.dot(y) * T(0.25));
+  }
+  /// (dcay^{-1}_x)* = I + X/2 + x xᵀ/4 (paper, Section 4.1).
+  template <class T>
+  static Dual<T> dcayInvDual(const Algebra<T>& x, const Dual<T>& mu) {
+    return mu + x.cross(mu) * T(0.5) + x * (x.dot(mu) * T(0.25));
+  }
+
   /// Closed form dexp_x = I + (1 - cos θ)/θ² X + (θ - sin θ)/θ³ X².
   template <class T>
   static Algebra<T> dexp(const Algebra<T>& x, const Algebra<T>& y) {

@@ -33,15 +33,15 @@ class ReferenceSolver : public OneStepMethod<G> {
 
   explicit ReferenceSolver(std::shared_ptr<const LiePoissonSystem<G>> system,
                            double tolerance = 1e-13)
-      : system_(std::move(system)), tolerance_(requirePositive("tolerance", tolerance)) {}
+      : system_(std::move(system)),
+        tolerance_(requirePositive("tolerance", tolerance)),
+        stepper_(typename Controlled::error_checker_type(tolerance_, tolerance_)) {}
 
   std::string name() const override { return "reference"; }
   void reset() override { dt_ = 0.0; }
 
   Dual step(const Dual& mu, double t, double h) override {
     namespace odeint = boost::numeric::odeint;
-    auto stepper =
-        odeint::make_controlled<odeint::runge_kutta_fehlberg78<State>>(tolerance_, tolerance_);
     const OdeintSystem<G> rhs{*system_};
     State x;
     Eigen::Map<Dual>(x.data()) = mu;
@@ -53,7 +53,7 @@ class ReferenceSolver : public OneStepMethod<G> {
       const bool last = time + dt >= end;
       double trial = last ? end - time : dt;
       const double before = trial;
-      if (stepper.try_step(rhs, x, time, trial) == odeint::success) {
+      if (stepper_.try_step(rhs, x, time, trial) == odeint::success) {
         if (last) time = end;  // land on t_{k+1} exactly
         dt = (last && trial > before) ? std::max(dt, trial) : trial;
         rejected = 0;
@@ -69,8 +69,12 @@ class ReferenceSolver : public OneStepMethod<G> {
   }
 
  private:
+  using Fehlberg78 = boost::numeric::odeint::runge_kutta_fehlberg78<State>;
+  using Controlled = boost::numeric::odeint::controlled_runge_kutta<Fehlberg78>;
+
   std::shared_ptr<const LiePoissonSystem<G>> system_;
   double tolerance_;
+  Controlled stepper_;
   double dt_ = 0.0;
 };
 

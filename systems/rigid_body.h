@@ -23,6 +23,13 @@ class RigidBodyLagrangian : public AutoDiffLagrangian<RigidBodyLagrangian, SO3> 
     for (int i = 0; i < 3; ++i) sum += constant<T>(inertia_(i)) * omega(i) * omega(i);
     return constant<T>(0.5) * sum;
   }
+  // Analytic overrides for speed (checked against the autodiff versions in the tests).
+  Eigen::Vector3d gradient(const Eigen::Vector3d& omega) const override {
+    return inertia_.cwiseProduct(omega);
+  }
+  Eigen::Vector3d hessianTimes(const Eigen::Vector3d&, const Eigen::Vector3d& v) const override {
+    return inertia_.cwiseProduct(v);
+  }
 
  private:
   Eigen::Vector3d inertia_;
@@ -38,6 +45,12 @@ class RigidBodyHamiltonian : public AutoDiffHamiltonian<RigidBodyHamiltonian, SO
     T sum = constant<T>(0.0);
     for (int i = 0; i < 3; ++i) sum += m(i) * m(i) / constant<T>(inertia_(i));
     return constant<T>(0.5) * sum;
+  }
+  Eigen::Vector3d gradient(const Eigen::Vector3d& m) const override {
+    return m.cwiseQuotient(inertia_);
+  }
+  Eigen::Vector3d hessianTimes(const Eigen::Vector3d&, const Eigen::Vector3d& v) const override {
+    return v.cwiseQuotient(inertia_);
   }
 
  private:

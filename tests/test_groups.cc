@@ -99,6 +99,10 @@ TYPED_TEST(GroupTest, ClosedFormsAgreeWithGenericBase) {
     EXPECT_LT((G::Ad(g, y) - Base::Ad(g, y)).norm(), kTight);
     EXPECT_LT((G::AdDual(g, mu) - Base::AdDual(g, mu)).norm(), kTight);
     EXPECT_LT((G::inverse(g) - g.inverse()).norm(), kTight);
+    EXPECT_LT((G::cay(x) - Base::cay(x)).norm(), kTight);
+    EXPECT_LT((G::dcay(x, y) - Base::dcay(x, y)).norm(), kTight);
+    EXPECT_LT((G::dcayInv(x, y) - Base::dcayInv(x, y)).norm(), kTight);
+    EXPECT_LT((G::dcayInvDual(x, mu) - Base::dcayInvDual(x, mu)).norm(), kTight);
     if (x.norm() < 3.0) {  // the series converge for |x| < 2π; near π they need ~100 terms
       EXPECT_LT((G::dexp(x, y) - Base::dexp(x, y)).norm(), 1e-12);
       EXPECT_LT((G::dexpInv(x, y) - Base::dexpInv(x, y)).norm(), 1e-12);

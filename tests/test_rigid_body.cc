@@ -94,6 +94,21 @@ TEST(RigidBody, LagrangianAndHamiltonianAreLegendreDual) {
   }
 }
 
+TEST(RigidBody, AnalyticDerivativesMatchAutodiff) {
+  const RigidBodyLagrangian l(kInertia);
+  const RigidBodyHamiltonian H(kInertia);
+  using LBase = AutoDiffLagrangian<RigidBodyLagrangian, SO3>;
+  using HBase = AutoDiffHamiltonian<RigidBodyHamiltonian, SO3>;
+  Sampler s(11);
+  for (int i = 0; i < 5; ++i) {
+    const Eigen::Vector3d x = s.vector<Eigen::Vector3d>(), v = s.vector<Eigen::Vector3d>();
+    EXPECT_LT((l.gradient(x) - l.LBase::gradient(x)).norm(), 1e-15);
+    EXPECT_LT((l.hessianTimes(x, v) - l.LBase::hessianTimes(x, v)).norm(), 1e-15);
+    EXPECT_LT((H.gradient(x) - H.HBase::gradient(x)).norm(), 1e-15);
+    EXPECT_LT((H.hessianTimes(x, v) - H.HBase::hessianTimes(x, v)).norm(), 1e-15);
+  }
+}
+
 TEST(RigidBody, RejectsBadParametersNamingThem) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THAT([] { makeRigidBody(Eigen::Vector3d(1, -1, 2), 0.5); },
