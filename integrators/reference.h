@@ -25,6 +25,10 @@ struct OdeintSystem {
   }
 };
 
+// GCC 12 flags the copy of a default-constructed stepper inside odeint's
+// controlled_runge_kutta constructor (-Wuninitialized): a false positive in Boost.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wuninitialized"
 template <class G>
 class ReferenceSolver : public OneStepMethod<G> {
  public:
@@ -77,5 +81,7 @@ class ReferenceSolver : public OneStepMethod<G> {
   Controlled stepper_;
   double dt_ = 0.0;
 };
+
+#pragma GCC diagnostic pop
 
 }  // namespace ddb
