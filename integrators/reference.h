@@ -29,6 +29,7 @@ struct OdeintSystem {
 // controlled_runge_kutta constructor (-Wuninitialized): a false positive in Boost.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 template <class G>
 class ReferenceSolver : public OneStepMethod<G> {
  public:

@@ -3,9 +3,7 @@
 // forms, the reference against itself, and a failed solve keeping the prefix.
 #include <gmock/gmock.h>
 
-#include "integrators/ddb.h"
-#include "integrators/reference.h"
-#include "integrators/runge_kutta.h"
+#include "integrators/method_registry.h"
 #include "order_fit.h"
 #include "systems/rigid_body.h"
 #include "test_support.h"
@@ -38,14 +36,7 @@ struct OrderCase {
 };
 
 std::unique_ptr<OneStepMethod<SO3>> makeMethod(const std::string& name, double alpha) {
-  auto body = makeRigidBody(kInertia, alpha);
-  if (name == "ddb-cay") return std::make_unique<Ddb<Cayley<SO3>>>(body);
-  if (name == "ddb-exp")
-    return std::make_unique<Ddb<TruncatedExponential<SO3>>>(body, TruncatedExponential<SO3>(2));
-  if (name == "ddb-exp-exact") return std::make_unique<Ddb<Exponential<SO3>>>(body);
-  if (name == "rk4") return std::make_unique<ExplicitRungeKutta<SO3, 4>>(body, kClassicalRk4);
-  if (name == "lobatto3c") return std::make_unique<ImplicitRungeKutta<SO3, 3>>(body, kLobattoIIIC3);
-  throw std::invalid_argument(name);
+  return ddb::makeMethod<SO3>(name, makeRigidBody(kInertia, alpha));
 }
 
 class OrderTest : public ::testing::TestWithParam<OrderCase> {};
