@@ -75,10 +75,10 @@ TEST(DdbCompare, WritesContractFilesMatchingTheLibrary) {
     EXPECT_DOUBLE_EQ(final_row[4], body->energy(last));
   }
   const std::string summary = readFile(out / "summary.json");
-  for (const std::string key : {"\"system\": \"rigid-body\"", "\"scenario\": \"B\"", "\"h\": ",
-                                "\"t_end\": 2", "\"methods\"", "\"ddb-cay\"", "\"rk4\"",
-                                "\"final\"", "\"err_final\"", "\"casimir_drift\"",
-                                "\"energy_final\"", "\"runtime_s\"", "\"steps\": 20"}) {
+  for (const std::string key :
+       {"\"system\": \"rigid-body\"", "\"scenario\": \"B\"", "\"h\": ", "\"t_end\": 2",
+        "\"methods\"", "\"ddb-cay\"", "\"rk4\"", "\"final\"", "\"err_final\"", "\"casimir_drift\"",
+        "\"energy_final\"", "\"runtime_s\"", "\"steps\": 20"}) {
     EXPECT_THAT(summary, ::testing::HasSubstr(key));
   }
   EXPECT_THAT(summary, ::testing::Not(::testing::HasSubstr("null")));
@@ -86,13 +86,11 @@ TEST(DdbCompare, WritesContractFilesMatchingTheLibrary) {
 }
 
 TEST(DdbCompare, BadInputExitsTwoAndWritesNothing) {
-  const std::vector<std::string> bad{"--system pendulum",      "--scenario D",
-                                     "--method ddb-foo",       "--h 0",
-                                     "--h -0.1",               "--h nan",
-                                     "--t-end 0",              "--t-end 1e12 --h 1e-3",
-                                     "--inertia 1,-1,2",       "--inertia 1,2",
-                                     "--inertia 1,x,2",        "--omega0 0,0",
-                                     "--alpha nan"};
+  const std::vector<std::string> bad{
+      "--system pendulum", "--scenario D",  "--method ddb-foo", "--h 0",
+      "--h -0.1",          "--h nan",       "--t-end 0",        "--t-end 1e12 --h 1e-3",
+      "--inertia 1,-1,2",  "--inertia 1,2", "--inertia 1,x,2",  "--omega0 0,0",
+      "--alpha nan"};
   for (const auto& arguments : bad) {
     const fs::path out = freshFolder("bad");
     EXPECT_EQ(runApp(arguments + " --out " + out.string()), 2) << arguments;

@@ -19,7 +19,7 @@ class GroupTest : public ::testing::Test {
 };
 
 // Adding a group: append it here (and to kRetractionCases in test_retractions.cc).
-using Groups = ::testing::Types<SO3>;
+using Groups = ::testing::Types<SO3, SE3>;
 TYPED_TEST_SUITE(GroupTest, Groups);
 
 TYPED_TEST(GroupTest, ExpMatchesEigenMatrixExponential) {
@@ -82,6 +82,16 @@ TYPED_TEST(GroupTest, CoadjointActionsAreDualsOfAdjointActions) {
     // Ad*_{gh} = Ad*_h Ad*_g
     const D lhs = G::AdDual(G::compose(g, h), mu);
     EXPECT_LT((lhs - G::AdDual(h, G::AdDual(g, mu))).norm(), kTight);
+  }
+}
+
+TYPED_TEST(GroupTest, CasimirsAreConstantOnCoadjointOrbits) {
+  using G = TypeParam;
+  using D = typename TestFixture::D;
+  for (int i = 0; i < 5; ++i) {
+    const D mu = this->sampler.template vector<D>();
+    const auto g = this->randomElement();
+    EXPECT_LT((G::casimirs(G::AdDual(g, mu)) - G::casimirs(mu)).norm(), kTight);
   }
 }
 

@@ -11,6 +11,7 @@
 
 #include "groups/cayley.h"
 #include "groups/exponential.h"
+#include "groups/se3.h"
 #include "groups/so3.h"
 
 namespace ddb::test {

@@ -1,0 +1,127 @@
+// SE(3) = SO(3) ⋉ R^3 in its 4×4 homogeneous representation; ξ = (ω, v), μ = (π, γ)
+// with the dot pairing (DESIGN.md §1):
+//   [ξ₁, ξ₂] = (ω₁×ω₂, ω₁×v₂ − ω₂×v₁),  ad*_ξ μ = (π×ω + γ×v, γ×ω),
+//   Ad*_(R,r) μ = (Rᵀ(π + γ×r), Rᵀγ),   Casimirs |γ|² and π·γ.
+// exp/log use SO(3)'s closed forms (V = dexp_ω of SO(3)); dexp and dexp^{-1} come
+// from LieGroupBase's series summed to round-off; Cayley from the 4×4 matrix formulas.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "core/lie_group.h"
+#include "groups/so3.h"
+
+namespace ddb {
+
+struct SE3 : LieGroupBase<SE3> {
+  static constexpr int kDim = 6;
+  static constexpr int kNumCasimirs = 2;
+  static constexpr const char* kName = "SE3";
+
+  template <class T>
+  using Algebra = Eigen::Matrix<T, 6, 1>;
+  template <class T>
+  using Dual = Eigen::Matrix<T, 6, 1>;
+  template <class T>
+  using Matrix = Eigen::Matrix<T, 4, 4>;
+  template <class T>
+  using Element = Matrix<T>;
+  template <class T>
+  using Casimirs = Eigen::Matrix<T, 2, 1>;
+
+  template <class T>
+  static Matrix<T> hat(const Algebra<T>& x) {
+    Matrix<T> X = Matrix<T>::Zero();
+    X.template topLeftCorner<3, 3>() = SO3::hat<T>(x.template head<3>());
+    X.template topRightCorner<3, 1>() = x.template tail<3>();
+    return X;
+  }
+  template <class T>
+  static Algebra<T> vee(const Matrix<T>& X) {
+    Algebra<T> x;
+    x << SO3::vee<T>(X.template topLeftCorner<3, 3>()), X.template topRightCorner<3, 1>();
+    return x;
+  }
+  /// <μ, ξ> = π·ω + γ·v = tr(dualHat(μ)ᵀ hat(ξ)) with dualHat(μ) = [[π̂/2, γ], [0, 0]].
+  template <class T>
+  static Matrix<T> dualHat(const Dual<T>& mu) {
+    Matrix<T> M = Matrix<T>::Zero();
+    M.template topLeftCorner<3, 3>() = SO3::dualHat<T>(mu.template head<3>());
+    M.template topRightCorner<3, 1>() = mu.template tail<3>();
+    return M;
+  }
+  template <class T>
+  static Dual<T> dualVee(const Matrix<T>& Y) {
+    Dual<T> mu;
+    mu << SO3::dualVee<T>(Y.template topLeftCorner<3, 3>()), Y.template topRightCorner<3, 1>();
+    return mu;
+  }
+
+  template <class T>
+  static T pairing(const Dual<T>& mu, const Algebra<T>& x) {
+    return mu.dot(x);
+  }
+  template <class T>
+  static Algebra<T> bracket(const Algebra<T>& a, const Algebra<T>& b) {
+    Algebra<T> c;
+    c << a.template head<3>().cross(b.template head<3>()),
+        a.template head<3>().cross(b.template tail<3>()) -
+            b.template head<3>().cross(a.template tail<3>());
+    return c;
+  }
+  /// ad*_ξ μ = (π×ω + γ×v, γ×ω).
+  template <class T>
+  static Dual<T> adDual(const Algebra<T>& x, const Dual<T>& mu) {
+    const auto w = x.template head<3>(), v = x.template tail<3>();
+    const auto pi = mu.template head<3>(), gamma = mu.template tail<3>();
+    Dual<T> out;
+    out << pi.cross(w) + gamma.cross(v), gamma.cross(w);
+    return out;
+  }
+  /// Ad*_(R,r) μ = (Rᵀ(π + γ×r), Rᵀγ).
+  template <class T>
+  static Dual<T> AdDual(const Matrix<T>& g, const Dual<T>& mu) {
+    const auto R = g.template topLeftCorner<3, 3>();
+    const Eigen::Matrix<T, 3, 1> r = g.template topRightCorner<3, 1>();
+    const Eigen::Matrix<T, 3, 1> gamma = mu.template tail<3>();
+    Dual<T> out;
+    out << R.transpose() * (mu.template head<3>() + gamma.cross(r)), R.transpose() * gamma;
+    return out;
+  }
+  template <class T>
+  static Matrix<T> inverse(const Matrix<T>& g) {
+    Matrix<T> out = Matrix<T>::Identity();
+    const Eigen::Matrix<T, 3, 3> Rt = g.template topLeftCorner<3, 3>().transpose();
+    out.template topLeftCorner<3, 3>() = Rt;
+    out.template topRightCorner<3, 1>() = -Rt * g.template topRightCorner<3, 1>();
+    return out;
+  }
+
+  /// (|γ|², π·γ).
+  template <class T>
+  static Casimirs<T> casimirs(const Dual<T>& mu) {
+    return Casimirs<T>(mu.template tail<3>().squaredNorm(),
+                       mu.template head<3>().dot(mu.template tail<3>()));
+  }
+
+  /// exp(ω, v) = [[exp ω̂, V v], [0, 1]], V v = dexp_ω(v) of SO(3).
+  template <class T>
+  static Matrix<T> exp(const Algebra<T>& x) {
+    const Eigen::Matrix<T, 3, 1> w = x.template head<3>(), v = x.template tail<3>();
+    Matrix<T> g = Matrix<T>::Identity();
+    g.template topLeftCorner<3, 3>() = SO3::exp(w);
+    g.template topRightCorner<3, 1>() = SO3::dexp(w, v);
+    return g;
+  }
+  template <class T>
+  static Algebra<T> log(const Matrix<T>& g) {
+    const Eigen::Matrix<T, 3, 3> R = g.template topLeftCorner<3, 3>();
+    const Eigen::Matrix<T, 3, 1> w = SO3::log(R);
+    const Eigen::Matrix<T, 3, 1> r = g.template topRightCorner<3, 1>();
+    Algebra<T> x;
+    x << w, SO3::dexpInv(w, r);
+    return x;
+  }
+};
+
+}  // namespace ddb

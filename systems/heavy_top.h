@@ -1,0 +1,48 @@
+// The heavy top on se(3)* (DESIGN.md §2): μ = (π, γ), H = ½ π·𝕀^{-1}π + mgℓ χ·γ,
+// so ξ = ∂H/∂μ = (𝕀^{-1}π, mgℓ χ) and μ̇ = ad*_ξ μ gives π̇ = π×Ω + mgℓ γ×χ,
+// γ̇ = γ×Ω. H is linear in γ: there is no regular Lagrangian, so DDB runs in its
+// Hamiltonian form. Dissipation k♯ = α diag(k); Casimirs |γ|², π·γ.
+#pragma once
+
+#include <memory>
+
+#include "core/autodiff.h"
+#include "core/dissipation_metric.h"
+#include "core/lie_poisson_system.h"
+#include "groups/se3.h"
+
+namespace ddb {
+
+class HeavyTopHamiltonian : public AutoDiffHamiltonian<HeavyTopHamiltonian, SE3> {
+ public:
+  HeavyTopHamiltonian(const Eigen::Vector3d& inertia, double mgl, const Eigen::Vector3d& chi)
+      : inertia_(requirePositive("inertia", inertia)),
+        mgl_(requireFinite("mgl", mgl)),
+        chi_(requireFinite("chi", chi)) {}
+
+  template <class T>
+  T evaluate(const Eigen::Matrix<T, 6, 1>& mu) const {
+    T kinetic = constant<T>(0.0), potential = constant<T>(0.0);
+    for (int i = 0; i < 3; ++i) {
+      kinetic += mu(i) * mu(i) / constant<T>(inertia_(i));
+      potential += constant<T>(mgl_ * chi_(i)) * mu(3 + i);
+    }
+    return constant<T>(0.5) * kinetic + potential;
+  }
+
+ private:
+  Eigen::Vector3d inertia_;
+  double mgl_;
+  Eigen::Vector3d chi_;
+};
+
+/// The heavy top; `metric` k (6 entries >= 0) gives k♯ = α diag(k).
+inline std::shared_ptr<const LiePoissonSystem<SE3>> makeHeavyTop(
+    const Eigen::Vector3d& inertia, double mgl, const Eigen::Vector3d& chi, double alpha,
+    const Eigen::Matrix<double, 6, 1>& metric) {
+  return std::make_shared<const LiePoissonSystem<SE3>>(
+      "heavy-top", std::make_shared<const HeavyTopHamiltonian>(inertia, mgl, chi),
+      std::make_shared<const DiagonalMetric<SE3>>(alpha, metric));
+}
+
+}  // namespace ddb

@@ -1,0 +1,66 @@
+// Kirchhoff's equations for a rigid body in ideal fluid, on se(3)*: ξ = (Ω, v),
+// l(ξ) = ½ Ω·𝕀Ω + ½ v·𝕄v (diagonal added-mass tensors), μ = (π, P) = (𝕀Ω, 𝕄v),
+// H = ½ π·𝕀^{-1}π + ½ P·𝕄^{-1}P; μ̇ = ad*_ξ μ gives π̇ = π×Ω + P×v, Ṗ = P×Ω.
+// Dissipation k♯ = α diag(k); Casimirs |P|², π·P.
+#pragma once
+
+#include <memory>
+
+#include "core/autodiff.h"
+#include "core/dissipation_metric.h"
+#include "core/lie_poisson_system.h"
+#include "groups/se3.h"
+
+namespace ddb {
+
+namespace detail {
+/// ½ Σ_i w_i x_i² in any scalar type (the quadratic form of a diagonal tensor).
+template <class T, class Weights>
+T halfWeightedSquares(const Eigen::Matrix<T, 6, 1>& x, const Weights& w) {
+  T sum = constant<T>(0.0);
+  for (int i = 0; i < 6; ++i) sum += constant<T>(w(i)) * x(i) * x(i);
+  return constant<T>(0.5) * sum;
+}
+}  // namespace detail
+
+class KirchhoffLagrangian : public AutoDiffLagrangian<KirchhoffLagrangian, SE3> {
+ public:
+  KirchhoffLagrangian(const Eigen::Vector3d& inertia, const Eigen::Vector3d& mass)
+      : weights_((Eigen::Matrix<double, 6, 1>() << requirePositive("inertia", inertia),
+                  requirePositive("mass", mass))
+                     .finished()) {}
+  template <class T>
+  T evaluate(const Eigen::Matrix<T, 6, 1>& xi) const {
+    return detail::halfWeightedSquares(xi, weights_);
+  }
+
+ private:
+  Eigen::Matrix<double, 6, 1> weights_;
+};
+
+class KirchhoffHamiltonian : public AutoDiffHamiltonian<KirchhoffHamiltonian, SE3> {
+ public:
+  KirchhoffHamiltonian(const Eigen::Vector3d& inertia, const Eigen::Vector3d& mass)
+      : inverse_weights_((Eigen::Matrix<double, 6, 1>() << requirePositive("inertia", inertia),
+                          requirePositive("mass", mass))
+                             .finished()
+                             .cwiseInverse()) {}
+  template <class T>
+  T evaluate(const Eigen::Matrix<T, 6, 1>& mu) const {
+    return detail::halfWeightedSquares(mu, inverse_weights_);
+  }
+
+ private:
+  Eigen::Matrix<double, 6, 1> inverse_weights_;
+};
+
+inline std::shared_ptr<const LiePoissonSystem<SE3>> makeKirchhoffBody(
+    const Eigen::Vector3d& inertia, const Eigen::Vector3d& mass, double alpha,
+    const Eigen::Matrix<double, 6, 1>& metric) {
+  return std::make_shared<const LiePoissonSystem<SE3>>(
+      "kirchhoff", std::make_shared<const KirchhoffHamiltonian>(inertia, mass),
+      std::make_shared<const DiagonalMetric<SE3>>(alpha, metric),
+      std::make_shared<const KirchhoffLagrangian>(inertia, mass));
+}
+
+}  // namespace ddb
