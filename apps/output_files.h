@@ -21,6 +21,9 @@ inline std::string number(double v) {
   return buffer;
 }
 
+/// CSV cells: non-finite values as "nan" (read back by every CSV reader).
+inline std::string csvNumber(double v) { return std::isfinite(v) ? number(v) : "nan"; }
+
 inline void writeFileAtomically(const std::filesystem::path& path, const std::string& content) {
   const std::filesystem::path temporary = path.string() + ".tmp";
   {

@@ -4,7 +4,9 @@
 // of the paper's DOP853 with tight tolerances).
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <boost/numeric/odeint.hpp>
 #include <memory>
 #include <string>
@@ -52,17 +54,28 @@ class ReferenceSolver : public OneStepMethod<G> {
     Eigen::Map<Dual>(x.data()) = mu;
     const double end = t + h;
     double time = t;
-    double dt = dt_ > 0.0 ? dt_ : h;
+    // First trial step: 1% of the time scale |μ|/|μ̇| (odeint's error estimate is NaN,
+    // and so accepted, when a trial step overflows), never more than h.
+    const double rate = system_->vectorField(mu).norm();
+    double dt = dt_ > 0.0 ? dt_ : std::min(h, rate > 0.0 ? 0.01 * mu.norm() / rate : h);
     int rejected = 0;
     while (end - time > 1e-14 * std::abs(end)) {
       const bool last = time + dt >= end;
       double trial = last ? end - time : dt;
       const double before = trial;
-      if (stepper_.try_step(rhs, x, time, trial) == odeint::success) {
+      const State saved = x;
+      const bool accepted = stepper_.try_step(rhs, x, time, trial) == odeint::success;
+      const bool finite = std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); });
+      if (accepted && finite) {
         if (last) time = end;  // land on t_{k+1} exactly
         dt = (last && trial > before) ? std::max(dt, trial) : trial;
         rejected = 0;
       } else {
+        if (!finite) {
+          x = saved;
+          if (accepted) time -= before;
+          trial = 0.1 * before;
+        }
         dt = trial;
         if (++rejected > 100) {
           throw SolveFailure("reference step-size control", -1, time, dt, INFINITY, tolerance_);

@@ -6,4 +6,4 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j2
-./build/bin/ddb-compare --scenario A --out results/scenario-A "$@"
+./build/bin/ddb-compare --scenario A --sweep-h 1e-3:1:13 --plot --out results/scenario-A "$@"

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <sstream>
 
@@ -83,6 +84,51 @@ TEST(DdbCompare, WritesContractFilesMatchingTheLibrary) {
   }
   EXPECT_THAT(summary, ::testing::Not(::testing::HasSubstr("null")));
   EXPECT_FALSE(fs::exists(out / "ddb-cay.csv.tmp"));
+}
+
+TEST(DdbCompare, SweepWritesErrorVersusStepSize) {
+  const fs::path out = freshFolder("sweep");
+  ASSERT_EQ(runApp("--t-end 2 --method ddb-cay,rk4 --repeat 1 --sweep-h 0.01:0.1:4 --out " +
+                   out.string()),
+            0);
+  std::ifstream in(out / "error_vs_h.csv");
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header, "method,h,err_final,casimir_drift,runtime_s");
+  std::map<std::string, std::vector<std::pair<double, double>>> errors;
+  for (std::string line; std::getline(in, line);) {
+    std::stringstream ss(line);
+    std::string method, h, err;
+    std::getline(ss, method, ',');
+    std::getline(ss, h, ',');
+    std::getline(ss, err, ',');
+    errors[method].push_back({std::stod(h), std::stod(err)});
+  }
+  ASSERT_EQ(errors.size(), 2u);
+  for (const auto& [method, points] : errors) {
+    ASSERT_EQ(points.size(), 4u) << method;
+    EXPECT_NEAR(points.front().first, 0.1, 1e-15);
+    EXPECT_NEAR(points.back().first, 0.01, 1e-15);
+    for (size_t i = 1; i < points.size(); ++i) {
+      EXPECT_LT(points[i].second, points[i - 1].second) << method << ": error must fall with h";
+    }
+  }
+}
+
+TEST(DdbCompare, SE3SystemsWriteTwoCasimirColumns) {
+  for (const std::string system : {"heavy-top", "kirchhoff"}) {
+    const fs::path out = freshFolder(system);
+    ASSERT_EQ(runApp("--system " + system + " --t-end 1 --repeat 1 --out " + out.string()), 0);
+    std::string header;
+    const auto rows = readCsv(out / "ddb-cay.csv", header);
+    EXPECT_EQ(header, "t,m1,m2,m3,m4,m5,m6,energy,casimir1,casimir2");
+    EXPECT_EQ(rows.size(), 11u);
+    const std::string summary = readFile(out / "summary.json");
+    EXPECT_THAT(summary, ::testing::HasSubstr("\"system\": \"" + system + "\""));
+    for (const std::string method : {"ddb-cay", "ddb-exp", "ddb-exp-exact", "rk4", "lobatto3c"}) {
+      EXPECT_THAT(summary, ::testing::HasSubstr("\"" + method + "\""));
+    }
+  }
 }
 
 TEST(DdbCompare, BadInputExitsTwoAndWritesNothing) {

@@ -145,6 +145,13 @@ TEST(Reference, AgreesWithItselfAtTighterTolerance) {
   EXPECT_LT(worst, 1e-10);
 }
 
+TEST(Reference, OneLongStepAgreesWithManyShortOnes) {
+  // One adaptive sweep over [0, 30] (as the sweeps use) against 300 observed steps.
+  auto body = makeRigidBody(kInertia, 0.5);
+  ReferenceSolver<SO3> one(body), many(body);
+  EXPECT_LT((finalState(one, 30.0, 30.0) - finalState(many, 0.1, 30.0)).norm(), 1e-11);
+}
+
 TEST(Ddb, TooLargeStepThrowsTypedErrorAndKeepsPrefix) {
   // With τ = exp, |hξ| approaches the poles of dexp^{-1} at 2π: the Legendre equation has
   // no nearby solution and Newton fails (at h = 10, after 14 good steps). Cayley DDB has
