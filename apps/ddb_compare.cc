@@ -3,10 +3,10 @@
 // files of DESIGN.md §5. Bad input: one line naming the flag and value on stderr,
 // exit status 2, nothing written. Every file is written under a temporary name and
 // renamed. Exit status 1 if an integrator failed (its valid prefix is still written).
-#include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
@@ -83,7 +83,8 @@ struct Sweep {
 
 long stepCount(double t_end, double h, const std::string& flag) {
   const double n = std::round(t_end / h);
-  if (n > 1e9) usageError(flag, app::number(h), "more than 1e9 steps to t-end " + app::number(t_end));
+  if (n > 1e9)
+    usageError(flag, app::number(h), "more than 1e9 steps to t-end " + app::number(t_end));
   return std::max(1L, static_cast<long>(n));
 }
 
@@ -185,8 +186,17 @@ class Progress {
 };
 
 template <class G>
-int compare(const Options& options, const Problem<G>& problem, const std::vector<std::string>& methods,
+int compare(const Options& options, const Problem<G>& problem, std::vector<std::string> methods,
             long steps, const Sweep& sweep, const fs::path& out) {
+  // Default: every method that applies; an explicit method that does not is bad input.
+  for (const auto& name : methods) {
+    if (!options.methods.empty() && !methodApplies(name, *problem.system))
+      usageError("--method", name, "does not apply to " + problem.system->name());
+  }
+  methods.erase(std::remove_if(
+                    methods.begin(), methods.end(),
+                    [&](const std::string& name) { return !methodApplies(name, *problem.system); }),
+                methods.end());
   const double h = options.h;
   const Progress progress(options.quiet);
   spdlog::info("{}{}: h {}, {} steps, methods {}", problem.system->name(),
@@ -217,7 +227,9 @@ int compare(const Options& options, const Problem<G>& problem, const std::vector
     const double err_final = complete ? (last - reference.states.back()).norm() : NAN;
     const double drift = casimirDrift(problem, run.states);
     app::JsonObject entry;
-    entry.add("final", app::JsonObject::array(std::vector<double>(last.data(), last.data() + G::kDim)))
+    entry
+        .add("final",
+             app::JsonObject::array(std::vector<double>(last.data(), last.data() + G::kDim)))
         .add("err_final", err_final)
         .add("casimir_drift", drift)
         .add("energy_final", problem.system->energy(last))
@@ -274,8 +286,8 @@ int compare(const Options& options, const Problem<G>& problem, const std::vector
 }
 
 int plot(const fs::path& out) {
-  const std::string command =
-      "'" + std::string(DDB_PYTHON3) + "' '" + std::string(DDB_PLOT_SCRIPT) + "' '" + out.string() + "'";
+  const std::string command = "'" + std::string(DDB_PYTHON3) + "' '" +
+                              std::string(DDB_PLOT_SCRIPT) + "' '" + out.string() + "'";
   spdlog::info("plotting: {}", command);
   const int status = std::system(command.c_str());
   if (status != 0) spdlog::error("plotting failed (python3 with matplotlib is needed)");
@@ -323,7 +335,8 @@ int runCompare(int argc, char** argv) {
     usageError("--system", o.system, "expected rigid-body, heavy-top or kirchhoff");
   const auto scenario = scenarios.find(o.scenario);
   if (scenario == scenarios.end()) usageError("--scenario", o.scenario, "expected A, B or C");
-  if (!std::isfinite(o.h) || o.h <= 0) usageError("--h", app::number(o.h), "must be finite and > 0");
+  if (!std::isfinite(o.h) || o.h <= 0)
+    usageError("--h", app::number(o.h), "must be finite and > 0");
   if (!o.t_end_given) o.t_end = rigid ? scenario->second.second : 30.0;
   if (!std::isfinite(o.t_end) || o.t_end <= 0)
     usageError("--t-end", app::number(o.t_end), "must be finite and > 0");

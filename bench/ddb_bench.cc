@@ -1,8 +1,9 @@
-// One step of each method on the rigid body of Scenario A (h = 0.1), named
-// rigid_body/<method> (DESIGN.md §5), with Boost.Odeint's runge_kutta4 on the same
-// vector field as the peer `rigid_body/odeint-rk4`. The counter allocs_per_step
-// counts global operator new calls per step. Compare methods by ratios of times
-// within one run (scripts/bench_ratios.py).
+// One step (h = 0.1) of every registry method on the rigid body of Scenario A and on
+// the heavy top, named rigid_body/<method> and heavy_top/<method> (DESIGN.md §5), with
+// Boost.Odeint's runge_kutta4 on the same vector field as the peer
+// `rigid_body/odeint-rk4`. The counter allocs_per_step counts global operator new
+// calls per step. Compare methods by ratios of times within one run
+// (scripts/bench_ratios.py).
 #include <benchmark/benchmark.h>
 
 #include <atomic>
@@ -12,11 +13,8 @@
 #include <memory>
 #include <new>
 
-#include "groups/cayley.h"
-#include "groups/exponential.h"
-#include "integrators/ddb.h"
-#include "integrators/reference.h"
-#include "integrators/runge_kutta.h"
+#include "integrators/method_registry.h"
+#include "systems/heavy_top.h"
 #include "systems/rigid_body.h"
 
 namespace {
@@ -36,21 +34,15 @@ namespace {
 
 using namespace ddb;
 
-const Eigen::Vector3d kInertia(1.0, 1.3, 0.5);
-const Eigen::Vector3d kM0 = kInertia.cwiseProduct(Eigen::Vector3d(0.0, 0.05, 1.0));
 constexpr double kH = 0.1;
 constexpr int kScenarioSteps = 300;  // Scenario A: t in [0, 30]
 
-std::shared_ptr<const LiePoissonSystem<SO3>> body() {
-  static const auto system = makeRigidBody(kInertia, 0.5);
-  return system;
-}
-
-// Steps along Scenario A's trajectory, restarting every 300 steps, so that the
-// warm starts and states are those of a real run.
-void runSteps(benchmark::State& state,
-              const std::function<Eigen::Vector3d(const Eigen::Vector3d&, double)>& step) {
-  Eigen::Vector3d mu = kM0;
+// Steps along a real trajectory from mu0, restarting every 300 steps, so that the
+// warm starts and states are those of a run; counts heap allocations per step.
+template <class Dual>
+void runSteps(benchmark::State& state, const Dual& mu0,
+              const std::function<Dual(const Dual&, double)>& step) {
+  Dual mu = mu0;
   int k = 0;
   long steps = 0;
   const long before = g_allocations.load();
@@ -59,7 +51,7 @@ void runSteps(benchmark::State& state,
     benchmark::DoNotOptimize(mu.data());
     if (++k == kScenarioSteps) {
       k = 0;
-      mu = kM0;
+      mu = mu0;
     }
     ++steps;
   }
@@ -67,44 +59,28 @@ void runSteps(benchmark::State& state,
       static_cast<double>(g_allocations.load() - before) / static_cast<double>(steps);
 }
 
-void methodBenchmark(benchmark::State& state, OneStepMethod<SO3>& method) {
-  method.reset();
-  runSteps(state, [&](const Eigen::Vector3d& mu, double t) { return method.step(mu, t, kH); });
+// One benchmark per applicable registry method, named <prefix>/<method>.
+template <class G>
+void registerMethods(const std::string& prefix, std::shared_ptr<const LiePoissonSystem<G>> system,
+                     const typename G::template Dual<double>& mu0) {
+  using Dual = typename G::template Dual<double>;
+  for (const auto& name : methodNames()) {
+    if (!methodApplies(name, *system)) continue;
+    benchmark::RegisterBenchmark((prefix + "/" + name).c_str(), [=](benchmark::State& state) {
+      auto method = makeMethod<G>(name, system);
+      method->reset();
+      runSteps<Dual>(state, mu0, [&](const Dual& mu, double t) { return method->step(mu, t, kH); });
+    });
+  }
 }
 
-void BM_DdbCayley(benchmark::State& state) {
-  Ddb<Cayley<SO3>> method(body());
-  methodBenchmark(state, method);
-}
-void BM_DdbExpTruncated(benchmark::State& state) {
-  Ddb<TruncatedExponential<SO3>> method(body(), TruncatedExponential<SO3>(2));
-  methodBenchmark(state, method);
-}
-void BM_DdbExpExact(benchmark::State& state) {
-  Ddb<Exponential<SO3>> method(body());
-  methodBenchmark(state, method);
-}
-void BM_DdbCayleyHamiltonian(benchmark::State& state) {
-  Ddb<Cayley<SO3>> method(body(), Cayley<SO3>(), LegendreForm::kHamiltonian);
-  methodBenchmark(state, method);
-}
-void BM_Rk4(benchmark::State& state) {
-  ExplicitRungeKutta<SO3, 4> method(body(), kClassicalRk4);
-  methodBenchmark(state, method);
-}
-void BM_LobattoIIIC(benchmark::State& state) {
-  ImplicitRungeKutta<SO3, 3> method(body(), kLobattoIIIC3);
-  methodBenchmark(state, method);
-}
-void BM_Reference(benchmark::State& state) {
-  ReferenceSolver<SO3> method(body());
-  methodBenchmark(state, method);
-}
-void BM_OdeintRk4(benchmark::State& state) {
+// Boost.Odeint's runge_kutta4 on the same vector field: the peer of our rk4.
+void BM_OdeintRk4(benchmark::State& state, std::shared_ptr<const LiePoissonSystem<SO3>> body,
+                  Eigen::Vector3d mu0) {
   using State = OdeintSystem<SO3>::State;
   boost::numeric::odeint::runge_kutta4<State> stepper;
-  const OdeintSystem<SO3> rhs{*body()};
-  runSteps(state, [&](const Eigen::Vector3d& mu, double t) {
+  const OdeintSystem<SO3> rhs{*body};
+  runSteps<Eigen::Vector3d>(state, mu0, [&](const Eigen::Vector3d& mu, double t) {
     State x;
     Eigen::Map<Eigen::Vector3d>(x.data()) = mu;
     stepper.do_step(rhs, x, t, kH);
@@ -112,15 +88,21 @@ void BM_OdeintRk4(benchmark::State& state) {
   });
 }
 
-BENCHMARK(BM_DdbCayley)->Name("rigid_body/ddb-cay");
-BENCHMARK(BM_DdbExpTruncated)->Name("rigid_body/ddb-exp");
-BENCHMARK(BM_DdbExpExact)->Name("rigid_body/ddb-exp-exact");
-BENCHMARK(BM_DdbCayleyHamiltonian)->Name("rigid_body/ddb-cay-hamiltonian");
-BENCHMARK(BM_Rk4)->Name("rigid_body/rk4");
-BENCHMARK(BM_LobattoIIIC)->Name("rigid_body/lobatto3c");
-BENCHMARK(BM_Reference)->Name("rigid_body/reference");
-BENCHMARK(BM_OdeintRk4)->Name("rigid_body/odeint-rk4");
-
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  const Eigen::Vector3d inertia(1.0, 1.3, 0.5);
+  const auto body = makeRigidBody(inertia, 0.5);
+  const Eigen::Vector3d m0 = inertia.cwiseProduct(Eigen::Vector3d(0.0, 0.05, 1.0));
+  registerMethods<SO3>("rigid_body", body, m0);
+  benchmark::RegisterBenchmark("rigid_body/odeint-rk4", BM_OdeintRk4, body, m0);
+  using Vector6 = Eigen::Matrix<double, 6, 1>;
+  const auto top = makeHeavyTop(inertia, 1.0, Eigen::Vector3d(0, 0, 1), 0.5, Vector6::Ones());
+  registerMethods<SE3>(
+      "heavy_top", top,
+      (Vector6() << 0.0, 0.065, 0.5, 0.0, std::sin(0.3), std::cos(0.3)).finished());
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

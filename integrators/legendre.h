@@ -1,7 +1,8 @@
 // The discrete Legendre transform of a DDB step (paper, Section 4.1):
-//   M = (dτ^{-1}_{hξ})* ∂l/∂ξ(ξ)                     (Lagrangian form, unknown ξ)
-//   M = (dτ^{-1}_{h ∂H/∂μ(p)})* p                     (Hamiltonian form, unknown p)
-// solved for the pair (ξ, p = ∂l/∂ξ(ξ)) by Ceres TinySolver, warm-started.
+//   (dτ^{-1}_{hξ})* p = target(ξ, p),  p = ∂l/∂ξ(ξ)  (Lagrangian form, unknown ξ)
+//                                      ξ = ∂H/∂μ(p)  (Hamiltonian form, unknown p)
+// solved by Ceres TinySolver, warm-started from the previous solution. DDB's target
+// is the momentum M_k; the symmetric variants' targets depend on the unknown too.
 #pragma once
 
 #include <Eigen/Core>
@@ -13,12 +14,16 @@ namespace ddb {
 
 enum class LegendreForm { kLagrangian, kHamiltonian };
 
-inline const char* toString(LegendreForm form) {
-  return form == LegendreForm::kLagrangian ? "lagrangian" : "hamiltonian";
-}
+/// The target of DDB's Legendre equation: a fixed momentum.
+template <class G>
+struct FixedMomentum {
+  const typename G::template Dual<double>& momentum;
+  template <class A, class D>
+  D operator()(const A&, const D&) const {
+    return momentum.template cast<typename D::Scalar>();
+  }
+};
 
-/// Solves the discrete Legendre equation for a fixed-size group; keeps the last
-/// solution as the next warm start.
 template <class R>
 class DiscreteLegendreSolver {
  public:
@@ -38,58 +43,56 @@ class DiscreteLegendreSolver {
   }
 
   void reset() { has_guess_ = false; }
+  LegendreForm form() const { return form_; }
 
-  /// Solves (dτ^{-1}_{hξ})* ∂l/∂ξ(ξ) = target; returns ξ and sets p = ∂l/∂ξ(ξ).
-  Algebra solve(const Dual& target, double t, double h, Dual& p) {
-    const double scale = target.norm();
+  /// Solves (dτ^{-1}_{hξ})* p = target(ξ, p); returns ξ and sets p. `near` is a momentum
+  /// close to the solution (the first guess when there is no warm start); `scale` the
+  /// size of the equation's data for the relative tolerance.
+  template <class Target>
+  Algebra solve(const Target& target, const Dual& near, double t, double h, Dual& p) {
+    if (!has_guess_) {
+      unknown_ = form_ == LegendreForm::kLagrangian ? Vector(system_.velocity(near)) : near;
+    }
+    const Equation<Target> equation{system_, retraction_, target, h, form_};
+    solveTiny<kDim>(equation, unknown_, near.norm(), options_, "discrete Legendre equation", t, h);
+    has_guess_ = true;
     if (form_ == LegendreForm::kLagrangian) {
-      if (!has_guess_) unknown_ = system_.velocity(target);
-      const LagrangianEquation equation{system_, retraction_, target, h};
-      solveTiny<kDim>(equation, unknown_, scale, options_, "discrete Legendre equation", t, h);
-      has_guess_ = true;
       p = system_.lagrangian()->gradient(unknown_);
       return unknown_;
     }
-    if (!has_guess_) unknown_ = target;
-    const HamiltonianEquation equation{system_, retraction_, target, h};
-    solveTiny<kDim>(equation, unknown_, scale, options_, "discrete Legendre equation", t, h);
-    has_guess_ = true;
     p = unknown_;
     return system_.velocity(p);
   }
 
+  /// DDB's equation M = (dτ^{-1}_{hξ})* ∂l/∂ξ(ξ).
+  Algebra solve(const Dual& momentum, double t, double h, Dual& p) {
+    return solve(FixedMomentum<G>{momentum}, momentum, t, h, p);
+  }
+
  private:
-  // r(ξ) = (dτ^{-1}_{hξ})* ∂l/∂ξ(ξ) - M
-  struct LagrangianEquation {
+  template <class Target>
+  struct Equation {
     const LiePoissonSystem<G>& system;
     const R& retraction;
-    const Dual& target;
+    const Target& target;
     double h;
+    LegendreForm form;
     template <class T>
     bool operator()(const T* x, T* r) const {
       using A = typename G::template Algebra<T>;
-      const A xi = Eigen::Map<const A>(x);
-      const auto p = liftGradient(*system.lagrangian(), xi);
-      const A hxi = xi * T(h);
-      Eigen::Map<A> out(r);
-      out = retraction.dTauInverseDual(hxi, p) - target.template cast<T>();
-      return true;
-    }
-  };
-  // r(p) = (dτ^{-1}_{h ∂H/∂μ(p)})* p - M
-  struct HamiltonianEquation {
-    const LiePoissonSystem<G>& system;
-    const R& retraction;
-    const Dual& target;
-    double h;
-    template <class T>
-    bool operator()(const T* x, T* r) const {
       using D = typename G::template Dual<T>;
-      using A = typename G::template Algebra<T>;
-      const D p = Eigen::Map<const D>(x);
-      const A hxi = system.velocity(p) * T(h);
+      A xi;
+      D p;
+      if (form == LegendreForm::kLagrangian) {
+        xi = Eigen::Map<const A>(x);
+        p = liftGradient(*system.lagrangian(), xi);
+      } else {
+        p = Eigen::Map<const D>(x);
+        xi = system.velocity(p);
+      }
+      const A hxi = xi * T(h);
       Eigen::Map<D> out(r);
-      out = retraction.dTauInverseDual(hxi, p) - target.template cast<T>();
+      out = retraction.dTauInverseDual(hxi, p) - target(xi, p);
       return true;
     }
   };

@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <boost/numeric/odeint.hpp>
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -65,7 +65,8 @@ class ReferenceSolver : public OneStepMethod<G> {
       const double before = trial;
       const State saved = x;
       const bool accepted = stepper_.try_step(rhs, x, time, trial) == odeint::success;
-      const bool finite = std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); });
+      const bool finite =
+          std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); });
       if (accepted && finite) {
         if (last) time = end;  // land on t_{k+1} exactly
         dt = (last && trial > before) ? std::max(dt, trial) : trial;

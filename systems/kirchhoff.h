@@ -33,6 +33,14 @@ class KirchhoffLagrangian : public AutoDiffLagrangian<KirchhoffLagrangian, SE3> 
   T evaluate(const Eigen::Matrix<T, 6, 1>& xi) const {
     return detail::halfWeightedSquares(xi, weights_);
   }
+  // Analytic overrides for speed (checked against the autodiff versions in the tests).
+  Eigen::Matrix<double, 6, 1> gradient(const Eigen::Matrix<double, 6, 1>& xi) const override {
+    return weights_.cwiseProduct(xi);
+  }
+  Eigen::Matrix<double, 6, 1> hessianTimes(const Eigen::Matrix<double, 6, 1>&,
+                                           const Eigen::Matrix<double, 6, 1>& v) const override {
+    return weights_.cwiseProduct(v);
+  }
 
  private:
   Eigen::Matrix<double, 6, 1> weights_;
@@ -48,6 +56,13 @@ class KirchhoffHamiltonian : public AutoDiffHamiltonian<KirchhoffHamiltonian, SE
   template <class T>
   T evaluate(const Eigen::Matrix<T, 6, 1>& mu) const {
     return detail::halfWeightedSquares(mu, inverse_weights_);
+  }
+  Eigen::Matrix<double, 6, 1> gradient(const Eigen::Matrix<double, 6, 1>& mu) const override {
+    return inverse_weights_.cwiseProduct(mu);
+  }
+  Eigen::Matrix<double, 6, 1> hessianTimes(const Eigen::Matrix<double, 6, 1>&,
+                                           const Eigen::Matrix<double, 6, 1>& v) const override {
+    return inverse_weights_.cwiseProduct(v);
   }
 
  private:

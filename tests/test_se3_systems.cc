@@ -110,6 +110,25 @@ TEST(Kirchhoff, LagrangianAndHamiltonianDdbAgree) {
       1e-12);
 }
 
+TEST(SE3Systems, AnalyticDerivativesMatchAutodiff) {
+  const HeavyTopHamiltonian top(kInertia, kMgl, Eigen::Vector3d(0.3, -0.2, 0.9));
+  const KirchhoffHamiltonian H(kInertia, kMass);
+  const KirchhoffLagrangian l(kInertia, kMass);
+  using TopBase = AutoDiffHamiltonian<HeavyTopHamiltonian, SE3>;
+  using HBase = AutoDiffHamiltonian<KirchhoffHamiltonian, SE3>;
+  using LBase = AutoDiffLagrangian<KirchhoffLagrangian, SE3>;
+  Sampler s(23);
+  for (int i = 0; i < 5; ++i) {
+    const Vector6 x = s.vector<Vector6>(), v = s.vector<Vector6>();
+    EXPECT_LT((top.gradient(x) - top.TopBase::gradient(x)).norm(), 1e-15);
+    EXPECT_LT((top.hessianTimes(x, v) - top.TopBase::hessianTimes(x, v)).norm(), 1e-15);
+    EXPECT_LT((H.gradient(x) - H.HBase::gradient(x)).norm(), 1e-15);
+    EXPECT_LT((H.hessianTimes(x, v) - H.HBase::hessianTimes(x, v)).norm(), 1e-15);
+    EXPECT_LT((l.gradient(x) - l.LBase::gradient(x)).norm(), 1e-15);
+    EXPECT_LT((l.hessianTimes(x, v) - l.LBase::hessianTimes(x, v)).norm(), 1e-15);
+  }
+}
+
 TEST(SE3Systems, RejectBadParametersNamingThem) {
   EXPECT_THAT([] { makeHeavyTop(kInertia, NAN, kChi, 0.5, kUnitMetric); },
               ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("mgl")));

@@ -1,0 +1,69 @@
+// Symmetric compositions of a symmetric one-step method (Hairer, Lubich, Wanner,
+// Geometric Numerical Integration, II.4): Ψ_h = Φ_{γ_s h} ∘ … ∘ Φ_{γ_1 h}. The
+// schemes are data; the wrapper works for any OneStepMethod, and since every stage
+// of a DDB method is a coadjoint action, the composition stays on the orbit.
+#pragma once
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "integrators/one_step_method.h"
+
+namespace ddb {
+
+struct CompositionScheme {
+  const char* name;
+  int order;  // for a symmetric base method of order 2
+  std::vector<double> coefficients;
+};
+
+/// Triple jump: γ₁ = γ₃ = 1/(2 − 2^{1/3}), γ₂ = 1 − 2γ₁ (order 4; HLW II.4, eq. (4.4)).
+inline const CompositionScheme& tripleJump() {
+  static const CompositionScheme scheme = [] {
+    const double g = 1.0 / (2.0 - std::cbrt(2.0));
+    return CompositionScheme{"triple-jump", 4, {g, 1.0 - 2.0 * g, g}};
+  }();
+  return scheme;
+}
+
+/// Yoshida's 7-stage symmetric composition of order 6, "solution A" (H. Yoshida,
+/// Construction of higher order symplectic integrators, Phys. Lett. A 150 (1990)
+/// 262–268, Table 1; HLW II.4, eq. (4.8)): w₃ w₂ w₁ w₀ w₁ w₂ w₃, w₀ = 1 − 2(w₁+w₂+w₃).
+inline const CompositionScheme& yoshida6() {
+  static const CompositionScheme scheme = [] {
+    const double w1 = -1.17767998417887, w2 = 0.235573213359357, w3 = 0.784513610477560;
+    const double w0 = 1.0 - 2.0 * (w1 + w2 + w3);
+    return CompositionScheme{"yoshida6", 6, {w3, w2, w1, w0, w1, w2, w3}};
+  }();
+  return scheme;
+}
+
+template <class G>
+class Composition : public OneStepMethod<G> {
+ public:
+  using Dual = typename G::template Dual<double>;
+
+  Composition(std::string name, std::unique_ptr<OneStepMethod<G>> base, CompositionScheme scheme)
+      : name_(std::move(name)), base_(std::move(base)), scheme_(std::move(scheme)) {}
+
+  std::string name() const override { return name_; }
+  void reset() override { base_->reset(); }
+
+  Dual step(const Dual& mu, double t, double h) override {
+    Dual state = mu;
+    for (double gamma : scheme_.coefficients) {
+      state = base_->step(state, t, gamma * h);
+      t += gamma * h;
+    }
+    return state;
+  }
+
+ private:
+  std::string name_;
+  std::unique_ptr<OneStepMethod<G>> base_;
+  CompositionScheme scheme_;
+};
+
+}  // namespace ddb

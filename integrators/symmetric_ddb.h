@@ -1,0 +1,184 @@
+// Symmetric second-order DDB variants (paper, remark after the retraction formulas;
+// DESIGN.md §2).
+//
+// SymmetricDdb, the one-step symmetric DDB: solve
+//   (dτ^{-1}_{hξ})* ∂l/∂ξ(ξ) = Ad*_{τ(hφ(ξ)/2)} μ_k,
+// then μ_{k+1} = Ad*_{τ(hφ/2) τ(hξ) τ(hφ/2)} μ_k. It satisfies Φ_{-h} = Φ_h^{-1}, so
+// it is second order and symmetric compositions raise its order, every stage on the
+// coadjoint orbit.
+//
+// PaperSymmetricDdb, the paper's variant as written: ξ_{k+1} is coupled to ξ_k by
+//   (dτ^{-1}_{hξ_{k+1}})* ∂l(ξ_{k+1}) = Ad*_{φ_d} (dτ^{-1}_{-hξ_k})* ∂l(ξ_k)
+// with φ_d = τ(hφ((ξ_k+ξ_{k+1})/2)) (midpoint) or τ(h/2 φ(ξ_k) + h/2 φ(ξ_{k+1}))
+// (trapezoidal), and M_k = (dτ^{-1}_{hξ_k})* ∂l(ξ_k) is the output. Measured first
+// order in M: the Legendre equation pairs M_k (time t_k) with ξ_k (t_k + h/2) and
+// ignores the dissipation over that half step. ReadOut::kHalfForce is the fix of
+// DESIGN.md §2: start from (dτ^{-1}_{hξ₀})* ∂l(ξ₀) = Ad*_{τ(hφ(ξ₀)/2)} μ₀ and read out
+// μ_k = Ad*_{τ(-hφ(ξ_k)/2)} M_k; it is second order and still exactly on the orbit.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "core/lie_poisson_system.h"
+#include "integrators/legendre.h"
+#include "integrators/one_step_method.h"
+
+namespace ddb {
+
+/// Ad*_{τ(hφ(ξ)/2)} μ: the half-force target of the symmetric Legendre equations.
+template <class R>
+struct HalfForceTarget {
+  using G = typename R::Group;
+  const LiePoissonSystem<G>& system;
+  const R& retraction;
+  const typename G::template Dual<double>& mu;
+  double h;
+  template <class A, class D>
+  D operator()(const A& xi, const D& p) const {
+    using T = typename D::Scalar;
+    const A half = system.dissipation(xi, p) * T(0.5 * h);
+    return G::AdDual(retraction.tau(half), D(mu.template cast<T>()));
+  }
+};
+
+template <class R>
+class SymmetricDdb : public OneStepMethod<typename R::Group> {
+ public:
+  using G = typename R::Group;
+  using Dual = typename G::template Dual<double>;
+  using Algebra = typename G::template Algebra<double>;
+
+  SymmetricDdb(std::shared_ptr<const LiePoissonSystem<G>> system, R retraction = R(),
+               LegendreForm form = LegendreForm::kLagrangian, SolverOptions options = {})
+      : system_(std::move(system)),
+        retraction_(std::move(retraction)),
+        legendre_(*system_, retraction_, form, options) {}
+  SymmetricDdb(const SymmetricDdb&) = delete;  // legendre_ refers to retraction_
+  SymmetricDdb& operator=(const SymmetricDdb&) = delete;
+
+  std::string name() const override {
+    return std::string("sddb-") + R::kName +
+           (legendre_.form() == LegendreForm::kHamiltonian ? "-hamiltonian" : "");
+  }
+  void reset() override { legendre_.reset(); }
+
+  Dual step(const Dual& mu, double t, double h) override {
+    Dual p;
+    const Algebra xi =
+        legendre_.solve(HalfForceTarget<R>{*system_, retraction_, mu, h}, mu, t, h, p);
+    const Algebra half = (0.5 * h) * system_->dissipation(xi, p);
+    const Algebra hxi = h * xi;
+    const auto kick = retraction_.tau(half);
+    return G::AdDual(G::compose(G::compose(kick, retraction_.tau(hxi)), kick), mu);
+  }
+
+ private:
+  std::shared_ptr<const LiePoissonSystem<G>> system_;
+  R retraction_;
+  DiscreteLegendreSolver<R> legendre_;
+};
+
+template <class R>
+class PaperSymmetricDdb : public OneStepMethod<typename R::Group> {
+ public:
+  using G = typename R::Group;
+  using Dual = typename G::template Dual<double>;
+  using Algebra = typename G::template Algebra<double>;
+  enum class Force { kMidpoint, kTrapezoidal };
+  enum class ReadOut { kAsWritten, kHalfForce };
+
+  PaperSymmetricDdb(std::shared_ptr<const LiePoissonSystem<G>> system, R retraction = R(),
+                    Force force = Force::kMidpoint, ReadOut read_out = ReadOut::kAsWritten,
+                    SolverOptions options = {})
+      : system_(std::move(system)),
+        retraction_(std::move(retraction)),
+        force_(force),
+        read_out_(read_out),
+        legendre_(*system_, retraction_, LegendreForm::kLagrangian, options) {}
+  PaperSymmetricDdb(const PaperSymmetricDdb&) = delete;
+  PaperSymmetricDdb& operator=(const PaperSymmetricDdb&) = delete;
+
+  std::string name() const override {
+    return std::string("sddb-paper-") + R::kName +
+           (force_ == Force::kTrapezoidal ? "-trapezoidal" : "") +
+           (read_out_ == ReadOut::kHalfForce ? "-halfforce" : "");
+  }
+  void reset() override {
+    legendre_.reset();
+    started_ = false;
+  }
+
+  Dual step(const Dual& mu, double t, double h) override {
+    // A two-step recurrence in ξ: (re)start whenever the caller's state or h is not ours.
+    if (!started_ || h != h_ || mu != output_) start(mu, t, h);
+    const Algebra hxi = h * xi_;
+    const Dual pushed = G::AdDual(retraction_.tau(hxi), momentum_);  // (dτ^{-1}_{-hξ_k})* p_k
+    const CoupledTarget target{*system_, retraction_, pushed, xi_, p_, h, force_};
+    Dual p;
+    const Algebra xi = legendre_.solve(target, pushed, t, h, p);
+    momentum_ = target(xi, p);
+    xi_ = xi;
+    p_ = p;
+    output_ = readOut(h);
+    return output_;
+  }
+
+ private:
+  // Ad*_{φ_d(ξ_k, ξ)} N, with N = Ad*_{τ(hξ_k)} M_k.
+  struct CoupledTarget {
+    const LiePoissonSystem<G>& system;
+    const R& retraction;
+    const Dual& pushed;
+    const Algebra& xi_k;
+    const Dual& p_k;
+    double h;
+    Force force;
+    template <class A, class D>
+    D operator()(const A& xi, const D& p) const {
+      using T = typename D::Scalar;
+      A force_step;
+      if (force == Force::kMidpoint) {
+        const A mid = (xi + xi_k.template cast<T>()) * T(0.5);
+        const D p_mid = liftGradient(*system.lagrangian(), mid);
+        force_step = system.dissipation(mid, p_mid) * T(h);
+      } else {
+        const A phi_k = system.dissipation(Algebra(xi_k), Dual(p_k)).template cast<T>();
+        force_step = (phi_k + system.dissipation(xi, p)) * T(0.5 * h);
+      }
+      return G::AdDual(retraction.tau(force_step), D(pushed.template cast<T>()));
+    }
+  };
+
+  void start(const Dual& mu, double t, double h) {
+    legendre_.reset();
+    if (read_out_ == ReadOut::kAsWritten) {
+      momentum_ = mu;
+      xi_ = legendre_.solve(mu, t, h, p_);
+    } else {
+      const HalfForceTarget<R> target{*system_, retraction_, mu, h};
+      xi_ = legendre_.solve(target, mu, t, h, p_);
+      momentum_ = target(xi_, p_);
+    }
+    started_ = true;
+    h_ = h;
+  }
+
+  Dual readOut(double h) const {
+    if (read_out_ == ReadOut::kAsWritten) return momentum_;
+    const Algebra back = (-0.5 * h) * system_->dissipation(xi_, p_);
+    return G::AdDual(retraction_.tau(back), momentum_);
+  }
+
+  std::shared_ptr<const LiePoissonSystem<G>> system_;
+  R retraction_;
+  Force force_;
+  ReadOut read_out_;
+  DiscreteLegendreSolver<R> legendre_;
+  bool started_ = false;
+  double h_ = 0.0;
+  Algebra xi_ = Algebra::Zero();
+  Dual p_ = Dual::Zero(), momentum_ = Dual::Zero(), output_ = Dual::Zero();
+};
+
+}  // namespace ddb
