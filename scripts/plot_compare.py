@@ -30,6 +30,8 @@ STYLE = {
     "ddb4-cay": dict(color="navy", ls="-"),
     "ddb4-exp": dict(color="darkgreen", ls="--"),
     "ddb6-exp": dict(color="black", ls="-."),
+    "sddb-paper-cay": dict(color="tab:pink", ls="-"),
+    "sddb-paper-exp": dict(color="tab:pink", ls="--"),
     "rk4": dict(color="tab:red", ls="-"),
     "lobatto3c": dict(color="tab:purple", ls="-"),
     "reference": dict(color="tab:gray", ls="-"),
