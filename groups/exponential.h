@@ -45,18 +45,11 @@ class Exponential : public Retraction<Exponential<G>, G> {
 
 /// τ = exp with dτ^{-1} replaced by its Bernoulli series truncated after ad^order.
 /// Not an exact retraction pair (dτ ∘ dτ^{-1} = I + O(|x|^{order+1})): it is the
-/// paper's practical choice, offered for reproduction.
+/// paper's practical choice, offered for reproduction. τ, τ^{-1} and dτ are exp's.
 template <class G>
-class TruncatedExponential : public Retraction<TruncatedExponential<G>, G> {
+class TruncatedExponential : public Exponential<G> {
  public:
   static constexpr const char* kName = "exp-truncated";
-
-  template <class T>
-  using Algebra = typename G::template Algebra<T>;
-  template <class T>
-  using Dual = typename G::template Dual<T>;
-  template <class T>
-  using Matrix = typename G::template Matrix<T>;
 
   explicit TruncatedExponential(int order = 2) : order_(order) {
     if (order < 0 || order > kMaxBernoulliIndex) {
@@ -66,24 +59,12 @@ class TruncatedExponential : public Retraction<TruncatedExponential<G>, G> {
   }
   int order() const { return order_; }
 
-  template <class T>
-  Matrix<T> tau(const Algebra<T>& x) const {
-    return G::exp(x);
-  }
-  template <class T>
-  Algebra<T> tauInverse(const Matrix<T>& g) const {
-    return G::log(g);
-  }
-  template <class T>
-  Algebra<T> dTau(const Algebra<T>& x, const Algebra<T>& y) const {
-    return G::dexp(x, y);
-  }
-  template <class T>
-  Algebra<T> dTauInverse(const Algebra<T>& x, const Algebra<T>& y) const {
+  template <class A>
+  A dTauInverse(const A& x, const A& y) const {
     return G::dexpInvSeries(x, y, order_);
   }
-  template <class T>
-  Dual<T> dTauInverseDual(const Algebra<T>& x, const Dual<T>& mu) const {
+  template <class A, class D>
+  D dTauInverseDual(const A& x, const D& mu) const {
     return G::dexpInvDualSeries(x, mu, order_);
   }
 

@@ -9,46 +9,30 @@
 #include <string>
 
 #include "core/lie_poisson_system.h"
-#include "integrators/legendre.h"
-#include "integrators/one_step_method.h"
+#include "integrators/legendre_method.h"
 
 namespace ddb {
 
 template <class R>
-class Ddb : public OneStepMethod<typename R::Group> {
+class Ddb : public LegendreMethod<R> {
  public:
-  using G = typename R::Group;
-  using Dual = typename G::template Dual<double>;
-  using Algebra = typename G::template Algebra<double>;
+  using typename LegendreMethod<R>::G;
+  using typename LegendreMethod<R>::Dual;
+  using typename LegendreMethod<R>::Algebra;
 
   Ddb(std::shared_ptr<const LiePoissonSystem<G>> system, R retraction = R(),
       LegendreForm form = LegendreForm::kLagrangian, SolverOptions options = {})
-      : system_(std::move(system)),
-        retraction_(std::move(retraction)),
-        form_(form),
-        legendre_(*system_, retraction_, form, options) {}
-  Ddb(const Ddb&) = delete;  // legendre_ refers to retraction_
-  Ddb& operator=(const Ddb&) = delete;
+      : LegendreMethod<R>(std::move(system), std::move(retraction), form, options) {}
 
-  std::string name() const override {
-    return std::string("ddb-") + R::kName +
-           (form_ == LegendreForm::kHamiltonian ? "-hamiltonian" : "");
-  }
-  void reset() override { legendre_.reset(); }
+  std::string name() const override { return this->nameWith("ddb-"); }
 
   Dual step(const Dual& mu, double t, double h) override {
     Dual p;
-    const Algebra xi = legendre_.solve(mu, t, h, p);
-    const Algebra phi = system_->dissipation(xi, p);
+    const Algebra xi = this->legendre_.solve(mu, t, h, p);
+    const Algebra phi = this->system_->dissipation(xi, p);
     const Algebra hxi = h * xi, hphi = h * phi;
-    return retraction_.transport(hxi, hphi, mu);
+    return this->retraction_.transport(hxi, hphi, mu);
   }
-
- private:
-  std::shared_ptr<const LiePoissonSystem<G>> system_;
-  R retraction_;
-  LegendreForm form_;
-  DiscreteLegendreSolver<R> legendre_;
 };
 
 }  // namespace ddb

@@ -21,8 +21,7 @@
 #include <string>
 
 #include "core/lie_poisson_system.h"
-#include "integrators/legendre.h"
-#include "integrators/one_step_method.h"
+#include "integrators/legendre_method.h"
 
 namespace ddb {
 
@@ -43,61 +42,45 @@ struct HalfForceTarget {
 };
 
 template <class R>
-class SymmetricDdb : public OneStepMethod<typename R::Group> {
+class SymmetricDdb : public LegendreMethod<R> {
  public:
-  using G = typename R::Group;
-  using Dual = typename G::template Dual<double>;
-  using Algebra = typename G::template Algebra<double>;
+  using typename LegendreMethod<R>::G;
+  using typename LegendreMethod<R>::Dual;
+  using typename LegendreMethod<R>::Algebra;
 
   SymmetricDdb(std::shared_ptr<const LiePoissonSystem<G>> system, R retraction = R(),
                LegendreForm form = LegendreForm::kLagrangian, SolverOptions options = {})
-      : system_(std::move(system)),
-        retraction_(std::move(retraction)),
-        legendre_(*system_, retraction_, form, options) {}
-  SymmetricDdb(const SymmetricDdb&) = delete;  // legendre_ refers to retraction_
-  SymmetricDdb& operator=(const SymmetricDdb&) = delete;
+      : LegendreMethod<R>(std::move(system), std::move(retraction), form, options) {}
 
-  std::string name() const override {
-    return std::string("sddb-") + R::kName +
-           (legendre_.form() == LegendreForm::kHamiltonian ? "-hamiltonian" : "");
-  }
-  void reset() override { legendre_.reset(); }
+  std::string name() const override { return this->nameWith("sddb-"); }
 
   Dual step(const Dual& mu, double t, double h) override {
     Dual p;
-    const Algebra xi =
-        legendre_.solve(HalfForceTarget<R>{*system_, retraction_, mu, h}, mu, t, h, p);
-    const Algebra half = (0.5 * h) * system_->dissipation(xi, p);
+    const HalfForceTarget<R> target{*this->system_, this->retraction_, mu, h};
+    const Algebra xi = this->legendre_.solve(target, mu, t, h, p);
+    const Algebra half = (0.5 * h) * this->system_->dissipation(xi, p);
     const Algebra hxi = h * xi;
-    const auto kick = retraction_.tau(half);
-    return G::AdDual(G::compose(G::compose(kick, retraction_.tau(hxi)), kick), mu);
+    const auto kick = this->retraction_.tau(half);
+    return G::AdDual(G::compose(G::compose(kick, this->retraction_.tau(hxi)), kick), mu);
   }
-
- private:
-  std::shared_ptr<const LiePoissonSystem<G>> system_;
-  R retraction_;
-  DiscreteLegendreSolver<R> legendre_;
 };
 
 template <class R>
-class PaperSymmetricDdb : public OneStepMethod<typename R::Group> {
+class PaperSymmetricDdb : public LegendreMethod<R> {
  public:
-  using G = typename R::Group;
-  using Dual = typename G::template Dual<double>;
-  using Algebra = typename G::template Algebra<double>;
+  using typename LegendreMethod<R>::G;
+  using typename LegendreMethod<R>::Dual;
+  using typename LegendreMethod<R>::Algebra;
   enum class Force { kMidpoint, kTrapezoidal };
   enum class ReadOut { kAsWritten, kHalfForce };
 
   PaperSymmetricDdb(std::shared_ptr<const LiePoissonSystem<G>> system, R retraction = R(),
                     Force force = Force::kMidpoint, ReadOut read_out = ReadOut::kAsWritten,
                     SolverOptions options = {})
-      : system_(std::move(system)),
-        retraction_(std::move(retraction)),
+      : LegendreMethod<R>(std::move(system), std::move(retraction), LegendreForm::kLagrangian,
+                          options),
         force_(force),
-        read_out_(read_out),
-        legendre_(*system_, retraction_, LegendreForm::kLagrangian, options) {}
-  PaperSymmetricDdb(const PaperSymmetricDdb&) = delete;
-  PaperSymmetricDdb& operator=(const PaperSymmetricDdb&) = delete;
+        read_out_(read_out) {}
 
   std::string name() const override {
     return std::string("sddb-paper-") + R::kName +
@@ -105,7 +88,7 @@ class PaperSymmetricDdb : public OneStepMethod<typename R::Group> {
            (read_out_ == ReadOut::kHalfForce ? "-halfforce" : "");
   }
   void reset() override {
-    legendre_.reset();
+    LegendreMethod<R>::reset();
     started_ = false;
   }
 
@@ -170,11 +153,11 @@ class PaperSymmetricDdb : public OneStepMethod<typename R::Group> {
     return G::AdDual(retraction_.tau(back), momentum_);
   }
 
-  std::shared_ptr<const LiePoissonSystem<G>> system_;
-  R retraction_;
+  using LegendreMethod<R>::system_;
+  using LegendreMethod<R>::retraction_;
+  using LegendreMethod<R>::legendre_;
   Force force_;
   ReadOut read_out_;
-  DiscreteLegendreSolver<R> legendre_;
   bool started_ = false;
   double h_ = 0.0;
   Algebra xi_ = Algebra::Zero();

@@ -1,0 +1,44 @@
+// LegendreMethod: what every DDB-family method holds (GeometricIntegrators.jl style:
+// the method's data, and its solver with the warm-start cache, kept apart from the
+// step formula in the subclasses Ddb, SymmetricDdb and PaperSymmetricDdb).
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "core/lie_poisson_system.h"
+#include "integrators/legendre.h"
+#include "integrators/one_step_method.h"
+
+namespace ddb {
+
+template <class R>
+class LegendreMethod : public OneStepMethod<typename R::Group> {
+ public:
+  using G = typename R::Group;
+  using Dual = typename G::template Dual<double>;
+  using Algebra = typename G::template Algebra<double>;
+
+  LegendreMethod(std::shared_ptr<const LiePoissonSystem<G>> system, R retraction, LegendreForm form,
+                 SolverOptions options)
+      : system_(std::move(system)),
+        retraction_(std::move(retraction)),
+        legendre_(*system_, retraction_, form, options) {}
+  LegendreMethod(const LegendreMethod&) = delete;  // legendre_ refers to retraction_
+  LegendreMethod& operator=(const LegendreMethod&) = delete;
+
+  void reset() override { legendre_.reset(); }
+
+ protected:
+  /// prefix + retraction name, with "-hamiltonian" for the Hamiltonian form.
+  std::string nameWith(const std::string& prefix) const {
+    return prefix + R::kName +
+           (legendre_.form() == LegendreForm::kHamiltonian ? "-hamiltonian" : "");
+  }
+
+  std::shared_ptr<const LiePoissonSystem<G>> system_;
+  R retraction_;
+  DiscreteLegendreSolver<R> legendre_;
+};
+
+}  // namespace ddb
