@@ -131,6 +131,22 @@ TEST(DdbCompare, SE3SystemsWriteTwoCasimirColumns) {
   }
 }
 
+TEST(DdbCompare, FailedSolveKeepsThePrefixAndExitsOne) {
+  // ddb-exp-exact cannot solve its Legendre equation at h = 10 after 14 steps (see
+  // Ddb.TooLargeStepThrowsTypedErrorAndKeepsPrefix): the valid prefix is written.
+  const fs::path out = freshFolder("failure");
+  ASSERT_EQ(runApp("--method ddb-exp-exact --h 10 --t-end 400 --repeat 1 --out " + out.string()), 1);
+  std::string header;
+  const auto rows = readCsv(out / "ddb-exp-exact.csv", header);
+  EXPECT_EQ(rows.size(), 15u);
+  for (const auto& row : rows)
+    for (double v : row) EXPECT_TRUE(std::isfinite(v));
+  const std::string summary = readFile(out / "summary.json");
+  EXPECT_THAT(summary, ::testing::HasSubstr("\"failure\": \"discrete Legendre equation did not "
+                                            "converge at step 14"));
+  EXPECT_THAT(summary, ::testing::HasSubstr("\"err_final\": null"));
+}
+
 TEST(DdbCompare, BadInputExitsTwoAndWritesNothing) {
   const std::vector<std::string> bad{
       "--system pendulum", "--scenario D",  "--method ddb-foo", "--h 0",

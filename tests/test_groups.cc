@@ -18,9 +18,7 @@ class GroupTest : public ::testing::Test {
   M randomElement() { return G::exp(sampler.vector<A>()); }
 };
 
-// Adding a group: append it here (and to kRetractionCases in test_retractions.cc).
-using Groups = ::testing::Types<SO3, SE3>;
-TYPED_TEST_SUITE(GroupTest, Groups);
+TYPED_TEST_SUITE(GroupTest, AllGroups::Groups);
 
 TYPED_TEST(GroupTest, ExpMatchesEigenMatrixExponential) {
   using G = TypeParam;

@@ -25,9 +25,7 @@ class RetractionTest : public ::testing::Test {
   }
 };
 
-// Adding a group or a retraction: append the pair here.
-using Retractions = ::testing::Types<Cayley<SO3>, Exponential<SO3>, Cayley<SE3>, Exponential<SE3>>;
-TYPED_TEST_SUITE(RetractionTest, Retractions);
+TYPED_TEST_SUITE(RetractionTest, AllGroups::Retractions);
 
 TYPED_TEST(RetractionTest, IdentityAndInverseProperty) {
   using G = typename TestFixture::G;

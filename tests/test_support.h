@@ -16,6 +16,16 @@
 
 namespace ddb::test {
 
+// ---- Adding a group: include its header above and append it here. Both generic
+// suites (test_groups.cc: every group; test_retractions.cc: every group with the
+// Cayley and exponential retractions) are instantiated from this one list. ----
+template <class... Gs>
+struct GroupList {
+  using Groups = ::testing::Types<Gs...>;
+  using Retractions = ::testing::Types<Cayley<Gs>..., Exponential<Gs>...>;
+};
+using AllGroups = GroupList<SO3, SE3>;
+
 /// Deterministic random vectors with entries in [-1, 1].
 class Sampler {
  public:
