@@ -1,5 +1,5 @@
 // Bernoulli numbers divided by factorials, B_j / j!, with B_1 = -1/2: the
-// coefficients of dexp^{-1}_x = Σ_j B_j/j! ad_x^j (paper, eq. (4.x) "dexpinvxy";
+// coefficients of dexp^{-1}_x = Σ_j B_j/j! ad_x^j (paper, eq. (4.14);
 // Iserles, Munthe-Kaas, Nørsett and Zanna 2000).
 #pragma once
 

@@ -1,5 +1,5 @@
 // DissipationMetric: the symmetric semi-definite k: g* × g* → R through its
-// musical map k♯: g* → g (paper, eq. "varphi"): φ(ξ) = k♯(ad*_ξ ∂l/∂ξ(ξ)).
+// musical map k♯: g* → g (paper, eq. (3.5)): φ(ξ) = k♯(ad*_ξ ∂l/∂ξ(ξ)).
 // A negative scale (α < 0) is allowed: energy ascent on the orbit (DESIGN.md §4).
 #pragma once
 

@@ -97,7 +97,7 @@ struct LieGroupBase {
     return Derived::vee(M(X * typename M::Scalar(2)));
   }
 
-  /// dcay_x y = (I - X/2)^{-1} Y (I + X/2)^{-1} (eq. "dcay").
+  /// dcay_x y = (I - X/2)^{-1} Y (I + X/2)^{-1} (paper, eq. (4.15)).
   template <class A>
   static A dcay(const A& x, const A& y) {
     const auto half = matrix<A>(Derived::hat(x) * typename A::Scalar(0.5));
@@ -107,7 +107,7 @@ struct LieGroupBase {
     return Derived::vee(matrix<A>(both.transpose()));
   }
 
-  /// dcay^{-1}_x y = (I - X/2) Y (I + X/2) (eq. "dcayinv").
+  /// dcay^{-1}_x y = (I - X/2) Y (I + X/2) (paper, eq. (4.16)).
   template <class A>
   static A dcayInv(const A& x, const A& y) {
     const auto half = matrix<A>(Derived::hat(x) * typename A::Scalar(0.5));
@@ -124,7 +124,7 @@ struct LieGroupBase {
         matrix<A>((I - half).adjoint() * Derived::dualHat(mu) * (I + half).adjoint()));
   }
 
-  /// Right-trivialised tangent of exp: dexp_x y = Σ_j ad_x^j y / (j+1)!  (paper, "dexpxy").
+  /// Right-trivialised tangent of exp: dexp_x y = Σ_j ad_x^j y / (j+1)!  (paper, eq. (4.13)).
   template <class A>
   static A dexp(const A& x, const A& y) {
     return sumSeries<A>(
@@ -137,7 +137,7 @@ struct LieGroupBase {
         kMaxBernoulliIndex);
   }
 
-  /// dexp^{-1}_x y = Σ_j B_j/j! ad_x^j y (paper, "dexpinvxy"), summed to round-off.
+  /// dexp^{-1}_x y = Σ_j B_j/j! ad_x^j y (paper, eq. (4.14)), summed to round-off.
   template <class A>
   static A dexpInv(const A& x, const A& y) {
     return sumSeries<A>(

@@ -1,7 +1,7 @@
 // LiePoissonSystem: a group, a Hamiltonian (and optionally the Lagrangian it comes
-// from) and a dissipation metric. The continuous dynamics (paper, eq. "flp-2"):
+// from) and a dissipation metric. The continuous dynamics (paper, eq. (3.4)):
 //   μ̇ = ad*_{ξ + φ(ξ)} μ,   ξ = ∂H/∂μ,   φ(ξ) = k♯(ad*_ξ μ),
-// so Casimirs are constant and dH/dt = -k(ad*_ξ μ, ad*_ξ μ) (Proposition 3.2).
+// so Casimirs are constant and dH/dt = -k(ad*_ξ μ, ad*_ξ μ) (Proposition 3.3).
 #pragma once
 
 #include <memory>

@@ -1,5 +1,5 @@
 // The Cayley retraction cay(x) = (I - X/2)^{-1}(I + X/2) (paper, Section 4.1 b),
-// eqs. "dcay", "dcayinv"). The formulas live in the group: LieGroupBase has them for
+// eqs. (4.15), (4.16)). The formulas live in the group: LieGroupBase has them for
 // any matrix representation, and a group may shadow them with closed forms (SO3).
 #pragma once
 

@@ -1,7 +1,7 @@
 // DDB: the discrete double-bracket method (paper, Section 4.1, "DDB method"):
 //   (i)  find ξ_k with M_k = (dτ^{-1}_{hξ_k})* ∂l/∂ξ(ξ_k)      (discrete Legendre)
-//   (ii) M_{k+1} = Ad*_{τ(hξ_k) τ(hφ(ξ_k))} M_k                 (eq. "evolution_of_Mk_in_tau")
-// with φ(ξ) = k♯(ad*_ξ ∂l/∂ξ(ξ)) (eq. "varphi"). Every M_k stays on the coadjoint
+//   (ii) M_{k+1} = Ad*_{τ(hξ_k) τ(hφ(ξ_k))} M_k                 (eq. (4.12))
+// with φ(ξ) = k♯(ad*_ξ ∂l/∂ξ(ξ)) (eq. (3.5)). Every M_k stays on the coadjoint
 // orbit of M_0 exactly; first order for α ≠ 0, second order for α = 0 (DESIGN.md §2).
 #pragma once
 

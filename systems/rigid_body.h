@@ -1,6 +1,6 @@
 // The free rigid body with double-bracket dissipation (paper, Sections 3 and 5):
 //   l(Ω) = ½ Ω·𝕀Ω,  H(M) = ½ M·𝕀^{-1}M,  k♯ = α I,  φ(Ω) = α 𝕀Ω × Ω,
-//   Ṁ = M × Ω + α M × (M × Ω)   (eq. "diss_rbd"),  Casimir |M|.
+//   Ṁ = M × Ω + α M × (M × Ω)   (eq. (3.6)),  Casimir |M|.
 #pragma once
 
 #include <memory>

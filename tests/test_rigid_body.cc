@@ -1,5 +1,5 @@
-// The rigid body against the paper's component equations (Section 3 example) and
-// the energy/Casimir rates of Proposition 3.2, by central differences along the flow.
+// The rigid body against the component equations of the paper's Examples 3.1/3.5 and
+// the energy/Casimir rates of Proposition 3.3, by central differences along the flow.
 #include <gmock/gmock.h>
 
 #include "systems/rigid_body.h"
@@ -10,8 +10,8 @@ namespace {
 
 const Eigen::Vector3d kInertia(1.0, 1.3, 0.5);
 
-// Components of d(𝕀Ω)/dt = 𝕀Ω × (Ω + φ(Ω)) (paper, Section 3, Example "Rigid body with a
-// force"; eq. "diss_rbd") with the paper's φ components, written out by hand.
+// Components of d(𝕀Ω)/dt = 𝕀Ω × (Ω + φ(Ω)) (paper, Example 3.1 corrected;
+// eq. (3.6)) with the paper's φ components, written out by hand.
 Eigen::Vector3d componentEquations(const Eigen::Vector3d& W, double alpha) {
   const double I1 = kInertia(0), I2 = kInertia(1), I3 = kInertia(2);
   const Eigen::Vector3d phi(alpha * (I2 - I3) * W(1) * W(2), alpha * (I3 - I1) * W(2) * W(0),
@@ -21,7 +21,7 @@ Eigen::Vector3d componentEquations(const Eigen::Vector3d& W, double alpha) {
                          I1 * W(0) * (W(1) + phi(1)) - I2 * W(1) * (W(0) + phi(0)));
 }
 
-// The paper's printed component equations for φ = α𝕀Ω×Ω (same example, "continued").
+// The paper's printed component equations for φ = α𝕀Ω×Ω (Example 3.5).
 Eigen::Vector3d paperPrintedComponents(const Eigen::Vector3d& W, double alpha) {
   const double I1 = kInertia(0), I2 = kInertia(1), I3 = kInertia(2);
   return Eigen::Vector3d((I2 - I3) * W(1) * W(2) + alpha * (I3 - I1) * W(0) * W(2) * W(2) -
@@ -40,7 +40,7 @@ TEST(RigidBody, VectorFieldMatchesComponentEquations) {
     const Eigen::Vector3d M = s.vector<Eigen::Vector3d>();
     const Eigen::Vector3d W = M.cwiseQuotient(kInertia);
     EXPECT_LT((body->vectorField(M) - componentEquations(W, alpha)).norm(), 1e-14);
-    // ... and eq. "diss_rbd": Ṁ = M × Ω + α M × (M × Ω).
+    // ... and eq. (3.6): Ṁ = M × Ω + α M × (M × Ω).
     EXPECT_LT((body->vectorField(M) - (M.cross(W) + alpha * M.cross(M.cross(W)))).norm(), 1e-14);
     const Eigen::Vector3d phi(alpha * (kInertia(1) - kInertia(2)) * W(1) * W(2),
                               alpha * (kInertia(2) - kInertia(0)) * W(2) * W(0),
@@ -50,7 +50,7 @@ TEST(RigidBody, VectorFieldMatchesComponentEquations) {
 }
 
 // Documents a misprint: the paper's printed components for α ≠ 0 conserve energy
-// exactly (Σ Ω_i I_iΩ̇_i ≡ 0), contradicting Proposition 3.2 and eq. "diss_rbd";
+// exactly (Σ Ω_i I_iΩ̇_i ≡ 0), contradicting Proposition 3.3 and eq. (3.6);
 // they differ from the vector field by more than round-off.
 TEST(RigidBody, PaperPrintedComponentsAreAMisprint) {
   const double alpha = 0.5;
