@@ -3,7 +3,8 @@
 //   [ξ₁, ξ₂] = (ω₁×ω₂, ω₁×v₂ − ω₂×v₁),  ad*_ξ μ = (π×ω + γ×v, γ×ω),
 //   Ad*_(R,r) μ = (Rᵀ(π + γ×r), Rᵀγ),   Casimirs |γ|² and π·γ.
 // exp/log use SO(3)'s closed forms (V = dexp_ω of SO(3)); dexp and dexp^{-1} come
-// from LieGroupBase's series summed to round-off; Cayley from the 4×4 matrix formulas.
+// from LieGroupBase's series summed to round-off. Cayley: closed forms derived from
+// the 4×4 formulas (paper, eqs. (4.15), (4.16)); dcay from the 4×4 matrices.
 #pragma once
 
 #include <Eigen/Core>
@@ -102,6 +103,37 @@ struct SE3 : LieGroupBase<SE3> {
   static Casimirs<T> casimirs(const Dual<T>& mu) {
     return Casimirs<T>(mu.template tail<3>().squaredNorm(),
                        mu.template head<3>().dot(mu.template tail<3>()));
+  }
+
+  /// cay(ω, v) = [[cay(ω), (I − ω̂/2)^{-1} v], [0, 1]] with the 3×3 matrix inverse
+  /// (I − ω̂/2)^{-1} = 4/(4 + |ω|²) (I + ω̂/2 + ωωᵀ/4).
+  template <class T>
+  static Matrix<T> cay(const Algebra<T>& x) {
+    const Eigen::Matrix<T, 3, 1> w = x.template head<3>(), v = x.template tail<3>();
+    Matrix<T> g = Matrix<T>::Identity();
+    g.template topLeftCorner<3, 3>() = SO3::cay(w);
+    g.template topRightCorner<3, 1>() =
+        (v + w.cross(v) * T(0.5) + w * (w.dot(v) * T(0.25))) * (T(4) / (T(4) + w.squaredNorm()));
+    return g;
+  }
+  /// dcay^{-1}_x η = (I − X/2) H (I + X/2) = η − ad_x η/2 − XHX/4, where
+  /// XHX = hat(−(ω·η_ω) ω, ω × (η_ω × v)).
+  template <class T>
+  static Algebra<T> dcayInv(const Algebra<T>& x, const Algebra<T>& eta) {
+    const Eigen::Matrix<T, 3, 1> w = x.template head<3>(), v = x.template tail<3>();
+    const Eigen::Matrix<T, 3, 1> ew = eta.template head<3>();
+    Algebra<T> quarter;
+    quarter << w * w.dot(ew), -w.cross(ew.cross(v));
+    return eta - bracket(x, eta) * T(0.5) + quarter * T(0.25);
+  }
+  /// (dcay^{-1}_x)* μ = μ − ad*_x μ/2 + ¼((π·ω) ω − v × (γ × ω), 0), the transpose of dcayInv.
+  template <class T>
+  static Dual<T> dcayInvDual(const Algebra<T>& x, const Dual<T>& mu) {
+    const Eigen::Matrix<T, 3, 1> w = x.template head<3>(), v = x.template tail<3>();
+    const Eigen::Matrix<T, 3, 1> pi = mu.template head<3>(), gamma = mu.template tail<3>();
+    Dual<T> quarter;
+    quarter << w * pi.dot(w) - v.cross(gamma.cross(w)), Eigen::Matrix<T, 3, 1>::Zero();
+    return mu - adDual(x, mu) * T(0.5) + quarter * T(0.25);
   }
 
   /// exp(ω, v) = [[exp ω̂, V v], [0, 1]], V v = dexp_ω(v) of SO(3).
