@@ -7,7 +7,8 @@
 //   dTau(x, y)                 right-trivialised tangent: T_xτ(y) = dτ_x(y) τ(x)
 //   dTauInverse(x, y)          its inverse, dτ^{-1}_x
 //   dTauInverseDual(x, mu)     the dual (dτ^{-1}_x)*, which the discrete Legendre
-//                              transform M = (dτ^{-1}_{hξ})* ∂l/∂ξ uses (paper, Section 4.1, DDB method step (a))
+//                              transform M = (dτ^{-1}_{hξ})* ∂l/∂ξ uses (paper, Section 4.1, DDB
+//                              method step (a))
 // Composed here, written once:
 //   transport(a, b, mu) = Ad*_{τ(a)τ(b)} mu, the DDB update (paper, eq. (4.7)).
 #pragma once

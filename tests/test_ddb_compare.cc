@@ -135,7 +135,8 @@ TEST(DdbCompare, FailedSolveKeepsThePrefixAndExitsOne) {
   // ddb-exp-exact cannot solve its Legendre equation at h = 10 after 14 steps (see
   // Ddb.TooLargeStepThrowsTypedErrorAndKeepsPrefix): the valid prefix is written.
   const fs::path out = freshFolder("failure");
-  ASSERT_EQ(runApp("--method ddb-exp-exact --h 10 --t-end 400 --repeat 1 --out " + out.string()), 1);
+  ASSERT_EQ(runApp("--method ddb-exp-exact --h 10 --t-end 400 --repeat 1 --out " + out.string()),
+            1);
   std::string header;
   const auto rows = readCsv(out / "ddb-exp-exact.csv", header);
   EXPECT_EQ(rows.size(), 15u);
