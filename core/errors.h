@@ -18,7 +18,7 @@ class InvalidArgument : public std::invalid_argument {
 
 /// An implicit equation that the solver did not bring below its tolerance.
 /// `step` is the index k of the step from t_k that failed (-1 while unknown to
-/// the thrower; integrate() fills it in).
+/// the thrower), `time` and `h` NaN while unknown; integrate() fills them in.
 class SolveFailure : public std::runtime_error {
  public:
   SolveFailure(std::string what_failed, long step, double time, double h, double residual,
@@ -31,8 +31,9 @@ class SolveFailure : public std::runtime_error {
         residual_(residual),
         tolerance_(tolerance) {}
 
-  SolveFailure atStep(long step) const {
-    return SolveFailure(what_failed_, step, time_, h_, residual_, tolerance_);
+  SolveFailure atStep(long step, double time, double h) const {
+    return SolveFailure(what_failed_, step, std::isnan(time_) ? time : time_,
+                        std::isnan(h_) ? h : h_, residual_, tolerance_);
   }
 
   long step() const { return step_; }

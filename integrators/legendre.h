@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 
 #include "core/lie_poisson_system.h"
-#include "integrators/tiny_solver.h"
+#include "core/tiny_solver.h"
 
 namespace ddb {
 

@@ -42,7 +42,7 @@ void integrate(OneStepMethod<G>& method, const typename G::template Dual<double>
     try {
       mu = method.step(mu, t, h);
     } catch (const SolveFailure& failure) {
-      throw failure.atStep(k);
+      throw failure.atStep(k, t, h);
     }
     if (!mu.allFinite()) {
       throw SolveFailure(method.name() + " step (state became non-finite)", k, t, h, INFINITY, 0);

@@ -10,9 +10,9 @@
 
 #include "core/errors.h"
 #include "core/lie_poisson_system.h"
+#include "core/tiny_solver.h"
 #include "integrators/butcher_tableau.h"
 #include "integrators/one_step_method.h"
-#include "integrators/tiny_solver.h"
 
 namespace ddb {
 
