@@ -1,7 +1,7 @@
 // LieGroupBase: the abstract interface every group implements (CRTP, manif style).
 //
 // A group `G : LieGroupBase<G>` provides, as scalar-generic static members:
-//   kDim, kNumCasimirs;  Algebra<T>, Dual<T>, Matrix<T> (= Element<T>), Casimirs<T>
+//   kDim, kNumCasimirs;  Algebra<T>, Dual<T>, Matrix<T> (group elements too), Casimirs<T>
 //   hat(x) -> Matrix     matrix representation of the algebra element x
 //   vee(X) -> Algebra    inverse of hat on the algebra
 //   dualHat(mu)          Riesz representer: <mu, x> = Re tr(dualHat(mu)^H hat(x))

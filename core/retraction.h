@@ -2,7 +2,7 @@
 // τ(x)τ(-x) = e (paper, Section 4.1, Definition "Retr"). CRTP, like LieGroupBase.
 //
 // A retraction `R : Retraction<R, G>` provides scalar-generic const members:
-//   tau(x) -> Element          τ(x)
+//   tau(x) -> Matrix           τ(x), a group element
 //   tauInverse(g) -> Algebra   τ^{-1}(g) near e
 //   dTau(x, y)                 right-trivialised tangent: T_xτ(y) = dτ_x(y) τ(x)
 //   dTauInverse(x, y)          its inverse, dτ^{-1}_x

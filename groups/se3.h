@@ -17,7 +17,6 @@ namespace ddb {
 struct SE3 : LieGroupBase<SE3> {
   static constexpr int kDim = 6;
   static constexpr int kNumCasimirs = 2;
-  static constexpr const char* kName = "SE3";
 
   template <class T>
   using Algebra = Eigen::Matrix<T, 6, 1>;
@@ -25,8 +24,6 @@ struct SE3 : LieGroupBase<SE3> {
   using Dual = Eigen::Matrix<T, 6, 1>;
   template <class T>
   using Matrix = Eigen::Matrix<T, 4, 4>;
-  template <class T>
-  using Element = Matrix<T>;
   template <class T>
   using Casimirs = Eigen::Matrix<T, 2, 1>;
 

@@ -13,7 +13,6 @@ namespace ddb {
 struct SO3 : LieGroupBase<SO3> {
   static constexpr int kDim = 3;
   static constexpr int kNumCasimirs = 1;
-  static constexpr const char* kName = "SO3";
 
   template <class T>
   using Algebra = Eigen::Matrix<T, 3, 1>;
@@ -21,8 +20,6 @@ struct SO3 : LieGroupBase<SO3> {
   using Dual = Eigen::Matrix<T, 3, 1>;
   template <class T>
   using Matrix = Eigen::Matrix<T, 3, 3>;
-  template <class T>
-  using Element = Matrix<T>;
   template <class T>
   using Casimirs = Eigen::Matrix<T, 1, 1>;
 

@@ -8,7 +8,6 @@ namespace ddb {
 
 template <int S>
 struct ButcherTableau {
-  static constexpr int kStages = S;
   const char* name;
   int order;
   std::array<std::array<double, S>, S> a;
