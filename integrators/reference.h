@@ -56,8 +56,7 @@ class ReferenceSolver : public OneStepMethod<G> {
     double time = t;
     // First trial step: 1% of the time scale |μ|/|μ̇| (odeint's error estimate is NaN,
     // and so accepted, when a trial step overflows), never more than h.
-    const double rate = system_->vectorField(mu).norm();
-    double dt = dt_ > 0.0 ? dt_ : std::min(h, rate > 0.0 ? 0.01 * mu.norm() / rate : h);
+    double dt = dt_ > 0.0 ? dt_ : firstStep(mu, h);
     int rejected = 0;
     while (end - time > 1e-14 * std::abs(end)) {
       const bool last = time + dt >= end;
@@ -88,6 +87,11 @@ class ReferenceSolver : public OneStepMethod<G> {
   }
 
  private:
+  double firstStep(const Dual& mu, double h) const {
+    const double rate = system_->vectorField(mu).norm();
+    return std::min(h, rate > 0.0 ? 0.01 * mu.norm() / rate : h);
+  }
+
   using Fehlberg78 = boost::numeric::odeint::runge_kutta_fehlberg78<State>;
   using Controlled = boost::numeric::odeint::controlled_runge_kutta<Fehlberg78>;
 

@@ -15,6 +15,13 @@ namespace ddb {
 
 namespace detail {
 /// ½ Σ_i w_i x_i² in any scalar type (the quadratic form of a diagonal tensor).
+/// (𝕀, 𝕄) stacked: the diagonal of the Lagrangian's quadratic form.
+inline Eigen::Matrix<double, 6, 1> kirchhoffWeights(const Eigen::Vector3d& inertia,
+                                                    const Eigen::Vector3d& mass) {
+  return (Eigen::Matrix<double, 6, 1>() << requirePositive("inertia", inertia),
+          requirePositive("mass", mass))
+      .finished();
+}
 template <class T, class Weights>
 T halfWeightedSquares(const Eigen::Matrix<T, 6, 1>& x, const Weights& w) {
   T sum = constant<T>(0.0);
@@ -26,9 +33,7 @@ T halfWeightedSquares(const Eigen::Matrix<T, 6, 1>& x, const Weights& w) {
 class KirchhoffLagrangian : public AutoDiffLagrangian<KirchhoffLagrangian, SE3> {
  public:
   KirchhoffLagrangian(const Eigen::Vector3d& inertia, const Eigen::Vector3d& mass)
-      : weights_((Eigen::Matrix<double, 6, 1>() << requirePositive("inertia", inertia),
-                  requirePositive("mass", mass))
-                     .finished()) {}
+      : weights_(detail::kirchhoffWeights(inertia, mass)) {}
   template <class T>
   T evaluate(const Eigen::Matrix<T, 6, 1>& xi) const {
     return detail::halfWeightedSquares(xi, weights_);
@@ -49,10 +54,7 @@ class KirchhoffLagrangian : public AutoDiffLagrangian<KirchhoffLagrangian, SE3> 
 class KirchhoffHamiltonian : public AutoDiffHamiltonian<KirchhoffHamiltonian, SE3> {
  public:
   KirchhoffHamiltonian(const Eigen::Vector3d& inertia, const Eigen::Vector3d& mass)
-      : inverse_weights_((Eigen::Matrix<double, 6, 1>() << requirePositive("inertia", inertia),
-                          requirePositive("mass", mass))
-                             .finished()
-                             .cwiseInverse()) {}
+      : inverse_weights_(detail::kirchhoffWeights(inertia, mass).cwiseInverse()) {}
   template <class T>
   T evaluate(const Eigen::Matrix<T, 6, 1>& mu) const {
     return detail::halfWeightedSquares(mu, inverse_weights_);
