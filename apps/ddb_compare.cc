@@ -1,8 +1,12 @@
 // ddb-compare: compares integrators on the paper's rigid-body scenarios (Section 5;
-// DESIGN.md §3) and on the heavy top and Kirchhoff body, with the command line and
-// files of DESIGN.md §5. Bad input: one line naming the flag and value on stderr,
+// docs/conventions.md §3) and on the heavy top and Kirchhoff body, with the command line and
+// files of docs/file-formats.md. Bad input: one line naming the flag and value on stderr,
 // exit status 2, nothing written. Every file is written under a temporary name and
 // renamed. Exit status 1 if an integrator failed (its valid prefix is still written).
+#include <ddb/integrators/method_registry.h>
+#include <ddb/systems/heavy_top.h>
+#include <ddb/systems/kirchhoff.h>
+#include <ddb/systems/rigid_body.h>
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 
@@ -13,11 +17,7 @@
 #include <map>
 #include <sstream>
 
-#include "integrators/method_registry.h"
 #include "output_files.h"
-#include "systems/heavy_top.h"
-#include "systems/kirchhoff.h"
-#include "systems/rigid_body.h"
 
 namespace {
 
@@ -59,7 +59,7 @@ Eigen::Matrix<double, N, 1> parseVector(const std::string& flag, const std::stri
   return v;
 }
 
-// ---- the command line (DESIGN.md §5) ----
+// ---- the command line (docs/file-formats.md) ----
 struct Options {
   std::string system = "rigid-body", scenario = "A", methods, out = "results", sweep;
   std::string inertia, omega0, mu0, chi, metric, mass;

@@ -1,10 +1,13 @@
 // One step (h = 0.1) of every registry method on the rigid body of Scenario A and on
-// the heavy top, named rigid_body/<method> and heavy_top/<method> (DESIGN.md §5), with
+// the heavy top, named rigid_body/<method> and heavy_top/<method> (docs/file-formats.md), with
 // Boost.Odeint's runge_kutta4 on the same vector field as the peer
 // `rigid_body/odeint-rk4`. The counter allocs_per_step counts global operator new
 // calls per step. Compare methods by ratios of times within one run
 // (scripts/bench_ratios.py).
 #include <benchmark/benchmark.h>
+#include <ddb/integrators/method_registry.h>
+#include <ddb/systems/heavy_top.h>
+#include <ddb/systems/rigid_body.h>
 
 #include <atomic>
 #include <boost/numeric/odeint.hpp>
@@ -12,10 +15,6 @@
 #include <functional>
 #include <memory>
 #include <new>
-
-#include "integrators/method_registry.h"
-#include "systems/heavy_top.h"
-#include "systems/rigid_body.h"
 
 namespace {
 std::atomic<long> g_allocations{0};

@@ -1,8 +1,8 @@
 // AutoDiffLagrangian on a non-quadratic l whose gradient and Hessian are known in
 // closed form: l(ξ) = exp(a·ξ) + ¼(ξ·Bξ)² + sin(ξ₁ξ₂).
+#include <ddb/core/autodiff.h>
 #include <gmock/gmock.h>
 
-#include "core/autodiff.h"
 #include "test_support.h"
 
 namespace ddb::test {

@@ -1,6 +1,8 @@
 // ddb-compare end to end on a short horizon: the files against the contract of
-// DESIGN.md §5 (columns, row count, JSON keys, finite values), the final state
+// docs/file-formats.md (columns, row count, JSON keys, finite values), the final state
 // against the library called directly, and bad input (exit status 2, nothing written).
+#include <ddb/integrators/method_registry.h>
+#include <ddb/systems/rigid_body.h>
 #include <gmock/gmock.h>
 #include <sys/wait.h>
 
@@ -10,9 +12,6 @@
 #include <map>
 #include <regex>
 #include <sstream>
-
-#include "integrators/method_registry.h"
-#include "systems/rigid_body.h"
 
 namespace {
 

@@ -1,11 +1,11 @@
-// Integrators on the rigid body of Scenario A (DESIGN.md §3): orders fitted against
+// Integrators on the rigid body of Scenario A (docs/conventions.md §3): orders fitted against
 // the reference solver, exact Casimir preservation of DDB, agreement of its two
 // forms, the reference against itself, and a failed solve keeping the prefix.
+#include <ddb/integrators/method_registry.h>
+#include <ddb/systems/rigid_body.h>
 #include <gmock/gmock.h>
 
-#include "integrators/method_registry.h"
 #include "order_fit.h"
-#include "systems/rigid_body.h"
 #include "test_support.h"
 
 namespace ddb::test {

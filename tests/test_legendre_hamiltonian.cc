@@ -1,12 +1,12 @@
 // LegendreHamiltonian: a system defined by its Lagrangian alone, against the rigid
 // body's hand-written Hamiltonian and, for a non-quadratic l, against the defining
 // identities ∂l/∂ξ(∂H/∂μ(μ)) = μ and central differences of H and ∂H/∂μ.
+#include <ddb/core/autodiff.h>
+#include <ddb/core/legendre_hamiltonian.h>
+#include <ddb/integrators/method_registry.h>
+#include <ddb/systems/rigid_body.h>
 #include <gmock/gmock.h>
 
-#include "core/autodiff.h"
-#include "core/legendre_hamiltonian.h"
-#include "integrators/method_registry.h"
-#include "systems/rigid_body.h"
 #include "test_support.h"
 
 namespace ddb::test {

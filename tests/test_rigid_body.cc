@@ -1,8 +1,8 @@
 // The rigid body against the component equations of the paper's Examples 3.1/3.5 and
 // the energy/Casimir rates of Proposition 3.3, by central differences along the flow.
+#include <ddb/systems/rigid_body.h>
 #include <gmock/gmock.h>
 
-#include "systems/rigid_body.h"
 #include "test_support.h"
 
 namespace ddb::test {

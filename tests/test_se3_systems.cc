@@ -1,12 +1,12 @@
 // The heavy top and the Kirchhoff body on se(3)*: vector fields against the
 // textbook equations, the double-bracket energy rate and Casimirs by central
 // differences, and DDB (Hamiltonian form for the heavy top) against the reference.
+#include <ddb/integrators/method_registry.h>
+#include <ddb/systems/heavy_top.h>
+#include <ddb/systems/kirchhoff.h>
 #include <gmock/gmock.h>
 
-#include "integrators/method_registry.h"
 #include "order_fit.h"
-#include "systems/heavy_top.h"
-#include "systems/kirchhoff.h"
 #include "test_support.h"
 
 namespace ddb::test {

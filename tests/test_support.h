@@ -2,17 +2,16 @@
 // the generic suites. Adding a group: one entry in kGroups-style lists below.
 #pragma once
 
+#include <ddb/groups/cayley.h>
+#include <ddb/groups/exponential.h>
+#include <ddb/groups/se3.h>
+#include <ddb/groups/so3.h>
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
 #include <numeric>
 #include <random>
 #include <vector>
-
-#include "groups/cayley.h"
-#include "groups/exponential.h"
-#include "groups/se3.h"
-#include "groups/so3.h"
 
 namespace ddb::test {
 

@@ -1,11 +1,11 @@
 // Symmetric DDB variants and their compositions on the rigid body of Scenario A:
-// orders fitted against the reference (DESIGN.md §2 facts), symmetry Φ_{-h}∘Φ_h = id,
+// orders fitted against the reference (docs/conventions.md §2 facts), symmetry Φ_{-h}∘Φ_h = id,
 // and exact Casimir preservation by every stage.
+#include <ddb/integrators/method_registry.h>
+#include <ddb/systems/rigid_body.h>
 #include <gmock/gmock.h>
 
-#include "integrators/method_registry.h"
 #include "order_fit.h"
-#include "systems/rigid_body.h"
 #include "test_support.h"
 
 namespace ddb::test {

@@ -3,7 +3,7 @@
 // any matrix representation, and a group may shadow them with closed forms (SO3).
 #pragma once
 
-#include "core/retraction.h"
+#include <ddb/core/retraction.h>
 
 namespace ddb {
 

@@ -14,8 +14,7 @@
 #pragma once
 
 #include <ceres/jet.h>
-
-#include "core/lagrangian.h"
+#include <ddb/core/lagrangian.h>
 
 namespace ddb {
 

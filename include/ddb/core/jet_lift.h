@@ -7,9 +7,9 @@
 // directional derivatives the interfaces provide.
 #pragma once
 
-#include <Eigen/Core>
+#include <ddb/core/scalar.h>
 
-#include "core/scalar.h"
+#include <Eigen/Core>
 
 namespace ddb {
 

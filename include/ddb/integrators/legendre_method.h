@@ -3,12 +3,12 @@
 // step formula in the subclasses Ddb, SymmetricDdb and PaperSymmetricDdb).
 #pragma once
 
+#include <ddb/core/lie_poisson_system.h>
+#include <ddb/integrators/legendre.h>
+#include <ddb/integrators/one_step_method.h>
+
 #include <memory>
 #include <string>
-
-#include "core/lie_poisson_system.h"
-#include "integrators/legendre.h"
-#include "integrators/one_step_method.h"
 
 namespace ddb {
 

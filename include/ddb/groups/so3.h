@@ -1,12 +1,12 @@
 // SO(3): rotations; so(3) ≅ R^3 with [x, y] = x × y, so(3)* ≅ R^3 with the dot
-// pairing (DESIGN.md §1). Closed forms shadow the generic LieGroupBase versions.
+// pairing (docs/conventions.md §1). Closed forms shadow the generic LieGroupBase versions.
 #pragma once
+
+#include <ddb/core/lie_group.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cmath>
-
-#include "core/lie_group.h"
 
 namespace ddb {
 
@@ -170,7 +170,8 @@ struct SO3 : LieGroupBase<SO3> {
     return y + xy * a + x.cross(xy) * b;
   }
 
-  /// Closed form dexp^{-1}_x = I - X/2 + c X², c = (1 - (θ/2) cot(θ/2))/θ² (DESIGN.md §1).
+  /// Closed form dexp^{-1}_x = I - X/2 + c X², c = (1 - (θ/2) cot(θ/2))/θ² (docs/conventions.md
+  /// §1).
   template <class T>
   static Algebra<T> dexpInv(const Algebra<T>& x, const Algebra<T>& y) {
     const Algebra<T> xy = x.cross(y);

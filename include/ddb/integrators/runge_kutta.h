@@ -4,15 +4,15 @@
 // Neither keeps the coadjoint orbit: they are the paper's general-purpose peers.
 #pragma once
 
+#include <ddb/core/errors.h>
+#include <ddb/core/lie_poisson_system.h>
+#include <ddb/core/tiny_solver.h>
+#include <ddb/integrators/butcher_tableau.h>
+#include <ddb/integrators/one_step_method.h>
+
 #include <array>
 #include <memory>
 #include <string>
-
-#include "core/errors.h"
-#include "core/lie_poisson_system.h"
-#include "core/tiny_solver.h"
-#include "integrators/butcher_tableau.h"
-#include "integrators/one_step_method.h"
 
 namespace ddb {
 

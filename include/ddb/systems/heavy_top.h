@@ -1,15 +1,15 @@
-// The heavy top on se(3)* (DESIGN.md §2): μ = (π, γ), H = ½ π·𝕀^{-1}π + mgℓ χ·γ,
+// The heavy top on se(3)* (docs/conventions.md §2): μ = (π, γ), H = ½ π·𝕀^{-1}π + mgℓ χ·γ,
 // so ξ = ∂H/∂μ = (𝕀^{-1}π, mgℓ χ) and μ̇ = ad*_ξ μ gives π̇ = π×Ω + mgℓ γ×χ,
 // γ̇ = γ×Ω. H is linear in γ: there is no regular Lagrangian, so DDB runs in its
 // Hamiltonian form. Dissipation k♯ = α diag(k); Casimirs |γ|², π·γ.
 #pragma once
 
-#include <memory>
+#include <ddb/core/autodiff.h>
+#include <ddb/core/dissipation_metric.h>
+#include <ddb/core/lie_poisson_system.h>
+#include <ddb/groups/se3.h>
 
-#include "core/autodiff.h"
-#include "core/dissipation_metric.h"
-#include "core/lie_poisson_system.h"
-#include "groups/se3.h"
+#include <memory>
 
 namespace ddb {
 

@@ -4,15 +4,15 @@
 // of the paper's DOP853 with tight tolerances).
 #pragma once
 
+#include <ddb/core/lie_poisson_system.h>
+#include <ddb/integrators/one_step_method.h>
+
 #include <algorithm>
 #include <array>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
 #include <memory>
 #include <string>
-
-#include "core/lie_poisson_system.h"
-#include "integrators/one_step_method.h"
 
 namespace ddb {
 

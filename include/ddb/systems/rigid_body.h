@@ -3,12 +3,12 @@
 //   Ṁ = M × Ω + α M × (M × Ω)   (eq. (3.6)),  Casimir |M|.
 #pragma once
 
-#include <memory>
+#include <ddb/core/autodiff.h>
+#include <ddb/core/dissipation_metric.h>
+#include <ddb/core/lie_poisson_system.h>
+#include <ddb/groups/so3.h>
 
-#include "core/autodiff.h"
-#include "core/dissipation_metric.h"
-#include "core/lie_poisson_system.h"
-#include "groups/so3.h"
+#include <memory>
 
 namespace ddb {
 

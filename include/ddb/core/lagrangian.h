@@ -2,7 +2,7 @@
 // l: g → R with ∂l/∂ξ ∈ g*, and a Hamiltonian H: g* → R with ∂H/∂μ ∈ g.
 #pragma once
 
-#include "core/smooth_function.h"
+#include <ddb/core/smooth_function.h>
 
 namespace ddb {
 

@@ -1,5 +1,5 @@
 // SE(3) = SO(3) ⋉ R^3 in its 4×4 homogeneous representation; ξ = (ω, v), μ = (π, γ)
-// with the dot pairing (DESIGN.md §1):
+// with the dot pairing (docs/conventions.md §1):
 //   [ξ₁, ξ₂] = (ω₁×ω₂, ω₁×v₂ − ω₂×v₁),  ad*_ξ μ = (π×ω + γ×v, γ×ω),
 //   Ad*_(R,r) μ = (Rᵀ(π + γ×r), Rᵀγ),   Casimirs |γ|² and π·γ.
 // exp/log use SO(3)'s closed forms (V = dexp_ω of SO(3)); dexp and dexp^{-1} come
@@ -7,10 +7,10 @@
 // the 4×4 formulas (paper, eqs. (4.15), (4.16)); dcay from the 4×4 matrices.
 #pragma once
 
-#include <Eigen/Core>
+#include <ddb/core/lie_group.h>
+#include <ddb/groups/so3.h>
 
-#include "core/lie_group.h"
-#include "groups/so3.h"
+#include <Eigen/Core>
 
 namespace ddb {
 

@@ -4,14 +4,14 @@
 // so Casimirs are constant and dH/dt = -k(ad*_ξ μ, ad*_ξ μ) (Proposition 3.3).
 #pragma once
 
+#include <ddb/core/dissipation_metric.h>
+#include <ddb/core/errors.h>
+#include <ddb/core/jet_lift.h>
+#include <ddb/core/lagrangian.h>
+
 #include <memory>
 #include <string>
 #include <utility>
-
-#include "core/dissipation_metric.h"
-#include "core/errors.h"
-#include "core/jet_lift.h"
-#include "core/lagrangian.h"
 
 namespace ddb {
 

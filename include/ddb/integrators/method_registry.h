@@ -1,17 +1,17 @@
-// The integrators by their contract names (DESIGN.md §5), for any fixed-size group.
+// The integrators by their contract names (docs/file-formats.md), for any fixed-size group.
 #pragma once
+
+#include <ddb/groups/cayley.h>
+#include <ddb/groups/exponential.h>
+#include <ddb/integrators/composition.h>
+#include <ddb/integrators/ddb.h>
+#include <ddb/integrators/reference.h>
+#include <ddb/integrators/runge_kutta.h>
+#include <ddb/integrators/symmetric_ddb.h>
 
 #include <memory>
 #include <string>
 #include <vector>
-
-#include "groups/cayley.h"
-#include "groups/exponential.h"
-#include "integrators/composition.h"
-#include "integrators/ddb.h"
-#include "integrators/reference.h"
-#include "integrators/runge_kutta.h"
-#include "integrators/symmetric_ddb.h"
 
 namespace ddb {
 

@@ -10,7 +10,7 @@
 //   exp(x), log(g), casimirs(mu)
 // Everything composed below is written once from those; a group may shadow any of
 // them with a closed form (SO3 does), and the generic test suite checks each
-// group's versions against the defining identities of DESIGN.md §1:
+// group's versions against the defining identities of docs/conventions.md §1:
 //   <ad*_x mu, y> = <mu, [x, y]>,  <Ad*_g mu, y> = <mu, Ad_g y>,  Ad*_{gh} = Ad*_h Ad*_g.
 //
 // The algebra and dual element types are parameters: fixed-size Eigen vectors for
@@ -18,13 +18,13 @@
 // (hat = vee = identity, pairing Re tr(A^H B)); no n×n operator is ever formed here.
 #pragma once
 
+#include <ddb/core/bernoulli.h>
+#include <ddb/core/errors.h>
+#include <ddb/core/scalar.h>
+
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <complex>
-
-#include "core/bernoulli.h"
-#include "core/errors.h"
-#include "core/scalar.h"
 
 namespace ddb {
 

@@ -4,12 +4,12 @@
 // of a DDB method is a coadjoint action, the composition stays on the orbit.
 #pragma once
 
+#include <ddb/integrators/one_step_method.h>
+
 #include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include "integrators/one_step_method.h"
 
 namespace ddb {
 

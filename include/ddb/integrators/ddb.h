@@ -2,14 +2,14 @@
 //   (i)  find ξ_k with M_k = (dτ^{-1}_{hξ_k})* ∂l/∂ξ(ξ_k)      (discrete Legendre)
 //   (ii) M_{k+1} = Ad*_{τ(hξ_k) τ(hφ(ξ_k))} M_k                 (eq. (4.12))
 // with φ(ξ) = k♯(ad*_ξ ∂l/∂ξ(ξ)) (eq. (3.5)). Every M_k stays on the coadjoint
-// orbit of M_0 exactly; first order for α ≠ 0, second order for α = 0 (DESIGN.md §2).
+// orbit of M_0 exactly; first order for α ≠ 0, second order for α = 0 (docs/conventions.md §2).
 #pragma once
+
+#include <ddb/core/lie_poisson_system.h>
+#include <ddb/integrators/legendre_method.h>
 
 #include <memory>
 #include <string>
-
-#include "core/lie_poisson_system.h"
-#include "integrators/legendre_method.h"
 
 namespace ddb {
 

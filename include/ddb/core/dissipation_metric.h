@@ -1,11 +1,11 @@
 // DissipationMetric: the symmetric semi-definite k: g* × g* → R through its
 // musical map k♯: g* → g (paper, eq. (3.5)): φ(ξ) = k♯(ad*_ξ ∂l/∂ξ(ξ)).
-// A negative scale (α < 0) is allowed: energy ascent on the orbit (DESIGN.md §4).
+// A negative scale (α < 0) is allowed: energy ascent on the orbit (docs/conventions.md §4).
 #pragma once
 
-#include <string>
+#include <ddb/core/errors.h>
 
-#include "core/errors.h"
+#include <string>
 
 namespace ddb {
 
@@ -36,7 +36,7 @@ class ScaledIdentityMetric : public DissipationMetric<G> {
   double alpha_;
 };
 
-/// k♯ = α · diag(k), k_i >= 0 (the heavy-top and Kirchhoff metrics of DESIGN.md §5).
+/// k♯ = α · diag(k), k_i >= 0 (the heavy-top and Kirchhoff metrics of docs/file-formats.md).
 template <class G>
 class DiagonalMetric : public DissipationMetric<G> {
  public:

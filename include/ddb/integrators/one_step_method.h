@@ -4,10 +4,10 @@
 // observer has seen every state before it when the typed SolveFailure propagates.
 #pragma once
 
+#include <ddb/core/errors.h>
+
 #include <string>
 #include <vector>
-
-#include "core/errors.h"
 
 namespace ddb {
 

@@ -1,5 +1,5 @@
 // Butcher tableaus as data (GeometricIntegrators.jl style): the classical RK4 and
-// the 3-stage Lobatto IIIC method of order 4 (DESIGN.md §2; Hairer & Wanner II, IV.5).
+// the 3-stage Lobatto IIIC method of order 4 (docs/conventions.md §2; Hairer & Wanner II, IV.5).
 #pragma once
 
 #include <array>

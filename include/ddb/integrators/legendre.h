@@ -5,10 +5,10 @@
 // is the momentum M_k; the symmetric variants' targets depend on the unknown too.
 #pragma once
 
-#include <Eigen/Core>
+#include <ddb/core/lie_poisson_system.h>
+#include <ddb/core/tiny_solver.h>
 
-#include "core/lie_poisson_system.h"
-#include "core/tiny_solver.h"
+#include <Eigen/Core>
 
 namespace ddb {
 

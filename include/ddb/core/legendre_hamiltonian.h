@@ -6,13 +6,13 @@
 // one instance must not be shared between threads).
 #pragma once
 
+#include <ddb/core/jet_lift.h>
+#include <ddb/core/lagrangian.h>
+#include <ddb/core/lie_poisson_system.h>
+#include <ddb/core/tiny_solver.h>
+
 #include <Eigen/LU>
 #include <memory>
-
-#include "core/jet_lift.h"
-#include "core/lagrangian.h"
-#include "core/lie_poisson_system.h"
-#include "core/tiny_solver.h"
 
 namespace ddb {
 

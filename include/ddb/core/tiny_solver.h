@@ -1,5 +1,5 @@
 // Solves the small fixed-size implicit equations r(x) = 0 with ceres::TinySolver and
-// Jet autodiff (DESIGN.md §4). TinySolver has no converged flag and an absolute
+// Jet autodiff (docs/conventions.md §4). TinySolver has no converged flag and an absolute
 // function tolerance, so convergence is decided here on the final residual:
 //   ‖r(x)‖ <= relative_tolerance · scale,
 // scale being the size of the equation's data (e.g. ‖M_k‖). Failure throws SolveFailure.
@@ -7,10 +7,9 @@
 
 #include <ceres/tiny_solver.h>
 #include <ceres/tiny_solver_autodiff_function.h>
+#include <ddb/core/errors.h>
 
 #include <Eigen/Core>
-
-#include "core/errors.h"
 
 namespace ddb {
 

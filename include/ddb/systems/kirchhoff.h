@@ -4,12 +4,12 @@
 // Dissipation k♯ = α diag(k); Casimirs |P|², π·P.
 #pragma once
 
-#include <memory>
+#include <ddb/core/autodiff.h>
+#include <ddb/core/dissipation_metric.h>
+#include <ddb/core/lie_poisson_system.h>
+#include <ddb/groups/se3.h>
 
-#include "core/autodiff.h"
-#include "core/dissipation_metric.h"
-#include "core/lie_poisson_system.h"
-#include "groups/se3.h"
+#include <memory>
 
 namespace ddb {
 

@@ -3,9 +3,9 @@
 // ad^order term (TruncatedExponential; the paper's runs use order 2).
 #pragma once
 
-#include "core/bernoulli.h"
-#include "core/errors.h"
-#include "core/retraction.h"
+#include <ddb/core/bernoulli.h>
+#include <ddb/core/errors.h>
+#include <ddb/core/retraction.h>
 
 namespace ddb {
 

@@ -1,0 +1,26 @@
+// The whole public API of ddb in one include. The per-concept headers below stay
+// reachable on their own (#include <ddb/groups/so3.h>, ...).
+#pragma once
+
+#include <ddb/core/autodiff.h>
+#include <ddb/core/dissipation_metric.h>
+#include <ddb/core/errors.h>
+#include <ddb/core/lagrangian.h>
+#include <ddb/core/legendre_hamiltonian.h>
+#include <ddb/core/lie_group.h>
+#include <ddb/core/lie_poisson_system.h>
+#include <ddb/core/retraction.h>
+#include <ddb/groups/cayley.h>
+#include <ddb/groups/exponential.h>
+#include <ddb/groups/se3.h>
+#include <ddb/groups/so3.h>
+#include <ddb/integrators/composition.h>
+#include <ddb/integrators/ddb.h>
+#include <ddb/integrators/method_registry.h>
+#include <ddb/integrators/one_step_method.h>
+#include <ddb/integrators/reference.h>
+#include <ddb/integrators/runge_kutta.h>
+#include <ddb/integrators/symmetric_ddb.h>
+#include <ddb/systems/heavy_top.h>
+#include <ddb/systems/kirchhoff.h>
+#include <ddb/systems/rigid_body.h>
