@@ -78,7 +78,7 @@ void BM_OdeintRk4(benchmark::State& state, std::shared_ptr<const LiePoissonSyste
                   Eigen::Vector3d mu0) {
   using State = OdeintSystem<SO3>::State;
   boost::numeric::odeint::runge_kutta4<State> stepper;
-  const OdeintSystem<SO3> rhs{*body};
+  const OdeintSystem<SO3> rhs{*body, 3, 1};
   runSteps<Eigen::Vector3d>(state, mu0, [&](const Eigen::Vector3d& mu, double t) {
     State x;
     Eigen::Map<Eigen::Vector3d>(x.data()) = mu;

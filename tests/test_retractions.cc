@@ -2,6 +2,7 @@
 // τ(x)τ(-x) = e, τ^{-1}∘τ = id, dτ against central differences of τ,
 // dτ∘dτ^{-1} = I, the dual against the pairing, and the paper's identity
 // (dτ^{-1}_{-x})* = Ad*_{τ(x)} (dτ^{-1}_x)* (Section 4.1).
+#include <type_traits>
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include "test_support.h"
@@ -9,39 +10,57 @@
 namespace ddb::test {
 namespace {
 
-template <class R>
+template <class TG>
 class RetractionTest : public ::testing::Test {
  protected:
-  using G = typename R::Group;
+  using G = typename TG::Group;
+  using R = typename TG::Retraction;
   using A = typename G::template Algebra<double>;
   using D = typename G::template Dual<double>;
   R retraction;
   Sampler sampler;
+  Samples<TG> samples{sampler};
   std::vector<A> points() {
     // Cayley is singular nowhere on compact groups but the near-π points matter only for exp.
-    auto p = samplePoints<G>(sampler, /*near_pi=*/true);
-    for (int i = 0; i < 2; ++i) p.push_back(1.5 * sampler.vector<A>());
+    auto p = samples.points(/*near_pi=*/true);
+    for (int i = 0; i < 2; ++i) p.push_back(1.5 * samples.algebra());
     return p;
+  }
+  A algebra() { return samples.algebra(); }
+  D dual() { return samples.dual(); }
+  template <class... Xs>
+  static double scale(const Xs&... xs) {
+    return Samples<TG>::scale(xs...);
   }
 };
 
-TYPED_TEST_SUITE(RetractionTest, AllGroups::Retractions);
+// Every group with the Cayley and with the exponential retraction.
+template <class... Ts>
+struct Concat;
+template <class... As, class... Bs>
+struct Concat<::testing::Types<As...>, ::testing::Types<Bs...>> {
+  using type = ::testing::Types<As..., Bs...>;
+};
+using AllRetractions = Concat<AllGroups::With<Cayley>, AllGroups::With<Exponential>>::type;
+TYPED_TEST_SUITE(RetractionTest, AllRetractions, GroupNames);
 
 TYPED_TEST(RetractionTest, IdentityAndInverseProperty) {
   using G = typename TestFixture::G;
   using A = typename TestFixture::A;
   const auto& r = this->retraction;
-  EXPECT_LT((r.tau(A::Zero().eval()) - G::template identity<double>()).norm(), kTight);
+  const A zero = this->algebra() * 0.0;
+  EXPECT_LT((r.tau(zero) - G::identityLike(r.tau(zero))).norm(), kTight);
   for (const auto& x : this->points()) {
     const A minus = -x;
-    EXPECT_LT((G::compose(r.tau(x), r.tau(minus)) - G::template identity<double>()).norm(), 1e-12)
+    const auto product = G::compose(r.tau(x), r.tau(minus));
+    EXPECT_LT((product - G::identityLike(product)).norm(), 1e-12 * this->scale(x))
         << "x = " << x.transpose();
   }
 }
 
 TYPED_TEST(RetractionTest, TauInverseInvertsTau) {
   for (const auto& x : this->points()) {
-    const double tolerance = x.norm() > 3.0 ? 1e-8 : 1e-12;
+    const double tolerance = (x.norm() > 3.0 ? 1e-8 : 1e-12) * this->scale(x);
     EXPECT_LT((this->retraction.tauInverse(this->retraction.tau(x)) - x).norm(),
               tolerance * (1 + x.norm()))
         << "x = " << x.transpose();
@@ -54,12 +73,12 @@ TYPED_TEST(RetractionTest, TangentMatchesCentralDifferences) {
   const auto& r = this->retraction;
   const double eps = 1e-6;
   for (const auto& x : this->points()) {
-    const A y = this->sampler.template vector<A>();
+    const A y = this->algebra();
     const A xp = x + eps * y, xm = x - eps * y;
     const auto difference = ((r.tau(xp) - r.tau(xm)) / (2 * eps)).eval();
     // T_xτ(y) = dτ_x(y) τ(x)
     const auto expected = (G::hat(r.dTau(x, y)) * r.tau(x)).eval();
-    EXPECT_LT((difference - expected).norm(), 1e-8 * (1 + x.squaredNorm()))
+    EXPECT_LT((difference - expected).norm(), 1e-8 * (1 + x.squaredNorm()) * this->scale(y))
         << "x = " << x.transpose();
   }
 }
@@ -70,9 +89,15 @@ TYPED_TEST(RetractionTest, TangentInverseAndDual) {
   using D = typename TestFixture::D;
   const auto& r = this->retraction;
   for (const auto& x : this->points()) {
-    const A y = this->sampler.template vector<A>();
-    const D mu = this->sampler.template vector<D>();
-    const double scale = 1 + x.squaredNorm();
+    // The exponential's dτ⁻¹ is a series with poles at ad-radius 2π; matrix groups reach
+    // that at spectral radius π, where it cannot be summed to round-off.
+    if (std::is_same_v<typename TestFixture::R, Exponential<G>> &&
+        Samples<TypeParam>::adRadius(x) > 4.0) {
+      continue;
+    }
+    const A y = this->algebra();
+    const D mu = this->dual();
+    const double scale = (1 + x.squaredNorm()) * this->scale(y, mu);
     EXPECT_LT((r.dTau(x, r.dTauInverse(x, y)) - y).norm(), 1e-12 * scale);
     EXPECT_LT((r.dTauInverse(x, r.dTau(x, y)) - y).norm(), 1e-12 * scale);
     EXPECT_NEAR(G::pairing(r.dTauInverseDual(x, mu), y), G::pairing(mu, r.dTauInverse(x, y)),

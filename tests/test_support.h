@@ -2,28 +2,60 @@
 // the generic suites. Adding a group: one entry in kGroups-style lists below.
 #pragma once
 
+#include <ddb/core/group_traits.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/exponential.h>
 #include <ddb/groups/se3.h>
 #include <ddb/groups/so3.h>
+#include <ddb/groups/son.h>
+#include <ddb/groups/sun.h>
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <cctype>
 #include <numeric>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace ddb::test {
 
+/// A group under test: the group and, for matrix groups, the N its samples have
+/// (fixed-size groups: N = 0). The retraction R under test rides along.
+template <class G, int N = 0, template <class> class R = Cayley>
+struct GroupAt {
+  using Group = G;
+  using Retraction = R<G>;
+  static constexpr int kN = N;
+};
+
 // ---- Adding a group: include its header above and append it here. Both generic
 // suites (test_groups.cc: every group; test_retractions.cc: every group with the
-// Cayley and exponential retractions) are instantiated from this one list. ----
-template <class... Gs>
-struct GroupList {
-  using Groups = ::testing::Types<Gs...>;
-  using Retractions = ::testing::Types<Cayley<Gs>..., Exponential<Gs>...>;
+// Cayley and exponential retractions) are instantiated from these lists. Matrix
+// groups run at N = 2..6. ----
+template <template <class> class R>
+using GroupsWith = ::testing::Types<GroupAt<SO3, 0, R>, GroupAt<SE3, 0, R>, GroupAt<SON, 2, R>,
+                                    GroupAt<SON, 3, R>, GroupAt<SON, 4, R>, GroupAt<SON, 5, R>,
+                                    GroupAt<SON, 6, R>, GroupAt<SUN, 2, R>, GroupAt<SUN, 3, R>,
+                                    GroupAt<SUN, 4, R>, GroupAt<SUN, 5, R>, GroupAt<SUN, 6, R>>;
+struct AllGroups {
+  using Groups = GroupsWith<Cayley>;
+  template <template <class> class R>
+  using With = GroupsWith<R>;
 };
-using AllGroups = GroupList<SO3, SE3>;
+
+/// Readable typed-test names: "SO3-cay", "SUN4-cay", "SE3-exp".
+struct GroupNames {
+  template <class T>
+  static std::string GetName(int) {
+    std::string name = T::Group::kName;
+    name.erase(std::remove_if(name.begin(), name.end(), [](char c) { return !std::isalnum(c); }),
+               name.end());
+    if (T::kN > 0) name += std::to_string(T::kN);
+    return name + "-" + T::Retraction::kName;
+  }
+};
 
 /// Deterministic random vectors with entries in [-1, 1].
 class Sampler {
@@ -42,23 +74,98 @@ class Sampler {
   std::uniform_real_distribution<double> dist_{-1.0, 1.0};
 };
 
-/// Algebra elements of a given size: identity, near identity, random, and (for
-/// groups whose exp is periodic) near the cut locus |x| = π.
-template <class G>
-std::vector<typename G::template Algebra<double>> samplePoints(Sampler& s, bool near_pi) {
+/// Samples of a group under test (Sophus supplies samples per group the same way):
+/// algebra and dual elements, group elements, and the points where formulas are checked:
+/// identity, near identity, random, and near the cut locus of exp (spectral radius π).
+template <class TG>
+class Samples {
+ public:
+  using G = typename TG::Group;
   using A = typename G::template Algebra<double>;
-  std::vector<A> points{A::Zero()};
-  A tiny = s.vector<A>();
-  points.push_back(1e-8 * tiny / tiny.norm());
-  for (int i = 0; i < 4; ++i) points.push_back(s.vector<A>());
-  if (near_pi) {
-    A d = s.vector<A>();
-    points.push_back((M_PI - 1e-6) * d / d.norm());
-  }
-  return points;
-}
+  using D = typename G::template Dual<double>;
+  static constexpr bool kMatrix = isDynamicGroup<G>;
 
-/// Matrix-exponential relative tolerance scale: values are O(1) unless noted.
+  explicit Samples(Sampler& s) : s_(s) {}
+
+  /// Fixed-size: entries in [-1, 1]. Matrix groups: a random element of so(N) or su(N)
+  /// (skew part, trace removed) scaled to Frobenius norm 1.5, well inside exp's domain.
+  A algebra() {
+    if constexpr (kMatrix) {
+      return 1.5 * unitMatrix();
+    } else {
+      return s_.vector<A>();
+    }
+  }
+  D dual() {
+    if constexpr (kMatrix) {
+      return unitMatrix() * (1.0 + s_.uniform());
+    } else {
+      return s_.vector<D>();
+    }
+  }
+  auto element() { return G::exp(algebra()); }
+
+  std::vector<A> points(bool near_pi) {
+    std::vector<A> points{A(algebra() * 0.0)};
+    const A tiny = algebra();
+    points.push_back(1e-8 * tiny / tiny.norm());
+    for (int i = 0; i < 4; ++i) points.push_back(algebra());
+    if constexpr (kMatrix) {
+      // Per-group special case: a diagonal (maximal torus) element, repeated eigenvalues.
+      A diagonal = A::Zero(TG::kN, TG::kN);
+      for (int j = 0; j < TG::kN / 2; ++j) diagonal(2 * j, 2 * j + 1) = 0.7;
+      points.push_back(G::vee(A(diagonal - diagonal.adjoint())));
+    }
+    if (near_pi) {
+      // Fixed size: |x| = π − 1e-6; matrix groups: spectral radius π − 1e-6.
+      const A d = algebra();
+      const double radius = kMatrix ? spectralRadius(d) : d.norm();
+      points.push_back((M_PI - 1e-6) / radius * d);
+    }
+    return points;
+  }
+
+  /// The spectral radius of ad_x, where dexp⁻¹'s series has its poles at 2π: |ω| on
+  /// SO(3) and SE(3), the spread of the eigenvalues of −ix for matrix groups.
+  static double adRadius(const A& x) {
+    if constexpr (kMatrix) {
+      const auto spectrum = G::casimirs(x);
+      return spectrum.maxCoeff() - spectrum.minCoeff();
+    } else {
+      return x.template head<3>().norm();
+    }
+  }
+
+  /// Tolerance scale of an identity in the given data: 1 for the O(1) vectors of
+  /// fixed-size groups; the product of max(1, ‖·‖) for matrix groups, whose norms grow with N.
+  template <class... Xs>
+  static double scale(const Xs&... xs) {
+    if constexpr (kMatrix) {
+      return (1.0 * ... * std::max(1.0, xs.norm()));
+    } else {
+      return 1.0;
+    }
+  }
+
+ private:
+  A unitMatrix() {
+    A x(TG::kN, TG::kN);
+    for (Eigen::Index i = 0; i < x.size(); ++i) {
+      if constexpr (Eigen::NumTraits<typename A::Scalar>::IsComplex) {
+        x.data()[i] = typename A::Scalar(s_.uniform(), s_.uniform());
+      } else {
+        x.data()[i] = s_.uniform();
+      }
+    }
+    x = G::vee(x);
+    x.diagonal().array() -= x.trace() / double(TG::kN);
+    return x / x.norm();
+  }
+  static double spectralRadius(const A& x) { return G::casimirs(x).cwiseAbs().maxCoeff(); }
+  Sampler& s_;
+};
+
+/// Tolerance for identities on O(1) data; matrix groups scale it by Samples::scale.
 inline constexpr double kTight = 1e-13;
 
 }  // namespace ddb::test

@@ -18,6 +18,8 @@ class DissipationMetric {
   virtual ~DissipationMetric() = default;
   /// k♯(mu); linear in mu.
   virtual Algebra sharp(const Dual& mu) const = 0;
+  /// k♯(mu) into `out` (already of mu's size); override for large algebras.
+  virtual void sharpInto(const Dual& mu, Algebra& out) const { out = sharp(mu); }
 };
 
 /// k♯ = α · identity (coordinates of g* identified with those of g by the basis,
@@ -30,6 +32,7 @@ class ScaledIdentityMetric : public DissipationMetric<G> {
 
   explicit ScaledIdentityMetric(double alpha) : alpha_(requireFinite("alpha", alpha)) {}
   Algebra sharp(const Dual& mu) const override { return alpha_ * mu; }
+  void sharpInto(const Dual& mu, Algebra& out) const override { out = alpha_ * mu; }
   double alpha() const { return alpha_; }
 
  private:

@@ -64,13 +64,32 @@ inline std::string formatValue(double v) {
   return os.str();
 }
 
+/// Small vectors in full; a larger object (a 256×256 state) by its size and its
+/// largest-magnitude (or first non-finite) entry, never entry by entry.
 template <class Derived>
 std::string formatValue(const Eigen::DenseBase<Derived>& v) {
+  constexpr Eigen::Index kListed = 12;
   std::ostringstream os;
   os.precision(17);
-  os << "(";
-  for (Eigen::Index i = 0; i < v.size(); ++i) os << (i ? ", " : "") << v.derived().data()[i];
-  os << ")";
+  const auto* data = v.derived().data();
+  if (v.size() <= kListed) {
+    os << "(";
+    for (Eigen::Index i = 0; i < v.size(); ++i) os << (i ? ", " : "") << data[i];
+    os << ")";
+    return os.str();
+  }
+  Eigen::Index worst = 0;
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    using std::abs;
+    if (!std::isfinite(abs(data[i]))) {
+      worst = i;
+      break;
+    }
+    if (abs(data[i]) > abs(data[worst])) worst = i;
+  }
+  const Eigen::Index rows = v.rows() > 0 ? v.rows() : 1;
+  os << "a " << v.rows() << "x" << v.cols() << " object whose largest entry is [" << worst % rows
+     << ", " << worst / rows << "] = " << data[worst];
   return os.str();
 }
 

@@ -1,14 +1,17 @@
-// LieGroupBase: the abstract interface every group implements (CRTP, manif style).
+// LieGroupBase: the abstract interface every group implements (CRTP; the API is
+// Sophus-like static functions, the split into a required and a deduced part is manif's).
 //
-// A group `G : LieGroupBase<G>` provides, as scalar-generic static members:
-//   kDim, kNumCasimirs;  Algebra<T>, Dual<T>, Matrix<T> (group elements too), Casimirs<T>
+// Minimum API: a group `G : LieGroupBase<G>` provides, as scalar-generic static members
+// (checked one by one, with a message each, by core/group_traits.h):
+//   kDim, kNumCasimirs (Eigen::Dynamic for matrix groups whose N is chosen at run time)
+//   Algebra<T>, Dual<T>, Matrix<T> (group elements too), Casimirs<T>
 //   hat(x) -> Matrix     matrix representation of the algebra element x
 //   vee(X) -> Algebra    inverse of hat on the algebra
 //   dualHat(mu)          Riesz representer: <mu, x> = Re tr(dualHat(mu)^H hat(x))
 //   dualVee(Y)           the dual element y with <y, x> = Re tr(Y^H hat(x)) for all x
 //                        (for any matrix Y: the orthogonal projection is built in)
 //   exp(x), log(g), casimirs(mu)
-// Everything composed below is written once from those; a group may shadow any of
+// Deduced API: everything composed below is written once from those; a group may shadow any of
 // them with a closed form (SO3 does), and the generic test suite checks each
 // group's versions against the defining identities of docs/conventions.md §1:
 //   <ad*_x mu, y> = <mu, [x, y]>,  <Ad*_g mu, y> = <mu, Ad_g y>,  Ad*_{gh} = Ad*_h Ad*_g.
@@ -25,6 +28,8 @@
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <complex>
+#include <type_traits>
+#include <utility>
 
 namespace ddb {
 
@@ -32,10 +37,18 @@ template <class Derived>
 struct LieGroupBase {
   // Signatures are generic in the argument type (A: algebra, D: dual, M: matrix):
   // Derived is incomplete here, and T would not be deducible through its aliases.
+  /// The identity of a fixed-size group (matrix groups: identityLike(g)).
   template <class T>
   static auto identity() {
     using M = typename Derived::template Matrix<T>;
+    static_assert(M::RowsAtCompileTime != Eigen::Dynamic,
+                  "identity<T>() needs a fixed size: use identityLike(g) for matrix groups");
     return M(M::Identity());
+  }
+  /// The identity of the size of m (any group).
+  template <class M>
+  static M identityLike(const M& m) {
+    return M::Identity(m.rows(), m.cols());
   }
   template <class M>
   static M compose(const M& g, const M& h) {
@@ -46,10 +59,10 @@ struct LieGroupBase {
     return g.inverse();
   }
 
-  /// <mu, x> = Re tr(dualHat(mu)^H hat(x)).
+  /// <mu, x> = Re tr(dualHat(mu)^H hat(x)) = Re Σ conj(M_ij) X_ij: O(N²), no product.
   template <class D, class A>
   static auto pairing(const D& mu, const A& x) {
-    return std::real((Derived::dualHat(mu).adjoint() * Derived::hat(x)).trace());
+    return realPart(Derived::dualHat(mu).conjugate().cwiseProduct(Derived::hat(x)).sum());
   }
 
   /// [x, y] = XY - YX.
@@ -170,15 +183,11 @@ struct LieGroupBase {
   }
 
  protected:
-  template <class M>
-  static M identityLike(const M& m) {
-    return M::Identity(m.rows(), m.cols());
-  }
-
-  /// The group's matrix type for algebra type A, materialised from an expression.
+  /// The group's matrix type for algebra type A (the type hat returns, so that complex
+  /// matrix algebras keep their scalar), materialised from an expression.
   template <class A, class Expression>
   static auto matrix(const Expression& e) {
-    using M = typename Derived::template Matrix<typename A::Scalar>;
+    using M = std::decay_t<decltype(Derived::hat(std::declval<const A&>()))>;
     return M(e);
   }
 

@@ -6,6 +6,7 @@
 
 #include <ddb/core/dissipation_metric.h>
 #include <ddb/core/errors.h>
+#include <ddb/core/group_traits.h>
 #include <ddb/core/jet_lift.h>
 #include <ddb/core/lagrangian.h>
 
@@ -17,6 +18,8 @@ namespace ddb {
 
 template <class G>
 class LiePoissonSystem {
+  static_assert(sizeof(GroupTraits<G>) > 0, "checks G's minimum API (core/group_traits.h)");
+
  public:
   using Group = G;
   template <class T>

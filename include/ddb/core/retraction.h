@@ -13,10 +13,14 @@
 //   transport(a, b, mu) = Ad*_{τ(a)τ(b)} mu, the DDB update (paper, eq. (4.7)).
 #pragma once
 
+#include <ddb/core/group_traits.h>
+
 namespace ddb {
 
 template <class Derived, class G>
 class Retraction {
+  static_assert(sizeof(GroupTraits<G>) > 0, "checks G's minimum API (core/group_traits.h)");
+
  public:
   using Group = G;
 

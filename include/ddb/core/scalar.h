@@ -28,6 +28,16 @@ double scalarPart(const ceres::Jet<T, N>& x) {
   return scalarPart(x.a);
 }
 
+/// The real part of a real or complex scalar (std::real has no Jet overload).
+template <class T>
+T realPart(const T& x) {
+  return x;
+}
+template <class T>
+T realPart(const std::complex<T>& x) {
+  return x.real();
+}
+
 /// A constant of scalar type T (double or a possibly nested Jet). Nested Jets have
 /// no constructor from double, so constants in scalar-generic code are lifted with
 /// constant<T>(0.5) rather than T(0.5).

@@ -17,6 +17,14 @@ class SmoothFunction {
   virtual double value(const Domain& x) const = 0;
   virtual Codomain gradient(const Domain& x) const = 0;
   virtual Codomain hessianTimes(const Domain& x, const Domain& v) const = 0;
+
+  /// In-place forms for large (matrix) algebras, `out` already of x's size: the
+  /// matrix-free solvers call these so that no iteration allocates. The defaults
+  /// forward to the value-returning forms; a large system overrides them.
+  virtual void gradientInto(const Domain& x, Codomain& out) const { out = gradient(x); }
+  virtual void hessianTimesInto(const Domain& x, const Domain& v, Codomain& out) const {
+    out = hessianTimes(x, v);
+  }
 };
 
 }  // namespace ddb

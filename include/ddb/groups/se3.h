@@ -15,6 +15,7 @@
 namespace ddb {
 
 struct SE3 : LieGroupBase<SE3> {
+  static constexpr const char* kName = "SE3";
   static constexpr int kDim = 6;
   static constexpr int kNumCasimirs = 2;
 

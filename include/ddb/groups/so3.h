@@ -11,6 +11,7 @@
 namespace ddb {
 
 struct SO3 : LieGroupBase<SO3> {
+  static constexpr const char* kName = "SO3";
   static constexpr int kDim = 3;
   static constexpr int kNumCasimirs = 1;
 

@@ -3,14 +3,23 @@
 // step formula in the subclasses Ddb, SymmetricDdb and PaperSymmetricDdb).
 #pragma once
 
+#include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/integrators/legendre.h>
+#include <ddb/integrators/matrix_legendre.h>
 #include <ddb/integrators/one_step_method.h>
 
 #include <memory>
 #include <string>
+#include <type_traits>
 
 namespace ddb {
+
+/// The Legendre solver a retraction's group gets, chosen by its traits: TinySolver with
+/// Jet Jacobians for small fixed-size groups, matrix-free iterations for matrix groups.
+template <class R>
+using LegendreSolverFor = std::conditional_t<isDynamicGroup<typename R::Group>,
+                                             MatrixLegendreSolver<R>, DiscreteLegendreSolver<R>>;
 
 template <class R>
 class LegendreMethod : public OneStepMethod<typename R::Group> {
@@ -28,6 +37,8 @@ class LegendreMethod : public OneStepMethod<typename R::Group> {
   LegendreMethod& operator=(const LegendreMethod&) = delete;
 
   void reset() override { legendre_.reset(); }
+  /// The Legendre solver, for its statistics (iterations of the last solve).
+  const LegendreSolverFor<R>& legendreSolver() const { return legendre_; }
 
  protected:
   /// prefix + retraction name, with "-hamiltonian" for the Hamiltonian form.
@@ -38,7 +49,7 @@ class LegendreMethod : public OneStepMethod<typename R::Group> {
 
   std::shared_ptr<const LiePoissonSystem<G>> system_;
   R retraction_;
-  DiscreteLegendreSolver<R> legendre_;
+  LegendreSolverFor<R> legendre_;
 };
 
 }  // namespace ddb

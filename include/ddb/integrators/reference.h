@@ -4,6 +4,7 @@
 // of the paper's DOP853 with tight tolerances).
 #pragma once
 
+#include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/integrators/one_step_method.h>
 
@@ -13,17 +14,42 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 namespace ddb {
 
-/// The continuous vector field as an odeint system on std::array states.
+/// The continuous vector field as an odeint system on real coordinates: std::array for
+/// fixed-size groups, std::vector for matrix groups (the entries of the N×N matrix,
+/// real and imaginary parts interleaved for complex ones, as std::complex stores them).
+namespace detail {
+template <class G, bool kDynamic = isDynamicGroup<G>>
+struct OdeintState {
+  using type = std::array<double, G::kDim>;
+};
+template <class G>
+struct OdeintState<G, true> {
+  using type = std::vector<double>;
+};
+}  // namespace detail
+
 template <class G>
 struct OdeintSystem {
-  using State = std::array<double, G::kDim>;
   using Dual = typename G::template Dual<double>;
+  using Scalar = typename Dual::Scalar;
+  static constexpr int kReals = sizeof(Scalar) / sizeof(double);
+  using State = typename detail::OdeintState<G>::type;
   const LiePoissonSystem<G>& system;
+  Eigen::Index rows, cols;
+
+  static auto map(State& x, Eigen::Index rows, Eigen::Index cols) {
+    return Eigen::Map<Dual>(reinterpret_cast<Scalar*>(x.data()), rows, cols);
+  }
+  static auto map(const State& x, Eigen::Index rows, Eigen::Index cols) {
+    return Eigen::Map<const Dual>(reinterpret_cast<const Scalar*>(x.data()), rows, cols);
+  }
   void operator()(const State& x, State& dxdt, double) const {
-    Eigen::Map<Dual>(dxdt.data()) = system.vectorField(Dual(Eigen::Map<const Dual>(x.data())));
+    map(dxdt, rows, cols) = system.vectorField(Dual(map(x, rows, cols)));
   }
 };
 
@@ -49,9 +75,10 @@ class ReferenceSolver : public OneStepMethod<G> {
 
   Dual step(const Dual& mu, double t, double h) override {
     namespace odeint = boost::numeric::odeint;
-    const OdeintSystem<G> rhs{*system_};
+    const OdeintSystem<G> rhs{*system_, mu.rows(), mu.cols()};
     State x;
-    Eigen::Map<Dual>(x.data()) = mu;
+    if constexpr (isDynamicGroup<G>) x.resize(std::size_t(mu.size() * OdeintSystem<G>::kReals));
+    OdeintSystem<G>::map(x, mu.rows(), mu.cols()) = mu;
     const double end = t + h;
     double time = t;
     // First trial step: 1% of the time scale |μ|/|μ̇| (odeint's error estimate is NaN,
@@ -83,7 +110,7 @@ class ReferenceSolver : public OneStepMethod<G> {
       }
     }
     dt_ = dt;
-    return Eigen::Map<const Dual>(x.data());
+    return OdeintSystem<G>::map(static_cast<const State&>(x), mu.rows(), mu.cols());
   }
 
  private:

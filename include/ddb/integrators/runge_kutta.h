@@ -32,7 +32,7 @@ class ExplicitRungeKutta : public OneStepMethod<G> {
 
   Dual step(const Dual& mu, double, double h) override {
     std::array<Dual, S> k;
-    Dual sum = Dual::Zero();
+    Dual sum = Dual::Zero(mu.rows(), mu.cols());
     for (int i = 0; i < S; ++i) {
       Dual stage = mu;
       for (int j = 0; j < i; ++j) {

@@ -1,0 +1,222 @@
+// SkewHermitianGroup: the closed forms shared by SO(N) (real skew-symmetric algebra)
+// and SU(N) (complex skew-Hermitian algebra), N chosen at run time
+// (docs/conventions.md §1, "Matrix algebras"):
+//   ξ, μ are N×N matrices, hat = dualHat = identity, pairing <μ, ξ> = Re tr(μᴴ ξ),
+//   ad*_ξ μ = [μ, ξ],  Ad*_g μ = g⁻¹ μ g = gᴴ μ g,  (dcay⁻¹_x)* μ = (I + x/2) μ (I − x/2).
+// Every formula is O(N³) at most and no operator on the N²-dimensional algebra is formed.
+//
+// vee and dualVee are the orthogonal projection onto skew-Hermitian matrices, u(N) (for
+// real matrices: so(N)). They do not remove the trace: the Cayley map sends su(N) into
+// U(N), not SU(N), and its tangent maps and the DDB Legendre unknown p live in u(N)
+// (docs/conventions.md §2, "Zeitlin's fluid"); projecting them would change the scheme.
+#pragma once
+
+#include <ddb/core/errors.h>
+#include <ddb/core/lie_group.h>
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <string>
+
+namespace ddb {
+
+template <class Derived, template <class> class ScalarOf>
+struct SkewHermitianGroup : LieGroupBase<Derived> {
+  static constexpr int kDim = Eigen::Dynamic;
+  static constexpr int kNumCasimirs = Eigen::Dynamic;
+
+  template <class T>
+  using Matrix = Eigen::Matrix<ScalarOf<T>, Eigen::Dynamic, Eigen::Dynamic>;
+  template <class T>
+  using Algebra = Matrix<T>;
+  template <class T>
+  using Dual = Matrix<T>;
+  /// The spectrum of μ: the eigenvalues of the Hermitian matrix −iμ, ascending.
+  template <class T>
+  using Casimirs = Eigen::Matrix<T, Eigen::Dynamic, 1>;
+
+  // ---- Minimum API ----
+  template <class X>
+  static X hat(const X& x) {
+    return x;
+  }
+  template <class X>
+  static X dualHat(const X& mu) {
+    return mu;
+  }
+  /// The skew-Hermitian part (X − Xᴴ)/2: the orthogonal projection onto u(N) (so(N)).
+  template <class X>
+  static X vee(const X& m) {
+    return X((m - m.adjoint()) * typename X::Scalar(0.5));
+  }
+  template <class X>
+  static X dualVee(const X& m) {
+    return vee(m);
+  }
+
+  /// exp(x) = V diag(e^{iλ}) Vᴴ from the eigenpairs of the Hermitian −ix: unitary
+  /// (orthogonal) to round-off, unlike a Padé approximant.
+  template <class X>
+  static X exp(const X& x) {
+    const Eigen::SelfAdjointEigenSolver<Complex> eigen(toComplex(x) * std::complex<double>(0, -1));
+    const Eigen::VectorXcd phases =
+        eigen.eigenvalues().unaryExpr([](double l) { return std::polar(1.0, l); });
+    return fromComplex<X>(eigen.eigenvectors() * phases.asDiagonal() *
+                          eigen.eigenvectors().adjoint());
+  }
+
+  /// log(g) = V diag(i arg λ) Vᴴ for unitary g (a normal matrix: its complex Schur form
+  /// is diagonal), the branch with eigenvalues of −i log g in (−π, π].
+  template <class X>
+  static X log(const X& g) {
+    const Eigen::ComplexSchur<Complex> schur(toComplex(g));
+    const Complex& U = schur.matrixU();
+    const Eigen::VectorXcd logs = schur.matrixT().diagonal().unaryExpr(
+        [](const std::complex<double>& l) { return std::complex<double>(0, std::arg(l)); });
+    return vee(fromComplex<X>(U * logs.asDiagonal() * U.adjoint()));
+  }
+
+  template <class X>
+  static Casimirs<double> casimirs(const X& mu) {
+    Eigen::SelfAdjointEigenSolver<Complex> eigen(toComplex(mu) * std::complex<double>(0, -1),
+                                                 Eigen::EigenvaluesOnly);
+    return eigen.eigenvalues();  // ascending
+  }
+
+  // ---- Closed forms shadowing the deduced API ----
+  template <class X>
+  static X inverse(const X& g) {
+    return g.adjoint();  // unitary / orthogonal
+  }
+  template <class X>
+  static X bracket(const X& x, const X& y) {
+    return x * y - y * x;
+  }
+  /// ad*_ξ μ = [μ, ξ].
+  template <class X>
+  static X adDual(const X& xi, const X& mu) {
+    return mu * xi - xi * mu;
+  }
+  template <class X>
+  static X Ad(const X& g, const X& x) {
+    return g * x * g.adjoint();
+  }
+  /// Ad*_g μ = gᴴ μ g.
+  template <class X>
+  static X AdDual(const X& g, const X& mu) {
+    return g.adjoint() * mu * g;
+  }
+  /// dcay⁻¹_x y = (I − x/2) y (I + x/2), in u(N).
+  template <class X>
+  static X dcayInv(const X& x, const X& y) {
+    const X half = x * typename X::Scalar(0.5);
+    const X I = X::Identity(x.rows(), x.cols());
+    return (I - half) * y * (I + half);
+  }
+  /// (dcay⁻¹_x)* μ = (I + x/2) μ (I − x/2), in u(N) (not projected).
+  template <class X>
+  static X dcayInvDual(const X& x, const X& mu) {
+    const X half = x * typename X::Scalar(0.5);
+    const X I = X::Identity(x.rows(), x.cols());
+    return (I + half) * mu * (I - half);
+  }
+  /// dcay_x y = (I − x/2)⁻¹ y (I + x/2)⁻¹, in u(N).
+  template <class X>
+  static X dcay(const X& x, const X& y) {
+    const X half = x * typename X::Scalar(0.5);
+    const X I = X::Identity(x.rows(), x.cols());
+    const X left = (I - half).partialPivLu().solve(y);
+    // left (I + x/2)⁻¹ = ((I + x/2)⁻ᴴ leftᴴ)ᴴ, and (I + x/2)ᴴ = I − x/2.
+    return X((I - half).partialPivLu().solve(left.adjoint()).adjoint());
+  }
+  /// cay⁻¹(g) = 2 (g − I)(g + I)⁻¹.
+  template <class X>
+  static X cayInverse(const X& g) {
+    const X I = X::Identity(g.rows(), g.cols());
+    const X right = (g + I).adjoint().partialPivLu().solve((g - I).adjoint()).adjoint();
+    return vee(X(right * typename X::Scalar(2)));
+  }
+
+  // ---- In-place kernels of the matrix-free DDB Cayley step (no allocation) ----
+  // They use skew-Hermitian structure: for skew-Hermitian a and p, pa = (ap)ᴴ, so
+  // [a, p] = ap − (ap)ᴴ costs one product (docs/conventions.md §4).
+
+  /// out = W − [a, p] + a p a, the fixed-point map of W = (I + a) p (I − a)
+  /// (docs/conventions.md §2); ap, apa are workspaces. Two products.
+  template <class X>
+  static void cayleyFixedPoint(const X& W, const X& a, const X& p, X& ap, X& apa, X& out) {
+    ap.noalias() = a * p;
+    apa.noalias() = ap * a;
+    out = W - ap + ap.adjoint() + apa;
+  }
+
+  /// out = (I − a) p (I + a) = p − [a, p] − a p a; ap, apa workspaces. Two products.
+  template <class X>
+  static void cayleyReadOut(const X& a, const X& p, X& ap, X& apa, X& out) {
+    ap.noalias() = a * p;
+    apa.noalias() = ap * a;
+    out = p - ap + ap.adjoint() - apa;
+  }
+
+  /// out = D_p[(I + a) p (I − a)][δ] with a = a(p) and δa = Da[δ] given:
+  ///   δ + [a, δ] − a δ a + [δa, p] − (δa p a + a p δa),
+  /// where a p δa = −(δa p a)ᴴ. Four products; t1, t2 workspaces.
+  template <class X>
+  static void cayleyLinearised(const X& a, const X& p, const X& delta, const X& delta_a, X& t1,
+                               X& t2, X& out) {
+    t1.noalias() = a * delta;
+    t2.noalias() = t1 * a;
+    out = delta + t1 - t1.adjoint() - t2;
+    t1.noalias() = delta_a * p;
+    t2.noalias() = t1 * a;
+    out += t1 - t1.adjoint() - t2 + t2.adjoint();
+  }
+
+  /// Checks that mu is a valid state: square, N >= 2, N <= kMaxN, finite, skew-Hermitian
+  /// (skew-symmetric) to 1e-12 relative, and traceless to 1e-12 relative. The message
+  /// names the parameter, its size and the largest offending entry.
+  template <class X>
+  static void requireState(const std::string& name, const X& mu) {
+    if (mu.rows() != mu.cols() || mu.rows() < 2 || mu.rows() > kMaxN) {
+      throwInvalid(name, std::to_string(mu.rows()) + "x" + std::to_string(mu.cols()) + " matrix",
+                   "must be square N x N with 2 <= N <= " + std::to_string(kMaxN));
+    }
+    requireFinite(name, mu);
+    const double scale = mu.norm();
+    const X sym = mu + mu.adjoint();
+    if (sym.norm() > 1e-12 * scale) {
+      throwInvalid(name, formatValue(sym),
+                   std::string("must be ") + Derived::kAlgebraName +
+                       ": mu + mu^H must vanish to 1e-12 relative");
+    }
+    const double trace = std::abs(mu.trace());
+    if (trace > 1e-12 * scale) {
+      throwInvalid(name + " trace", formatValue(trace), "must be 0 to 1e-12 relative");
+    }
+  }
+
+  /// The largest N accepted for a state: one 4096×4096 complex matrix is 256 MiB and a
+  /// DDB step keeps about ten of them.
+  static constexpr Eigen::Index kMaxN = 4096;
+
+ private:
+  using Complex = Eigen::MatrixXcd;
+  template <class X>
+  static Complex toComplex(const X& x) {
+    return x.template cast<std::complex<double>>();
+  }
+  template <class X, class E>
+  static X fromComplex(const E& e) {
+    if constexpr (Eigen::NumTraits<typename X::Scalar>::IsComplex) {
+      return X(e);
+    } else {
+      return X(Complex(e).real());
+    }
+  }
+};
+
+}  // namespace ddb
