@@ -1,8 +1,33 @@
 #!/usr/bin/env bash
-# Sets everything up, builds in Release and runs the whole test suite through ctest.
+# Sets everything up, builds in Release and runs the whole test suite through ctest;
+# then uses the library the two ways others do: installed into a temporary prefix
+# (both examples/ configured with find_package, built and run; each exits non-zero
+# if its check fails) and added with add_subdirectory by tests/subproject_consumer.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j2
 ctest --test-dir build --output-on-failure -j2
+
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+cmake --install build --prefix "$scratch/prefix"
+for example in custom_system hamiltonian_observer; do
+  echo "== examples/$example against the installed package"
+  cmake -S "examples/$example" -B "$scratch/$example" -DCMAKE_BUILD_TYPE=Release \
+        -DCMAKE_PREFIX_PATH="$scratch/prefix"
+  cmake --build "$scratch/$example" -j2
+  "$scratch/$example/app"
+done
+
+# Debug catches a build type overwritten unconditionally, the empty one a default
+# imposed on the parent; the disabled packages make any REQUIRED lookup of them fail.
+for build_type in Debug ""; do
+  echo "== ddb as a subproject, parent build type '$build_type'"
+  cmake --no-warn-unused-cli -S tests/subproject_consumer -B "$scratch/subproject-$build_type" \
+        -DDDB_SOURCE_DIR="$PWD" -DCMAKE_BUILD_TYPE="$build_type" \
+        -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON -DCMAKE_DISABLE_FIND_PACKAGE_benchmark=ON \
+        -DCMAKE_DISABLE_FIND_PACKAGE_spdlog=ON -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON
+done
+echo "== all checks passed"
