@@ -180,14 +180,15 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
   /// (skew-symmetric) to 1e-12 relative, and traceless to 1e-12 relative. The message
   /// names the parameter, its size and the largest offending entry.
   template <class X>
-  static void requireState(const std::string& name, const X& mu) {
+  static void requireState(const std::string& name, const Eigen::MatrixBase<X>& state) {
+    const typename X::PlainObject mu = state;
     if (mu.rows() != mu.cols() || mu.rows() < 2 || mu.rows() > kMaxN) {
       throwInvalid(name, std::to_string(mu.rows()) + "x" + std::to_string(mu.cols()) + " matrix",
                    "must be square N x N with 2 <= N <= " + std::to_string(kMaxN));
     }
     requireFinite(name, mu);
     const double scale = mu.norm();
-    const X sym = mu + mu.adjoint();
+    const typename X::PlainObject sym = mu + mu.adjoint();
     if (sym.norm() > 1e-12 * scale) {
       throwInvalid(name, formatValue(sym),
                    std::string("must be ") + Derived::kAlgebraName +

@@ -39,6 +39,7 @@ class LegendreMethod : public OneStepMethod<typename R::Group> {
   void reset() override { legendre_.reset(); }
   /// The Legendre solver, for its statistics (iterations of the last solve).
   const LegendreSolverFor<R>& legendreSolver() const { return legendre_; }
+  LegendreSolverFor<R>& legendreSolver() { return legendre_; }
 
  protected:
   /// prefix + retraction name, with "-hamiltonian" for the Hamiltonian form.

@@ -7,11 +7,17 @@
 // on the exact Jacobian–vector products (four products each). Workspaces are allocated
 // on the first solve of a size and reused: no iteration allocates.
 //
+// Ceres (ceres::Problem, dense QR, the Jacobian assembled from the same exact
+// Jacobian–vector products, one per coordinate) solves the same equation in real
+// coordinates of u(N) when asked, for small N only (at most kMaxCeresDimension unknowns):
+// an independent check of the matrix-free iterations.
+//
 // Convergence: the fixed-point update (equal to the residual r(p)) or the Newton
 // residual below relative_tolerance·‖target‖; otherwise a SolveFailure with the last
 // residual, and the caller keeps every state before it.
 #pragma once
 
+#include <ceres/ceres.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
@@ -22,9 +28,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <type_traits>
+#include <vector>
 
 namespace ddb {
+
+/// How the matrix-free solver proceeds: kAuto is the fixed point with Newton–Krylov as
+/// the fallback; the others force one path (for tests and comparisons).
+enum class MatrixLegendreStrategy { kAuto, kFixedPoint, kNewtonKrylov, kCeres };
 
 /// Iteration counts of the last solve.
 struct MatrixLegendreStats {
@@ -47,6 +59,8 @@ class MatrixLegendreSolver {
   static constexpr int kMaxFixedPoint = 60;
   static constexpr int kMaxNewton = 12;
   static constexpr int kMaxKrylov = 200;
+  static constexpr int kMaxForcedFixedPoint = 2000;
+  static constexpr Eigen::Index kMaxCeresDimension = 64;
 
   MatrixLegendreSolver(const LiePoissonSystem<G>& system, const R&, LegendreForm form,
                        SolverOptions options)
@@ -62,6 +76,7 @@ class MatrixLegendreSolver {
   void reset() { has_guess_ = false; }
   LegendreForm form() const { return form_; }
   const MatrixLegendreStats& stats() const { return stats_; }
+  void setStrategy(MatrixLegendreStrategy strategy) { strategy_ = strategy; }
 
   /// Solves (I + hξ(p)/2) p (I − hξ(p)/2) = target(ξ, p); returns ξ and sets p.
   template <class Target>
@@ -87,8 +102,11 @@ class MatrixLegendreSolver {
     const double scale = near.norm();
     const double tolerance = options_.relative_tolerance * scale;
     double previous = INFINITY;
-    bool converged = false, slow = false;
-    for (int k = 0; k < kMaxFixedPoint; ++k) {
+    bool converged = false;
+    const bool forced = strategy_ == MatrixLegendreStrategy::kFixedPoint;
+    const bool fixed_point = strategy_ == MatrixLegendreStrategy::kAuto || forced;
+    const int budget = forced ? kMaxForcedFixedPoint : kMaxFixedPoint;
+    for (int k = 0; fixed_point && k < budget; ++k) {
       updateVelocity(h);
       const Dual& W = targetValue();
       G::cayleyFixedPoint(W, a_, p_, ap_, apa_, next_);
@@ -101,16 +119,26 @@ class MatrixLegendreSolver {
         converged = true;
         break;
       }
-      if (k >= 2 && update > kSlowContraction * previous) {
-        slow = true;
-        break;
+      if (!forced && k >= 2 && update > kSlowContraction * previous) {
+        break;  // contracting too slowly: Newton–Krylov takes over
       }
       previous = update;
     }
-    if (!converged && slow && kFixed) converged = newtonKrylov(targetValue(), h, tolerance);
+    if constexpr (kFixed) {
+      if (strategy_ == MatrixLegendreStrategy::kNewtonKrylov ||
+          (strategy_ == MatrixLegendreStrategy::kAuto && !converged)) {
+        converged = newtonKrylov(target.momentum, h, tolerance);
+      }
+      if (strategy_ == MatrixLegendreStrategy::kCeres) {
+        converged = ceresSolve(target.momentum, h, tolerance);
+      }
+    } else if (strategy_ != MatrixLegendreStrategy::kAuto && !forced) {
+      throw InvalidArgument(
+          "strategy is invalid: only the fixed point solves a target that depends on p");
+    }
     if (!converged) {
       throw SolveFailure(std::string("discrete Legendre equation (matrix-free, ") +
-                             (stats_.newton > 0 ? "Newton-Krylov" : "fixed point") + ")",
+                             (stats_.newton > 0 ? "Newton" : "fixed point") + ")",
                          -1, t, h, stats_.residual, tolerance);
     }
     updateVelocity(h);
@@ -172,10 +200,121 @@ class MatrixLegendreSolver {
     return stats_.residual <= tolerance;
   }
 
+  // Real coordinates of u(N) (so(N)): the imaginary diagonal and the upper triangle.
+  static constexpr bool kComplex = Eigen::NumTraits<typename Dual::Scalar>::IsComplex;
+  static Eigen::Index coordinateCount(Eigen::Index n) { return kComplex ? n * n : n * (n - 1) / 2; }
+  static void toCoordinates(const Dual& x, double* v) {
+    for (Eigen::Index j = 0; j < x.cols(); ++j) {
+      for (Eigen::Index i = 0; i <= j; ++i) {
+        if constexpr (kComplex) {
+          if (i == j) {
+            *v++ = x(i, i).imag();
+          } else {
+            *v++ = x(i, j).real();
+            *v++ = x(i, j).imag();
+          }
+        } else if (i < j) {
+          *v++ = x(i, j);
+        }
+      }
+    }
+  }
+  static void fromCoordinates(const double* v, Dual& x) {
+    for (Eigen::Index j = 0; j < x.cols(); ++j) {
+      for (Eigen::Index i = 0; i <= j; ++i) {
+        if constexpr (kComplex) {
+          if (i == j) {
+            x(i, i) = typename Dual::Scalar(0.0, *v++);
+          } else {
+            const double re = *v++;
+            x(i, j) = typename Dual::Scalar(re, *v++);
+            x(j, i) = -std::conj(x(i, j));
+          }
+        } else if (i < j) {
+          x(i, j) = *v++;
+          x(j, i) = -x(i, j);
+        } else {
+          x(i, i) = 0.0;
+        }
+      }
+    }
+  }
+
+  // r(p) = (I + a)p(I − a) − W in coordinates, with the Jacobian column by column.
+  class CeresResidual : public ceres::CostFunction {
+   public:
+    CeresResidual(MatrixLegendreSolver& solver, const Dual& W, double h, int n)
+        : solver_(solver), W_(W), h_(h) {
+      set_num_residuals(n);
+      mutable_parameter_block_sizes()->push_back(n);
+    }
+    bool Evaluate(double const* const* parameters, double* residuals,
+                  double** jacobians) const override {
+      MatrixLegendreSolver& s = solver_;
+      const int n = num_residuals();
+      fromCoordinates(parameters[0], s.p_);
+      s.updateVelocity(h_);
+      G::cayleyFixedPoint(W_, s.a_, s.p_, s.ap_, s.apa_, s.next_);
+      s.residual_ = s.p_ - s.next_;
+      toCoordinates(s.residual_, residuals);
+      if (jacobians != nullptr && jacobians[0] != nullptr) {
+        std::vector<double> unit(static_cast<std::size_t>(n), 0.0), column(unit);
+        for (int k = 0; k < n; ++k) {
+          unit[static_cast<std::size_t>(k)] = 1.0;
+          fromCoordinates(unit.data(), s.delta_);
+          unit[static_cast<std::size_t>(k)] = 0.0;
+          s.system_.hamiltonian().hessianTimesInto(s.p_, s.delta_, s.delta_a_);
+          s.delta_a_ *= 0.5 * h_;
+          G::cayleyLinearised(s.a_, s.p_, s.delta_, s.delta_a_, s.t1_, s.t2_, s.next_);
+          toCoordinates(s.next_, column.data());
+          for (int i = 0; i < n; ++i) jacobians[0][i * n + k] = column[static_cast<std::size_t>(i)];
+        }
+      }
+      return true;
+    }
+
+   private:
+    MatrixLegendreSolver& solver_;
+    const Dual& W_;
+    double h_;
+  };
+
+  bool ceresSolve(const Dual& W, double h, double tolerance) {
+    const Eigen::Index n = coordinateCount(W.rows());
+    if (n > kMaxCeresDimension) {
+      throwInvalid("strategy", "ceres",
+                   "solves at most " + std::to_string(kMaxCeresDimension) + " unknowns, not " +
+                       std::to_string(n));
+    }
+    std::vector<double> x(static_cast<std::size_t>(n));
+    toCoordinates(p_, x.data());
+    ceres::Problem::Options problem_options;
+    problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+    ceres::Problem problem(problem_options);
+    CeresResidual residual(*this, W, h, static_cast<int>(n));
+    problem.AddResidualBlock(&residual, nullptr, x.data());
+    ceres::Solver::Options options;
+    options.linear_solver_type = ceres::DENSE_QR;
+    options.max_num_iterations = 50;
+    options.function_tolerance = 0.0;
+    options.gradient_tolerance = 0.0;
+    options.parameter_tolerance = 1e-16;
+    options.logging_type = ceres::SILENT;
+    ceres::Solver::Summary summary;
+    ceres::Solve(options, &problem, &summary);
+    stats_.newton += static_cast<int>(summary.iterations.size());
+    fromCoordinates(x.data(), p_);
+    updateVelocity(h);
+    G::cayleyFixedPoint(W, a_, p_, ap_, apa_, next_);
+    stats_.residual = (p_ - next_).norm();
+    return stats_.residual <= tolerance;
+  }
+
   const LiePoissonSystem<G>& system_;
   LegendreForm form_;
   SolverOptions options_;
   bool has_guess_ = false;
+  MatrixLegendreStrategy strategy_ = MatrixLegendreStrategy::kAuto;
   MatrixLegendreStats stats_;
   Dual p_, next_, xi_, a_, ap_, apa_, residual_, delta_, delta_a_, t1_, t2_, correction_, target_;
   MatrixFreeGmres<Dual> gmres_;

@@ -1,0 +1,113 @@
+// Seeded, reproducible initial vorticities for Zeitlin's fluid (docs/file-formats.md,
+// fluid-relax --init): every one is in su(N) and scaled to ‖W‖_F = √N, i.e. enstrophy ½.
+//   random: i.i.d. standard normal real and imaginary parts, projected to su(N);
+//   l1:     W = U X₃ Uᴴ, X₃ = ħ i diag(j − (N−1)/2), U a random unitary (QR of a normal
+//           matrix with the phases of R's diagonal removed: Haar-distributed) — a point of
+//           the isospectral orbit of the l = 1 element X₃; its energy maximum E/Z = ½ is
+//           reached at the pure l = 1 states of that orbit (X₃'s rotations);
+//   zonal:  i diag(d), d normal with its mean removed: a steady state ([P, W] = 0).
+// std::mt19937_64 and a Box–Muller normal written here, so that the numbers do not depend
+// on the standard library's distribution implementation.
+#pragma once
+
+#include <ddb/core/errors.h>
+#include <ddb/groups/sun.h>
+#include <ddb/systems/zeitlin_fluid.h>
+
+#include <Eigen/Core>
+#include <Eigen/QR>
+#include <cmath>
+#include <complex>
+#include <cstdint>
+#include <random>
+#include <string>
+
+namespace ddb {
+
+namespace detail {
+class NormalSource {
+ public:
+  explicit NormalSource(std::uint64_t seed) : rng_(seed) {}
+  double next() {
+    if (has_spare_) {
+      has_spare_ = false;
+      return spare_;
+    }
+    // Box–Muller on (0, 1] uniforms built from 53 random bits.
+    const double u1 = (double(rng_() >> 11) + 1.0) * 0x1.0p-53;
+    const double u2 = double(rng_() >> 11) * 0x1.0p-53;
+    const double r = std::sqrt(-2.0 * std::log(u1));
+    spare_ = r * std::sin(2.0 * M_PI * u2);
+    has_spare_ = true;
+    return r * std::cos(2.0 * M_PI * u2);
+  }
+  Eigen::MatrixXcd complexMatrix(Eigen::Index n) {
+    Eigen::MatrixXcd m(n, n);
+    for (Eigen::Index j = 0; j < n; ++j) {
+      for (Eigen::Index i = 0; i < n; ++i) {
+        const double re = next();
+        m(i, j) = std::complex<double>(re, next());
+      }
+    }
+    return m;
+  }
+
+ private:
+  std::mt19937_64 rng_;
+  bool has_spare_ = false;
+  double spare_ = 0.0;
+};
+
+inline Eigen::MatrixXcd normalised(Eigen::MatrixXcd W) {
+  W = SUN::vee(W);
+  W.diagonal().array() -= W.trace() / double(W.rows());
+  return W * (std::sqrt(double(W.rows())) / W.norm());
+}
+
+inline void requireResolution(Eigen::Index n) {
+  if (n < 2 || n > SUN::kMaxN) {
+    throwInvalid("N", std::to_string(n), "must be in [2, " + std::to_string(SUN::kMaxN) + "]");
+  }
+}
+}  // namespace detail
+
+/// X₃ = ħ i diag(j − (N−1)/2): the l = 1, m = 0 element (T_10 = √3 X₃).
+inline Eigen::MatrixXcd zeitlinX3(Eigen::Index n) {
+  Eigen::VectorXcd d(n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    d(j) = std::complex<double>(0.0, zeitlinHbar(n) * (double(j) - 0.5 * double(n - 1)));
+  }
+  return d.asDiagonal();
+}
+
+inline Eigen::MatrixXcd randomVorticity(Eigen::Index n, std::uint64_t seed) {
+  detail::requireResolution(n);
+  detail::NormalSource source(seed);
+  return detail::normalised(source.complexMatrix(n));
+}
+
+/// A Haar-random unitary: Q of the QR of a normal matrix times the phases of R's diagonal.
+inline Eigen::MatrixXcd randomUnitary(Eigen::Index n, std::uint64_t seed) {
+  detail::NormalSource source(seed);
+  const Eigen::HouseholderQR<Eigen::MatrixXcd> qr(source.complexMatrix(n));
+  const Eigen::MatrixXcd Q = qr.householderQ();
+  const Eigen::VectorXcd phases = qr.matrixQR().diagonal().unaryExpr(
+      [](const std::complex<double>& r) { return r == 0.0 ? 1.0 : r / std::abs(r); });
+  return Q * phases.asDiagonal();
+}
+
+inline Eigen::MatrixXcd l1Vorticity(Eigen::Index n, std::uint64_t seed) {
+  detail::requireResolution(n);
+  const Eigen::MatrixXcd U = randomUnitary(n, seed);
+  return detail::normalised(U * zeitlinX3(n) * U.adjoint());
+}
+
+inline Eigen::MatrixXcd zonalVorticity(Eigen::Index n, std::uint64_t seed) {
+  detail::requireResolution(n);
+  detail::NormalSource source(seed);
+  Eigen::VectorXcd d(n);
+  for (Eigen::Index j = 0; j < n; ++j) d(j) = std::complex<double>(0.0, source.next());
+  return detail::normalised(d.asDiagonal());
+}
+
+}  // namespace ddb

@@ -1,0 +1,354 @@
+// Zeitlin's SU(N) fluid (docs/conventions.md §2), each property against something the
+// library did not use to compute it: Eigen's eigensolver on the dense Laplacian, the
+// defining orthonormality of T_lm, central differences along the flow, the isospectral
+// midpoint rule written here from its own formula, the adaptive reference solver.
+#include <ddb/integrators/method_registry.h>
+#include <ddb/systems/spherical_harmonic_basis.h>
+#include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_initial_conditions.h>
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <vector>
+
+#include "order_fit.h"
+
+namespace ddb::test {
+namespace {
+
+using Matrix = Eigen::MatrixXcd;
+
+// The dense real N²×N² matrix of Δ_N acting on gl(N) (real matrices: the coefficients
+// are real, so this is the operator's matrix in the basis E_ij).
+Eigen::MatrixXd denseLaplacian(const HoppeYauLaplacian& laplacian) {
+  const Eigen::Index n = laplacian.size();
+  Eigen::MatrixXd dense(n * n, n * n);
+  Matrix unit = Matrix::Zero(n, n), image(n, n);
+  for (Eigen::Index k = 0; k < n * n; ++k) {
+    unit.data()[k] = 1.0;
+    laplacian.apply(unit, image);
+    unit.data()[k] = 0.0;
+    dense.col(k) = image.real().reshaped();
+  }
+  return dense;
+}
+
+class LaplacianSpectrum : public ::testing::TestWithParam<int> {};
+
+TEST_P(LaplacianSpectrum, EigenvaluesAreMinusLLPlusOneWithMultiplicity2LPlus1) {
+  const int n = GetParam();
+  const Eigen::MatrixXd dense = denseLaplacian(HoppeYauLaplacian(n));
+  EXPECT_LT((dense - dense.transpose()).norm(), 1e-12 * dense.norm());
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(dense, Eigen::EigenvaluesOnly);
+  std::vector<double> expected;  // on gl(N): l = 0 (the identity) once, then 2l + 1 each
+  for (int l = 0; l < n; ++l) {
+    for (int k = 0; k < 2 * l + 1; ++k) expected.push_back(-double(l) * (l + 1));
+  }
+  std::sort(expected.begin(), expected.end());
+  ASSERT_EQ(eigen.eigenvalues().size(), Eigen::Index(expected.size()));
+  for (size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_NEAR(eigen.eigenvalues()(Eigen::Index(i)), expected[i], 1e-12 * n * n) << i;
+  }
+}
+INSTANTIATE_TEST_SUITE_P(N, LaplacianSpectrum, ::testing::Values(5, 16),
+                         [](const auto& info) { return "N" + std::to_string(info.param); });
+
+TEST(HoppeYauLaplacian, PoissonSolveInvertsTheLaplacianOnSuN) {
+  for (int n : {2, 3, 8, 33}) {
+    const HoppeYauLaplacian laplacian(n);
+    const Matrix W = randomVorticity(n, 7);
+    Matrix P(n, n), back(n, n);
+    laplacian.solve(W, P);
+    laplacian.apply(P, back);
+    EXPECT_LT((back - W).norm(), 1e-12 * W.norm()) << "N = " << n;
+    EXPECT_LT(std::abs(P.trace()), 1e-14 * P.norm()) << "N = " << n;
+    // On u(N) the solve uses the traceless part: adding i·I changes nothing.
+    Matrix shifted = W;
+    shifted.diagonal().array() += std::complex<double>(0, 0.3);
+    Matrix Q(n, n);
+    laplacian.solve(shifted, Q);
+    EXPECT_LT((Q - P).norm(), 1e-13 * P.norm()) << "N = " << n;
+  }
+}
+
+TEST(SphericalHarmonicBasis, OrthonormalEigenmatricesWithT10EqualRoot3X3) {
+  for (int n : {2, 5, 9}) {
+    const HoppeYauLaplacian laplacian(n);
+    const SphericalHarmonicBasis basis(laplacian);
+    std::vector<Matrix> T;
+    std::vector<int> ls;
+    for (int l = 0; l < n; ++l) {
+      for (int m = -l; m <= l; ++m) {
+        T.push_back(basis.element(l, m));
+        ls.push_back(l);
+      }
+    }
+    for (size_t a = 0; a < T.size(); ++a) {
+      EXPECT_LT((T[a] + T[a].adjoint()).norm(), 1e-13) << "skew-Hermitian";
+      Matrix image(n, n);
+      laplacian.apply(T[a], image);
+      EXPECT_LT((image + double(ls[a] * (ls[a] + 1)) * T[a]).norm(), 1e-11 * (1 + ls[a] * ls[a]));
+      for (size_t b = 0; b < T.size(); ++b) {
+        const double inner = (T[a].adjoint() * T[b]).trace().real() / n;
+        EXPECT_NEAR(inner, a == b ? 1.0 : 0.0, 1e-12) << a << ", " << b;
+      }
+    }
+    EXPECT_LT((basis.element(1, 0) - std::sqrt(3.0) * zeitlinX3(n)).norm(), 1e-13) << n;
+    const Matrix W = randomVorticity(n, 3);
+    EXPECT_LT((basis.matrix(basis.coefficients(W)) - W).norm(), 1e-13 * W.norm());
+  }
+}
+
+// dE/dt = −α‖[P, W]‖²/(ħN) against the central difference of E along the vector field;
+// Z constant along it.
+TEST(ZeitlinFluid, EnergyRateMatchesCentralDifferencesAndEnstrophyIsConstant) {
+  const int n = 12;
+  for (double alpha : {0.0, 0.5, -0.5}) {
+    const auto fluid = makeZeitlinFluid(n, alpha);
+    const auto& hamiltonian = static_cast<const ZeitlinHamiltonian&>(fluid->hamiltonian());
+    const ZeitlinDiagnostics diagnostics(hamiltonian);
+    const Matrix W = randomVorticity(n, 11);
+    const Matrix F = fluid->vectorField(W);
+    const double eps = 1e-5;
+    const Matrix plus = W + eps * F, minus = W - eps * F;
+    const double dE = (diagnostics.energy(plus) - diagnostics.energy(minus)) / (2 * eps);
+    const double expected =
+        -alpha * std::pow(diagnostics.commutatorNorm(W), 2) / (hamiltonian.hbar() * n);
+    EXPECT_NEAR(dE, expected, 1e-8 * std::max(1.0, std::abs(expected))) << alpha;
+    const double dZ = (diagnostics.enstrophy(plus) - diagnostics.enstrophy(minus)) / (2 * eps);
+    EXPECT_NEAR(dZ, 0.0, 1e-9) << alpha;
+    // The library's energy H is N·E/ħ.
+    EXPECT_NEAR(fluid->energy(W), n * diagnostics.energy(W) / hamiltonian.hbar(), 1e-12);
+  }
+}
+
+double stepSize(const Matrix& W, double fraction) {
+  const Eigen::Index n = W.rows();
+  const ZeitlinHamiltonian hamiltonian(n);
+  const Eigen::JacobiSVD<Matrix> svd(hamiltonian.streamMatrix(W));
+  return fraction * zeitlinHbar(n) / svd.singularValues()(0);
+}
+
+TEST(ZeitlinFluid, DdbKeepsTheSpectrumAndMovesTheEnergyOneWay) {
+  const int n = 32;
+  for (double alpha : {0.5, -0.5}) {
+    const auto fluid = makeZeitlinFluid(n, alpha);
+    const ZeitlinDiagnostics diagnostics(
+        static_cast<const ZeitlinHamiltonian&>(fluid->hamiltonian()));
+    const Matrix W0 = randomVorticity(n, 1);
+    const Eigen::VectorXd spectrum0 = SUN::casimirs(W0);
+    auto method = makeMethod<SUN>("ddb-cay", fluid);
+    // h = 0.02 ħ/‖P₀‖₂ (the benchmark's step). With α < 0 the energy grows 50-fold and
+    // ‖[P, W]‖ 18-fold from this state; at 0.1 ħ/‖P₀‖₂ the step then no longer resolves
+    // the flow and the energy reverses by up to 7.5% (docs/design.md, "Measured").
+    const double h = stepSize(W0, 0.02);
+    double drift = 0.0, previous = diagnostics.energy(W0);
+    int wrong_way = 0;
+    integrate(*method, W0, 0.0, h, 1000, [&](long, double, const Matrix& W) {
+      drift = std::max(drift, (SUN::casimirs(W) - spectrum0).norm() / spectrum0.norm());
+      const double energy = diagnostics.energy(W);
+      if (alpha * (energy - previous) > 1e-15 * std::abs(previous)) ++wrong_way;
+      previous = energy;
+    });
+    std::cout << "alpha=" << alpha << " spectrum drift " << drift << " E0 "
+              << diagnostics.energy(W0) << " E " << previous << "\n";
+    EXPECT_LE(drift, 1e-12) << alpha;
+    EXPECT_EQ(wrong_way, 0) << alpha;
+    EXPECT_NE(previous, diagnostics.energy(W0));
+  }
+}
+
+// The isospectral midpoint rule for Ẇ = [B(W), W], B = P/ħ, from its own formula:
+//   W_k = (I − hB/2) W̃ (I + hB/2),  W_{k+1} = (I + hB/2) W̃ (I − hB/2),  B = B(W̃).
+Matrix isospectralMidpoint(const ZeitlinHamiltonian& hamiltonian, const Matrix& W, double h) {
+  const Eigen::Index n = W.rows();
+  const Matrix I = Matrix::Identity(n, n);
+  Matrix tilde = W;
+  for (int k = 0; k < 500; ++k) {
+    const Matrix B = hamiltonian.streamMatrix(tilde) / hamiltonian.hbar();
+    // W̃ = (I − hB/2)⁻¹ W (I + hB/2)⁻¹
+    const Matrix next = (I - 0.5 * h * B).inverse() * W * (I + 0.5 * h * B).inverse();
+    const double change = (next - tilde).norm();
+    tilde = next;
+    if (change < 1e-16 * W.norm()) break;
+  }
+  const Matrix B = hamiltonian.streamMatrix(tilde) / hamiltonian.hbar();
+  return (I + 0.5 * h * B) * tilde * (I - 0.5 * h * B);
+}
+
+TEST(ZeitlinFluid, AtAlphaZeroDdbCayleyIsTheIsospectralMidpoint) {
+  const int n = 16;
+  const auto fluid = makeZeitlinFluid(n, 0.0);
+  const ZeitlinHamiltonian hamiltonian(n);
+  const Matrix W0 = randomVorticity(n, 5);
+  const double h = stepSize(W0, 0.2);
+  auto method = makeMethod<SUN>("ddb-cay", fluid);
+  Matrix ddb = W0, midpoint = W0;
+  for (int k = 0; k < 100; ++k) {
+    ddb = method->step(ddb, k * h, h);
+    midpoint = isospectralMidpoint(hamiltonian, midpoint, h);
+  }
+  EXPECT_LT((ddb - midpoint).norm(), 1e-13 * W0.norm());
+}
+
+TEST(ZeitlinFluid, ZonalAndL1StatesAreFixedByOneStep) {
+  const int n = 12;
+  const SphericalHarmonicBasis basis{HoppeYauLaplacian(n)};
+  const Matrix l1 = 0.3 * basis.element(1, -1) - 0.7 * basis.element(1, 0) +
+                    0.5 * basis.element(1, 1);  // a pure l = 1 element
+  for (double alpha : {0.0, 0.5, -0.5}) {
+    const auto fluid = makeZeitlinFluid(n, alpha);
+    for (const Matrix& W : {zonalVorticity(n, 2), l1}) {
+      auto method = makeMethod<SUN>("ddb-cay", fluid);
+      const Matrix next = method->step(W, 0.0, stepSize(W, 0.5));
+      EXPECT_LT((next - W).norm(), 1e-14 * W.norm()) << alpha;
+    }
+  }
+}
+
+TEST(ZeitlinFluid, EnergyAscentOnTheL1OrbitReachesHalfTheEnstrophy) {
+  // W = U X₃ Uᴴ (random U) lies on the isospectral orbit of the l = 1 element X₃ but is
+  // not itself l = 1; with α < 0 the energy rises to the orbit's maximum E/Z = ½.
+  const int n = 12;
+  const auto fluid = makeZeitlinFluid(n, -0.5);
+  const ZeitlinDiagnostics diagnostics(
+      static_cast<const ZeitlinHamiltonian&>(fluid->hamiltonian()));
+  Matrix W = l1Vorticity(n, 4);
+  const double ratio0 = diagnostics.energy(W) / diagnostics.enstrophy(W);
+  auto method = makeMethod<SUN>("ddb-cay", fluid);
+  integrate(*method, W, 0.0, 0.05, 4000, [&](long, double, const Matrix& state) { W = state; });
+  const double ratio = diagnostics.energy(W) / diagnostics.enstrophy(W);
+  std::cout << "E/Z: " << ratio0 << " -> " << ratio << "\n";
+  EXPECT_LT(ratio0, 0.49);
+  EXPECT_NEAR(ratio, 0.5, 1e-6);
+}
+
+// Fixed point, Newton–Krylov and Ceres solve the same Legendre equation to 1e-12.
+TEST(MatrixLegendreSolver, FixedPointNewtonKrylovAndCeresAgree) {
+  const int n = 8;  // u(8): 64 unknowns, the largest Ceres is asked to take
+  const auto fluid = makeZeitlinFluid(n, 0.5);
+  const Matrix W = randomVorticity(n, 21);
+  const double h = stepSize(W, 0.8);
+  std::vector<Matrix> results;
+  for (auto strategy : {MatrixLegendreStrategy::kFixedPoint, MatrixLegendreStrategy::kNewtonKrylov,
+                        MatrixLegendreStrategy::kCeres}) {
+    Ddb<Cayley<SUN>> method(fluid, Cayley<SUN>(), LegendreForm::kHamiltonian);
+    method.legendreSolver().setStrategy(strategy);
+    results.push_back(method.step(W, 0.0, h));
+    const auto& stats = method.legendreSolver().stats();
+    std::cout << "strategy " << int(strategy) << ": fixed point " << stats.fixed_point
+              << ", Newton " << stats.newton << ", Krylov " << stats.krylov << ", residual "
+              << stats.residual << "\n";
+  }
+  EXPECT_LT((results[1] - results[0]).norm(), 1e-12 * W.norm());
+  EXPECT_LT((results[2] - results[0]).norm(), 1e-12 * W.norm());
+}
+
+TEST(MatrixLegendreSolver, NewtonKrylovTakesOverWhereTheFixedPointStalls) {
+  // h‖P‖₂/ħ ≈ 1.5: the fixed point contracts too slowly (docs/conventions.md §2).
+  const int n = 12;
+  const auto fluid = makeZeitlinFluid(n, 0.5);
+  const Matrix W = randomVorticity(n, 8);
+  Ddb<Cayley<SUN>> method(fluid, Cayley<SUN>(), LegendreForm::kHamiltonian);
+  const Matrix next = method.step(W, 0.0, stepSize(W, 1.5));
+  EXPECT_GT(method.legendreSolver().stats().newton, 0);
+  EXPECT_LT((SUN::casimirs(next) - SUN::casimirs(W)).norm(), 1e-13 * W.norm());
+}
+
+// Orders against the adaptive reference, N = 8, t in [0, 1] (docs/conventions.md §2).
+struct FluidOrderCase {
+  const char* method;
+  double alpha;
+  double expected;
+};
+
+class FluidOrder : public ::testing::TestWithParam<FluidOrderCase> {};
+
+TEST_P(FluidOrder, FittedSlopeAgainstTheReference) {
+  const auto& c = GetParam();
+  const int n = 8;
+  const auto fluid = makeZeitlinFluid(n, c.alpha);
+  const Matrix W0 = randomVorticity(n, 1);
+  const double t_end = 1.0;
+  auto finalState = [&](const std::string& name, int steps) {
+    auto method = makeMethod<SUN>(name, fluid);
+    Matrix last;
+    integrate(*method, W0, 0.0, t_end / steps, steps,
+              [&](long, double, const Matrix& W) { last = W; });
+    return last;
+  };
+  const Matrix reference = finalState("reference", 1);
+  std::vector<double> hs, errors;
+  for (int steps : {20, 40, 80, 160, 320}) {
+    hs.push_back(t_end / steps);
+    errors.push_back((finalState(c.method, steps) - reference).norm());
+  }
+  const OrderFit fit = fitOrder(hs, errors, 1e-11);
+  std::cout << c.method << " alpha=" << c.alpha << " slope=" << fit.slope << "\n";
+  ASSERT_GE(fit.points, 4);
+  EXPECT_NEAR(fit.slope, c.expected, 0.15);
+}
+INSTANTIATE_TEST_SUITE_P(Zeitlin, FluidOrder,
+                         ::testing::Values(FluidOrderCase{"ddb-cay", 0.0, 2},
+                                           FluidOrderCase{"ddb-cay", 0.5, 1},
+                                           FluidOrderCase{"ddb-cay", -0.5, 1},
+                                           FluidOrderCase{"sddb-cay", 0.5, 2}),
+                         [](const auto& info) {
+                           const double a = info.param.alpha;
+                           std::string name = std::string(info.param.method) +
+                                              (a < 0 ? "_alpha_minus" : "_alpha_") +
+                                              std::to_string(int(std::abs(a) * 10));
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
+
+TEST(ZeitlinFluid, Rk4LeavesTheOrbitWhereDdbStaysOnIt) {
+  const int n = 16;
+  const auto fluid = makeZeitlinFluid(n, 0.5);
+  const Matrix W0 = randomVorticity(n, 2);
+  const Eigen::VectorXd spectrum0 = SUN::casimirs(W0);
+  const double h = stepSize(W0, 0.2);
+  for (const char* name : {"rk4", "ddb-cay"}) {
+    auto method = makeMethod<SUN>(name, fluid);
+    Matrix last;
+    integrate(*method, W0, 0.0, h, 200, [&](long, double, const Matrix& W) { last = W; });
+    const double drift = (SUN::casimirs(last) - spectrum0).norm() / spectrum0.norm();
+    std::cout << name << " spectrum drift " << drift << "\n";
+    if (std::string(name) == "rk4") {
+      EXPECT_GT(drift, 1e-10);
+    } else {
+      EXPECT_LT(drift, 1e-13);
+    }
+  }
+}
+
+TEST(ZeitlinFluid, BadStatesAreRejectedWithTheirSizeAndWorstEntry) {
+  const int n = 40;
+  Matrix W = randomVorticity(n, 3);
+  EXPECT_NO_THROW(SUN::requireState("W", W));
+  Matrix hermitian = W;
+  hermitian(3, 5) += 1.0;
+  try {
+    SUN::requireState("W", hermitian);
+    FAIL() << "not skew-Hermitian accepted";
+  } catch (const InvalidArgument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("40x40"), std::string::npos) << what;
+    EXPECT_LT(what.size(), 300u) << what;
+  }
+  Matrix traced = W;
+  traced.diagonal().array() += std::complex<double>(0, 0.1);
+  EXPECT_THROW(SUN::requireState("W", traced), InvalidArgument);
+  Matrix nan = W;
+  nan(1, 1) = std::complex<double>(NAN, 0);
+  EXPECT_THROW(SUN::requireState("W", nan), InvalidArgument);
+  EXPECT_THROW(SUN::requireState("W", Matrix::Zero(1, 1)), InvalidArgument);
+  EXPECT_THROW(makeZeitlinFluid(1, 0.5), InvalidArgument);
+  EXPECT_THROW(makeZeitlinFluid(8, NAN), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace ddb::test
