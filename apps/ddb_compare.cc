@@ -1,72 +1,163 @@
 // ddb-compare: compares integrators on the paper's rigid-body scenarios (Section 5;
-// docs/conventions.md §3) and on the heavy top and Kirchhoff body, with the command line and
-// files of docs/file-formats.md. Bad input: one line naming the flag and value on stderr,
-// exit status 2, nothing written. Every file is written under a temporary name and
-// renamed. Exit status 1 if an integrator failed (its valid prefix is still written).
+// docs/conventions.md §3) and on the heavy top and Kirchhoff body, with the command line
+// and files of docs/file-formats.md. Exit status (apps/common/exit_status.h): 2 for bad
+// input, checked in full before anything is written; 1 if a method failed (its valid
+// prefix is still written and it is marked FAILED) or a file could not be written.
+#include <ddb/integrators/method_descriptions.h>
 #include <ddb/integrators/method_registry.h>
-#include <ddb/systems/heavy_top.h>
-#include <ddb/systems/kirchhoff.h>
-#include <ddb/systems/rigid_body.h>
+#include <ddb/integrators/run.h>
+#include <ddb/systems/paper_scenarios.h>
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
-#include <chrono>
+#include <array>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
-#include <map>
-#include <sstream>
+#include <string_view>
 
-#include "output_files.h"
+#include "common/atomic_file.h"
+#include "common/cli.h"
+#include "common/exit_status.h"
+#include "common/format.h"
+#include "common/json.h"
+#include "common/logging.h"
+#include "common/progress.h"
 
 namespace {
 
 using namespace ddb;
 namespace fs = std::filesystem;
 
-[[noreturn]] void usageError(const std::string& flag, const std::string& value,
-                             const std::string& why) {
-  throw CLI::ValidationError(flag + " = " + value + ": " + why);
+constexpr const char* kApp = "ddb-compare";
+constexpr long kMaxSteps = 1000000000L;
+// Messages print doubles with fmt's shortest round-trip form ("0.3"); files use 17
+// significant digits (app::number, docs/file-formats.md).
+// A run shorter than this is timed again (--repeat) for a stable median; a longer one
+// is timed once, as it ran.
+constexpr double kRepeatBelowSeconds = 1.0;
+
+const std::vector<std::pair<std::string, std::string>>& systemDescriptions() {
+  static const std::vector<std::pair<std::string, std::string>> systems{
+      {"rigid-body", "free rigid body on so(3)*, K = alpha I (paper, Section 5)"},
+      {"heavy-top", "heavy top on se(3)*, Hamiltonian-form DDB, K = alpha diag(metric)"},
+      {"kirchhoff", "rigid body in ideal fluid on se(3)*, K = alpha diag(metric)"}};
+  return systems;
 }
 
-std::vector<std::string> split(const std::string& list, char separator = ',') {
-  std::vector<std::string> items;
-  std::stringstream ss(list);
-  for (std::string item; std::getline(ss, item, separator);) items.push_back(item);
-  return items;
+template <class V>
+std::vector<std::string> firstOf(const V& pairs) {
+  std::vector<std::string> names;
+  for (const auto& pair : pairs) names.push_back(pair.first);
+  return names;
 }
 
-double parseNumber(const std::string& flag, const std::string& text, const std::string& item) {
-  try {
-    size_t used = 0;
-    const double v = std::stod(item, &used);
-    if (used == item.size() && std::isfinite(v)) return v;
-  } catch (const std::exception&) {
+std::vector<std::string> scenarioNames() {
+  std::vector<std::string> names;
+  for (const auto& s : rigidBodyScenarios()) names.push_back(s.name);
+  return names;
+}
+
+/// Short form of a default for --help: "1,1.3,0.5".
+template <class Derived>
+std::string shortList(const Eigen::DenseBase<Derived>& v) {
+  std::string s;
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%s%.6g", i ? "," : "", v.derived()(i));
+    s += buffer;
   }
-  usageError(flag, text, "'" + item + "' is not a finite number");
+  return s;
 }
+std::string shortList(double v) { return shortList(Eigen::Matrix<double, 1, 1>(v)); }
 
-template <int N>
-Eigen::Matrix<double, N, 1> parseVector(const std::string& flag, const std::string& text,
-                                        const Eigen::Matrix<double, N, 1>& fallback) {
-  if (text.empty()) return fallback;
-  const auto items = split(text);
-  if (items.size() != N) {
-    usageError(flag, text, "expected " + std::to_string(N) + " comma-separated numbers");
-  }
-  Eigen::Matrix<double, N, 1> v;
-  for (int i = 0; i < N; ++i) v(i) = parseNumber(flag, text, items[i]);
-  return v;
+std::vector<double> values(const Eigen::Ref<const Eigen::VectorXd>& v) {
+  return std::vector<double>(v.data(), v.data() + v.size());
 }
 
 // ---- the command line (docs/file-formats.md) ----
 struct Options {
   std::string system = "rigid-body", scenario = "A", methods, out = "results", sweep;
-  std::string inertia, omega0, mu0, chi, metric, mass;
-  double h = 0.1, t_end = 0.0, alpha = 0.5, mgl = 1.0;
-  bool t_end_given = false, plot = false, verbose = false, quiet = false;
+  std::string h = "0.1", t_end, alpha, mgl, inertia, omega0, mu0, chi, metric, mass;
+  bool plot = false;
   int repeat = 5;
+  long every = 1;
+  app::LogFlags log;
 };
+
+std::string helpFooter() {
+  const RigidBodyScenario& a = rigidBodyScenarios().front();
+  const HeavyTopSetup top;
+  const KirchhoffSetup kirchhoff;
+  return "\nSystems (--system):\n" + app::describeChoices(systemDescriptions()) +
+         "\nScenarios (--scenario, rigid body only; alpha " + shortList(a.alpha) + ", omega0 " +
+         shortList(a.omega0) + ", M0 = inertia * omega0):\n" +
+         [] {
+           std::vector<std::pair<std::string, std::string>> lines;
+           for (const auto& s : rigidBodyScenarios()) lines.push_back({s.name, s.description});
+           return app::describeChoices(lines);
+         }() +
+         "\nMethods (--method; default: every method that applies to the system):\n" +
+         app::describeChoices(methodDescriptions()) + "\nDefaults of the other systems (t-end " +
+         shortList(top.t_end) + "):\n  heavy-top  inertia " + shortList(top.inertia) + ", mgl " +
+         shortList(top.mgl) + ", chi " + shortList(top.chi) + ", mu0 " + shortList(top.mu0) +
+         ", metric " + shortList(top.metric) + ", alpha " + shortList(top.alpha) +
+         "\n  kirchhoff  inertia " + shortList(kirchhoff.inertia) + ", mass " +
+         shortList(kirchhoff.mass) + ", mu0 " + shortList(kirchhoff.mu0) + ", metric " +
+         shortList(kirchhoff.metric) + ", alpha " + shortList(kirchhoff.alpha) +
+         "\n\nA parameter that differs from the scenario's is recorded in summary.json, whose "
+         "scenario is then \"custom\".\nExit status: 0 ok, 1 a method failed or a file could not "
+         "be written, 2 bad input (nothing written).\n";
+}
+
+void addOptions(CLI::App& cli, Options& o) {
+  const RigidBodyScenario& a = rigidBodyScenarios().front();
+  cli.add_option("--system", o.system, "rigid-body | heavy-top | kirchhoff (listed below)")
+      ->capture_default_str();
+  cli.add_option("--scenario", o.scenario, "A | B | C, rigid body only (listed below)")
+      ->capture_default_str();
+  cli.add_option("--method", o.methods,
+                 "comma-separated methods (default: every one that applies)");
+  cli.add_option("--h", o.h, "step size")->capture_default_str();
+  cli.add_option("--t-end", o.t_end,
+                 "final time (default: the scenario's, A 30, B and C 250; other systems " +
+                     shortList(HeavyTopSetup().t_end) +
+                     "); rounded to a whole number of steps, with a warning");
+  cli.add_option("--every", o.every, "write every K-th state and the last one to <method>.csv")
+      ->capture_default_str();
+  cli.add_option("--out", o.out, "output folder")->capture_default_str();
+  cli.add_flag("--plot", o.plot, "render PNG figures with matplotlib");
+  cli.add_option("--sweep-h", o.sweep, "HMIN:HMAX:COUNT log-spaced step sizes -> error_vs_h.csv");
+  cli.add_option("--repeat", o.repeat,
+                 "timed runs per method for the median runtime, for runs shorter than 1 s")
+      ->capture_default_str();
+  cli.add_option("--inertia", o.inertia,
+                 "principal moments a,b,c (default: scenario A/B " + shortList(a.inertia) + ", C " +
+                     shortList(rigidBodyScenarios().back().inertia) + ", other systems " +
+                     shortList(HeavyTopSetup().inertia) + ")");
+  cli.add_option(
+      "--alpha", o.alpha,
+      "dissipation scale, K = alpha I or alpha diag(metric) (default " + shortList(a.alpha) + ")");
+  cli.add_option(
+      "--omega0", o.omega0,
+      "rigid body: initial angular velocity x,y,z (default " + shortList(a.omega0) + ")");
+  cli.add_option("--mgl", o.mgl,
+                 "heavy top: m g l (default " + shortList(HeavyTopSetup().mgl) + ")");
+  cli.add_option(
+      "--chi", o.chi,
+      "heavy top: centre-of-mass direction x,y,z (default " + shortList(HeavyTopSetup().chi) + ")");
+  cli.add_option("--mu0", o.mu0, "heavy top, Kirchhoff: initial momentum, 6 numbers (below)");
+  cli.add_option("--metric", o.metric,
+                 "heavy top, Kirchhoff: k1,...,k6, K = alpha diag(k) (default " +
+                     shortList(HeavyTopSetup().metric) + ")");
+  cli.add_option(
+      "--mass", o.mass,
+      "Kirchhoff: added masses m1,m2,m3 (default " + shortList(KirchhoffSetup().mass) + ")");
+  app::addLogFlags(cli, o.log);
+  app::addVersionFlag(cli, kApp);
+  cli.footer(helpFooter());
+}
 
 struct Sweep {
   double h_min = 0, h_max = 0;
@@ -81,208 +172,361 @@ struct Sweep {
   }
 };
 
+/// round(t_end / h), at least 1 and at most kMaxSteps.
 long stepCount(double t_end, double h, const std::string& flag) {
   const double n = std::round(t_end / h);
-  if (n > 1e9)
-    usageError(flag, app::number(h), "more than 1e9 steps to t-end " + app::number(t_end));
+  if (n > static_cast<double>(kMaxSteps)) {
+    app::usageError(flag, app::number(h), "more than 1e9 steps to t-end " + app::number(t_end));
+  }
   return std::max(1L, static_cast<long>(n));
 }
 
-// ---- one system's problem: the system, μ0, the scenario and its parameters ----
+/// What every system shares, validated.
+struct Settings {
+  double h = 0.0, t_end = 0.0;
+  long steps = 0;
+  Sweep sweep;
+  std::vector<std::string> methods;
+  fs::path out;
+};
+
+// ---- one system's problem: the system, μ0, the scenario label and its parameters ----
 template <class G>
 struct Problem {
   std::shared_ptr<const LiePoissonSystem<G>> system;
   typename G::template Dual<double> mu0;
-  std::string scenario;
+  std::string scenario;       // "A", "B", "C", "custom" or "none"
+  std::string scenario_base;  // the scenario "custom" started from
+  double t_end = 0.0;         // the default horizon
   app::JsonObject parameters;
 };
 
-template <class G>
-struct Run {
-  std::vector<double> times;
-  std::vector<typename G::template Dual<double>> states;
-  double runtime_s = 0.0;
-  std::string failure;
-};
-
-template <class G>
-Run<G> runMethod(const std::string& name, const Problem<G>& problem, double h, long steps,
-                 bool keep_states) {
-  Run<G> run;
-  auto method = makeMethod<G>(name, problem.system);
-  if (keep_states) {
-    run.times.reserve(steps + 1);
-    run.states.reserve(steps + 1);
-  }
-  typename G::template Dual<double> last = problem.mu0;
-  const auto start = std::chrono::steady_clock::now();
-  try {
-    integrate(*method, problem.mu0, 0.0, h, steps,
-              [&](long k, double t, const typename G::template Dual<double>& mu) {
-                if (keep_states || k == steps) {
-                  run.times.push_back(t);
-                  run.states.push_back(mu);
-                }
-                last = mu;
-              });
-  } catch (const SolveFailure& failure) {
-    run.failure = failure.what();
-    if (!keep_states) run.states.push_back(last);
-  }
-  run.runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return run;
+double optionalNumber(const std::string& flag, const std::string& text, double fallback) {
+  return text.empty() ? fallback : app::parseNumber(flag, text, text);
+}
+template <int N>
+Eigen::Matrix<double, N, 1> optionalVector(const std::string& flag, const std::string& text,
+                                           const Eigen::Matrix<double, N, 1>& fallback) {
+  return text.empty() ? fallback : app::parseVector<N>(flag, text);
 }
 
-template <class G>
-double casimirDrift(const Problem<G>& problem,
-                    const std::vector<typename G::template Dual<double>>& states) {
-  const auto c0 = problem.system->casimirs(problem.mu0);
-  double drift = 0.0;
-  for (const auto& mu : states) {
-    const auto c = problem.system->casimirs(mu);
-    for (Eigen::Index i = 0; i < c.size(); ++i) {
-      const double scale = std::abs(c0(i)) > 0 ? std::abs(c0(i)) : 1.0;
-      drift = std::max(drift, std::abs(c(i) - c0(i)) / scale);
+void requirePositiveEntries(const std::string& flag, const std::string& text,
+                            const Eigen::VectorXd& v) {
+  if ((v.array() <= 0).any()) app::usageError(flag, text, "entries must be > 0");
+}
+
+Problem<SO3> rigidBodyProblem(const CLI::App& cli, const Options& o) {
+  for (const char* flag : {"--mgl", "--chi", "--mu0", "--metric", "--mass"}) {
+    app::rejectIfGiven(cli, flag, "--system rigid-body");
+  }
+  app::requireChoice("--scenario", o.scenario, scenarioNames());
+  const RigidBodyScenario& base = rigidBodyScenario(o.scenario);
+  RigidBodyScenario used = base;
+  used.inertia = optionalVector<3>("--inertia", o.inertia, base.inertia);
+  requirePositiveEntries("--inertia", o.inertia, used.inertia);
+  used.alpha = optionalNumber("--alpha", o.alpha, base.alpha);
+  used.omega0 = optionalVector<3>("--omega0", o.omega0, base.omega0);
+  const bool custom = !used.sameParameters(base);
+  Problem<SO3> p{used.system(),           used.mu0(), custom ? "custom" : base.name,
+                 custom ? base.name : "", base.t_end, {}};
+  p.parameters.add("inertia", app::JsonObject::array(values(used.inertia)))
+      .add("alpha", used.alpha)
+      .add("omega0", app::JsonObject::array(values(used.omega0)))
+      .add("mu0", app::JsonObject::array(values(used.mu0())));
+  return p;
+}
+
+Problem<SE3> se3Problem(const CLI::App& cli, const Options& o) {
+  const std::string context = "--system " + o.system;
+  for (const char* flag : {"--scenario", "--omega0"}) app::rejectIfGiven(cli, flag, context);
+  const bool top = o.system == "heavy-top";
+  for (const char* flag :
+       top ? std::vector<const char*>{"--mass"} : std::vector<const char*>{"--mgl", "--chi"}) {
+    app::rejectIfGiven(cli, flag, context);
+  }
+  Problem<SE3> p;
+  // The parameters both systems share, parsed over `setup`'s defaults and recorded.
+  const auto shared = [&](auto setup) {
+    const auto defaults = setup;
+    setup.inertia = optionalVector<3>("--inertia", o.inertia, defaults.inertia);
+    requirePositiveEntries("--inertia", o.inertia, setup.inertia);
+    setup.alpha = optionalNumber("--alpha", o.alpha, defaults.alpha);
+    setup.mu0 = optionalVector<6>("--mu0", o.mu0, defaults.mu0);
+    setup.metric = optionalVector<6>("--metric", o.metric, defaults.metric);
+    if ((setup.metric.array() < 0).any()) {
+      app::usageError("--metric", o.metric, "entries must be >= 0");
     }
+    p.mu0 = setup.mu0;
+    p.t_end = setup.t_end;
+    p.parameters.add("inertia", app::JsonObject::array(values(setup.inertia)))
+        .add("alpha", setup.alpha)
+        .add("metric", app::JsonObject::array(values(setup.metric)))
+        .add("mu0", app::JsonObject::array(values(setup.mu0)));
+    return setup;
+  };
+  bool custom = false;
+  if (top) {
+    HeavyTopSetup s = shared(HeavyTopSetup());
+    s.mgl = optionalNumber("--mgl", o.mgl, s.mgl);
+    s.chi = optionalVector<3>("--chi", o.chi, s.chi);
+    custom = !s.sameParameters(HeavyTopSetup());
+    p.system = s.system();
+    p.parameters.add("mgl", s.mgl).add("chi", app::JsonObject::array(values(s.chi)));
+  } else {
+    KirchhoffSetup s = shared(KirchhoffSetup());
+    s.mass = optionalVector<3>("--mass", o.mass, s.mass);
+    requirePositiveEntries("--mass", o.mass, s.mass);
+    custom = !s.sameParameters(KirchhoffSetup());
+    p.system = s.system();
+    p.parameters.add("mass", app::JsonObject::array(values(s.mass)));
   }
-  return drift;
+  // These systems have no paper scenario: "none" with the defaults, else "custom".
+  p.scenario = custom ? "custom" : "none";
+  return p;
 }
 
-template <class G>
-std::string trajectoryCsv(const Problem<G>& problem, const Run<G>& run) {
-  std::string s = "t";
-  for (int i = 1; i <= G::kDim; ++i) s += ",m" + std::to_string(i);
-  s += ",energy";
-  if (G::kNumCasimirs == 1) {
-    s += ",casimir";
-  } else {
-    for (int i = 1; i <= G::kNumCasimirs; ++i) s += ",casimir" + std::to_string(i);
+/// h, t-end, steps, sweep and method names; `default_t_end` is the system's or scenario's.
+Settings commonSettings(const Options& o, double default_t_end) {
+  Settings s;
+  s.h = app::parseNumber("--h", o.h, o.h);
+  if (!(s.h > 0)) app::usageError("--h", o.h, "must be > 0");
+  s.t_end = optionalNumber("--t-end", o.t_end, default_t_end);
+  if (!(s.t_end > 0)) app::usageError("--t-end", o.t_end, "must be > 0");
+  s.steps = stepCount(s.t_end, s.h, "--h");
+  if (o.repeat < 1) app::usageError("--repeat", std::to_string(o.repeat), "must be >= 1");
+  if (o.every < 1) app::usageError("--every", std::to_string(o.every), "must be >= 1");
+  if (!o.sweep.empty()) {
+    const auto parts = app::split(o.sweep, ':');
+    if (parts.size() != 3) app::usageError("--sweep-h", o.sweep, "expected HMIN:HMAX:COUNT");
+    s.sweep.h_min = app::parseNumber("--sweep-h", o.sweep, parts[0]);
+    s.sweep.h_max = app::parseNumber("--sweep-h", o.sweep, parts[1]);
+    const double count = app::parseNumber("--sweep-h", o.sweep, parts[2]);
+    if (!(s.sweep.h_min > 0) || !(s.sweep.h_max >= s.sweep.h_min) || count < 1 || count > 1000 ||
+        count != std::floor(count)) {
+      app::usageError("--sweep-h", o.sweep,
+                      "need 0 < HMIN <= HMAX and an integer COUNT in [1, 1000]");
+    }
+    s.sweep.count = static_cast<int>(count);
+    stepCount(s.t_end, s.sweep.h_min, "--sweep-h");
   }
-  s += "\n";
-  for (size_t k = 0; k < run.states.size(); ++k) {
-    const auto& mu = run.states[k];
-    s += app::number(run.times[k]);
-    for (int i = 0; i < G::kDim; ++i) s += "," + app::number(mu(i));
-    s += "," + app::number(problem.system->energy(mu));
-    const auto c = problem.system->casimirs(mu);
-    for (int i = 0; i < G::kNumCasimirs; ++i) s += "," + app::number(c(i));
-    s += "\n";
-  }
+  s.methods = o.methods.empty() ? methodNames() : app::split(o.methods);
+  if (s.methods.empty()) app::usageError("--method", o.methods, "no method given");
+  for (const auto& m : s.methods) app::requireChoice("--method", m, methodNames());
+  s.out = o.out;
   return s;
 }
 
-class Progress {
- public:
-  explicit Progress(bool quiet) : enabled_(!quiet && isatty(STDERR_FILENO)) {}
-  void show(const std::string& line) const {
-    if (enabled_) std::fprintf(stderr, "\r\033[K%s", line.c_str());
+/// Creates the out folder, or says why it cannot be used (bad input: nothing written).
+void prepareOutFolder(const Options& o, const fs::path& out) {
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec || !fs::is_directory(out)) app::usageError("--out", o.out, "cannot create the folder");
+  if (::access(out.c_str(), W_OK | X_OK) != 0) {
+    app::usageError("--out", o.out, "folder is not writable");
   }
-  ~Progress() {
-    if (enabled_) std::fprintf(stderr, "\r\033[K");
+}
+
+/// <method>.csv rows as they are computed (docs/file-formats.md): t, μ, energy,
+/// Casimirs, 17 significant digits, formatted on the stack (no allocation per row).
+template <class G>
+class TrajectoryCsv {
+ public:
+  using Dual = typename G::template Dual<double>;
+
+  TrajectoryCsv(app::AtomicFile& file, const LiePoissonSystem<G>& system)
+      : file_(file), system_(system) {
+    std::string header = "t";
+    for (int i = 1; i <= G::kDim; ++i) header += ",m" + std::to_string(i);
+    header += ",energy";
+    if (G::kNumCasimirs == 1) {
+      header += ",casimir";
+    } else {
+      for (int i = 1; i <= G::kNumCasimirs; ++i) header += ",casimir" + std::to_string(i);
+    }
+    file_.write(header + "\n");
+  }
+
+  void operator()(long, double t, const Dual& mu) {
+    std::size_t n = 0;
+    const auto put = [&](double v, char after) {
+      n += static_cast<std::size_t>(app::formatNumber(row_.data() + n, row_.size() - n, v));
+      row_[n++] = after;
+    };
+    put(t, ',');
+    for (int i = 0; i < G::kDim; ++i) put(mu(i), ',');
+    put(system_.energy(mu), ',');
+    const auto c = system_.casimirs(mu);
+    for (int i = 0; i < G::kNumCasimirs; ++i) put(c(i), i + 1 < G::kNumCasimirs ? ',' : '\n');
+    file_.write(std::string_view(row_.data(), n));
   }
 
  private:
-  bool enabled_;
+  app::AtomicFile& file_;
+  const LiePoissonSystem<G>& system_;
+  // Each cell is at most 24 characters of %.17g plus its separator.
+  std::array<char, 32 * (G::kDim + 2 + G::kNumCasimirs)> row_;
+};
+
+struct MethodOutcome {
+  std::string name;
+  bool ok = true;
+  double runtime_s = NAN;
+  int timed_runs = 1;
 };
 
 template <class G>
-int compare(const Options& options, const Problem<G>& problem, std::vector<std::string> methods,
-            long steps, const Sweep& sweep, const fs::path& out) {
+std::string failedLabel(const RunResult<G>& run) {
+  return "FAILED at step " + std::to_string(run.failed_step);
+}
+
+template <class G>
+int compare(const Options& o, const Settings& s, const Problem<G>& problem) {
   // Default: every method that applies; an explicit method that does not is bad input.
-  for (const auto& name : methods) {
-    if (!options.methods.empty() && !methodApplies(name, *problem.system))
-      usageError("--method", name, "does not apply to " + problem.system->name());
-  }
-  methods.erase(std::remove_if(
-                    methods.begin(), methods.end(),
-                    [&](const std::string& name) { return !methodApplies(name, *problem.system); }),
-                methods.end());
-  const double h = options.h;
-  const Progress progress(options.quiet);
-  spdlog::info("{}{}: h {}, {} steps, methods {}", problem.system->name(),
-               problem.scenario.empty() ? "" : ", scenario " + problem.scenario, h, steps,
-               options.methods.empty() ? "all" : options.methods);
-
-  const Run<G> reference = runMethod<G>("reference", problem, h, steps, true);
-  bool any_failed = !reference.failure.empty();
-  app::JsonObject method_json, runtime_table;
-  std::string table = "| method | runtime (s), median of " + std::to_string(options.repeat) +
-                      " | err_final | casimir_drift |\n|---|---|---|---|\n";
-  for (const auto& name : methods) {
-    progress.show("running " + name);
-    Run<G> run = name == "reference" ? reference : runMethod<G>(name, problem, h, steps, true);
-    // The runtime is the median of `repeat` in-process runs (the first included).
-    std::vector<double> runtimes{run.runtime_s};
-    for (int r = 1; r < options.repeat; ++r) {
-      progress.show("timing " + name + " (" + std::to_string(r + 1) + "/" +
-                    std::to_string(options.repeat) + ")");
-      runtimes.push_back(runMethod<G>(name, problem, h, steps, false).runtime_s);
+  std::vector<std::string> names;
+  for (const auto& name : s.methods) {
+    if (methodApplies(name, *problem.system)) {
+      names.push_back(name);
+    } else if (!o.methods.empty()) {
+      app::usageError("--method", name, "does not apply to " + problem.system->name());
     }
-    std::sort(runtimes.begin(), runtimes.end());
-    const double median = runtimes[runtimes.size() / 2];
-    if (!run.failure.empty()) spdlog::error("{}: {}", name, run.failure);
-    any_failed |= !run.failure.empty();
-    const auto& last = run.states.back();
-    const bool complete = run.failure.empty() && reference.failure.empty();
-    const double err_final = complete ? (last - reference.states.back()).norm() : NAN;
-    const double drift = casimirDrift(problem, run.states);
+  }
+  std::vector<std::unique_ptr<OneStepMethod<G>>> methods;
+  for (const auto& name : names) methods.push_back(makeMethod<G>(name, problem.system));
+  prepareOutFolder(o, s.out);
+  // ---- from here on, files are written: failures are exit status 1 ----
+
+  const double t_reached = static_cast<double>(s.steps) * s.h;
+  if (std::abs(t_reached - s.t_end) > 1e-9 * s.t_end) {
+    spdlog::warn("--t-end {} is not a multiple of --h {}: {} steps end at t = {}", s.t_end, s.h,
+                 s.steps, t_reached);
+  }
+  const LiePoissonSystem<G>& system = *problem.system;
+  app::Progress progress(o.log.quiet);
+  spdlog::info("{}{}: h {}, {} steps to t = {}, methods {}", system.name(),
+               problem.scenario == "none" ? "" : ", scenario " + problem.scenario, s.h, s.steps,
+               t_reached, o.methods.empty() ? "all" : o.methods);
+
+  // err_final's reference: the adaptive solver in one sweep to t_reached.
+  progress.show(fmt::format("reference solution to t = {}", t_reached));
+  ReferenceSolver<G> reference_solver(problem.system);
+  const RunResult<G> reference = runMethod(reference_solver, system, problem.mu0, t_reached, 1);
+  progress.clear();
+  bool any_failed = !reference.ok();
+  if (!reference.ok()) spdlog::error("reference (for err_final) FAILED: {}", reference.failure);
+
+  app::JsonObject method_json, runtime_table;
+  std::string table = "| method | runtime (s), median of up to " + std::to_string(o.repeat) +
+                      " runs | err_final | casimir_drift |\n|---|---|---|---|\n";
+  for (size_t m = 0; m < names.size(); ++m) {
+    const std::string& name = names[m];
+    RunOptions options;
+    options.every = o.every;
+    options.progress = [&](long done, long total) { progress.update(name, done, total); };
+    app::AtomicFile csv_file(s.out / (name + ".csv"));
+    TrajectoryCsv<G> csv(csv_file, system);
+    const RunResult<G> run =
+        runMethod(*methods[m], system, problem.mu0, s.h, s.steps, options, csv);
+    csv_file.commit();
+
+    // A short run is timed again without output, for a median that is not noise.
+    double runtime = run.runtime_s;
+    int timed_runs = 1;
+    if (run.ok() && run.runtime_s < kRepeatBelowSeconds && o.repeat > 1) {
+      std::vector<double> runtimes;
+      for (int r = 0; r < o.repeat; ++r) {
+        progress.show("timing " + name + " (" + std::to_string(r + 1) + "/" +
+                      std::to_string(o.repeat) + ")");
+        runtimes.push_back(runMethod(*methods[m], system, problem.mu0, s.h, s.steps).runtime_s);
+      }
+      std::sort(runtimes.begin(), runtimes.end());
+      runtime = runtimes[runtimes.size() / 2];
+      timed_runs = o.repeat;
+    }
+    progress.clear();
+
     app::JsonObject entry;
-    entry
-        .add("final",
-             app::JsonObject::array(std::vector<double>(last.data(), last.data() + G::kDim)))
-        .add("err_final", err_final)
-        .add("casimir_drift", drift)
-        .add("energy_final", problem.system->energy(last))
-        .add("runtime_s", median)
-        .add("steps", static_cast<double>(run.states.size() - 1));
-    if (!run.failure.empty()) entry.addString("failure", run.failure);
+    entry.add("final", app::JsonObject::array(values(run.final)))
+        .add("energy_final", system.energy(run.final))
+        .add("steps", run.steps)
+        .add("t_final", run.t_final);
+    if (run.ok()) {
+      const double err_final = reference.ok() ? (run.final - reference.final).norm() : NAN;
+      entry.addString("status", "ok")
+          .add("err_final", err_final)
+          .add("casimir_drift", run.casimir_drift)
+          .add("runtime_s", runtime)
+          .add("timed_runs", static_cast<long>(timed_runs));
+      runtime_table.add(name, runtime);
+      char row[256];
+      std::snprintf(row, sizeof row, "| %s | %.4g | %.3e | %.3e |\n", name.c_str(), runtime,
+                    err_final, run.casimir_drift);
+      table += row;
+      spdlog::info("{:14s} err_final {:.3e}  casimir drift {:.3e}  runtime {:.3g} s", name,
+                   err_final, run.casimir_drift, runtime);
+    } else {
+      // A failed run has no final error, drift or runtime to compare: say FAILED instead.
+      any_failed = true;
+      entry.addString("status", "FAILED")
+          .add("failed_step", run.failed_step)
+          .add("err_final", NAN)
+          .add("casimir_drift", NAN)
+          .add("runtime_s", NAN)
+          .addString("failure", run.failure);
+      runtime_table.addString(name, failedLabel(run));
+      table += "| " + name + " | " + failedLabel(run) + " | - | - |\n";
+      spdlog::error("{:14s} {}: {}", name, failedLabel(run), run.failure);
+    }
     method_json.add(name, entry.str(4));
-    runtime_table.add(name, median);
-    char row[256];
-    std::snprintf(row, sizeof row, "| %s | %.4g | %.3e | %.3e |\n", name.c_str(), median, err_final,
-                  drift);
-    table += row;
-    app::writeFileAtomically(out / (name + ".csv"), trajectoryCsv(problem, run));
-    spdlog::info("{:14s} err_final {:.3e}  casimir drift {:.3e}  runtime {:.3g} s", name, err_final,
-                 drift, median);
   }
 
-  if (sweep.count > 0) {
+  if (s.sweep.count > 0) {
     std::string rows = "method,h,err_final,casimir_drift,runtime_s\n";
-    const auto hs = sweep.steps();
+    const auto hs = s.sweep.steps();
     for (size_t i = 0; i < hs.size(); ++i) {
-      const long n = stepCount(options.t_end, hs[i], "--sweep-h");
+      const long n = stepCount(s.t_end, hs[i], "--sweep-h");
       // The reference at the same final time n·h, in one adaptive sweep.
-      const Run<G> exact = runMethod<G>("reference", problem, n * hs[i], 1, false);
-      for (const auto& name : methods) {
-        if (name == "reference") continue;
-        progress.show("sweep " + std::to_string(i + 1) + "/" + std::to_string(hs.size()) +
-                      "  h = " + app::number(hs[i]) + "  " + name);
-        const Run<G> run = runMethod<G>(name, problem, hs[i], n, true);
-        const double err = run.failure.empty() && exact.failure.empty()
-                               ? (run.states.back() - exact.states.back()).norm()
-                               : NAN;
-        if (!run.failure.empty()) spdlog::warn("sweep {} h={}: {}", name, hs[i], run.failure);
-        rows += name + "," + app::number(hs[i]) + "," + app::csvNumber(err) + "," +
-                app::csvNumber(casimirDrift(problem, run.states)) + "," +
-                app::number(run.runtime_s) + "\n";
+      progress.show("sweep " + std::to_string(i + 1) + "/" + std::to_string(hs.size()) +
+                    fmt::format("  h = {}  reference", hs[i]));
+      const RunResult<G> exact = runMethod(reference_solver, system, problem.mu0, n * hs[i], 1);
+      for (size_t m = 0; m < names.size(); ++m) {
+        if (names[m] == "reference") continue;
+        const std::string label = "sweep " + std::to_string(i + 1) + "/" +
+                                  std::to_string(hs.size()) + fmt::format("  h = {}  ", hs[i]) +
+                                  names[m];
+        RunOptions options;
+        options.progress = [&](long done, long total) { progress.update(label, done, total); };
+        const RunResult<G> run = runMethod(*methods[m], system, problem.mu0, hs[i], n, options);
+        const bool ok = run.ok() && exact.ok();
+        if (!run.ok()) {
+          progress.clear();
+          spdlog::warn("sweep {} h={} {}: {}", names[m], hs[i], failedLabel(run), run.failure);
+        }
+        rows += names[m] + "," + app::number(hs[i]) + "," +
+                app::number(ok ? (run.final - exact.final).norm() : NAN) + "," +
+                app::number(run.ok() ? run.casimir_drift : NAN) + "," +
+                app::number(run.ok() ? run.runtime_s : NAN) + "\n";
       }
     }
-    app::writeFileAtomically(out / "error_vs_h.csv", rows);
+    progress.clear();
+    app::writeFileAtomically(s.out / "error_vs_h.csv", rows);
   }
 
   app::JsonObject summary;
-  summary.addString("system", problem.system->name())
-      .addString("scenario", problem.scenario.empty() ? "none" : problem.scenario)
-      .add("h", h)
-      .add("t_end", steps * h)
+  summary.addString("system", system.name()).addString("scenario", problem.scenario);
+  if (!problem.scenario_base.empty()) summary.addString("scenario_base", problem.scenario_base);
+  summary.addString("version", app::projectVersion())
+      .add("h", s.h)
+      .add("t_end", t_reached)
+      .add("t_end_requested", s.t_end)
+      .add("steps", s.steps)
+      .add("every", o.every)
       .add("parameters", problem.parameters.str(2))
       .add("methods", method_json.str(2))
       .add("runtime_table", runtime_table.str(2));
-  app::writeFileAtomically(out / "summary.json", summary.str() + "\n");
-  app::writeFileAtomically(out / "runtime_table.md", table);
-  spdlog::info("wrote {}", out.string());
-  return any_failed ? 1 : 0;
+  app::writeFileAtomically(s.out / "summary.json", summary.str() + "\n");
+  app::writeFileAtomically(s.out / "runtime_table.md", table);
+  spdlog::info("wrote {}", s.out.string());
+  return any_failed ? app::kExitFailed : app::kExitOk;
 }
 
 int plot(const fs::path& out) {
@@ -291,142 +535,39 @@ int plot(const fs::path& out) {
   spdlog::info("plotting: {}", command);
   const int status = std::system(command.c_str());
   if (status != 0) spdlog::error("plotting failed (python3 with matplotlib is needed)");
-  return status == 0 ? 0 : 1;
+  return status == 0 ? app::kExitOk : app::kExitFailed;
+}
+
+/// Library checks of the problem's data (InvalidArgument) are bad input too.
+template <class F>
+auto asUsageError(F&& make) {
+  try {
+    return make();
+  } catch (const InvalidArgument& e) {
+    throw app::UsageError(e.what());
+  }
 }
 
 int runCompare(int argc, char** argv) {
-  CLI::App cli{"Compare integrators for double-bracket dissipation (paper, Section 5)"};
+  CLI::App cli{"Compare integrators for double-bracket dissipation (paper, Section 5)", kApp};
   Options o;
-  cli.add_option("--system", o.system, "rigid-body | heavy-top | kirchhoff");
-  cli.add_option("--scenario", o.scenario, "A | B | C (rigid body; paper, Section 5)");
-  cli.add_option("--method", o.methods, "comma-separated methods (default: all)");
-  cli.add_option("--h", o.h, "step size");
-  auto* t_end = cli.add_option("--t-end", o.t_end, "final time (default: the scenario's, or 30)");
-  cli.add_option("--out", o.out, "output folder");
-  cli.add_flag("--plot", o.plot, "render PNG figures with matplotlib");
-  cli.add_option("--sweep-h", o.sweep, "HMIN:HMAX:COUNT log-spaced step sizes");
-  cli.add_option("--repeat", o.repeat, "in-process runs per method for the median runtime");
-  cli.add_option("--inertia", o.inertia, "principal moments a,b,c");
-  cli.add_option("--alpha", o.alpha, "dissipation scale α (K = α·I or α·diag(metric))");
-  cli.add_option("--omega0", o.omega0, "rigid body: initial angular velocity x,y,z");
-  cli.add_option("--mgl", o.mgl, "heavy top: m·g·ℓ");
-  cli.add_option("--chi", o.chi, "heavy top: centre-of-mass direction x,y,z");
-  cli.add_option("--mu0", o.mu0, "heavy top / Kirchhoff: initial momentum (6 numbers)");
-  cli.add_option("--metric", o.metric, "heavy top / Kirchhoff: k1,...,k6 (K = α·diag(k))");
-  cli.add_option("--mass", o.mass, "Kirchhoff: added masses m1,m2,m3");
-  cli.add_flag("--verbose", o.verbose, "debug logging");
-  cli.add_flag("--quiet", o.quiet, "errors only");
-  try {
-    cli.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return cli.exit(e);
-  }
-  o.t_end_given = t_end->count() > 0;
-  spdlog::set_level(o.quiet ? spdlog::level::err
-                            : (o.verbose ? spdlog::level::debug : spdlog::level::info));
+  addOptions(cli, o);
+  if (const auto status = app::parseCommandLine(cli, argc, argv)) return *status;
+  app::setupLogging(o.log);
 
-  // ---- validate everything before writing anything ----
-  static const std::map<std::string, std::pair<Eigen::Vector3d, double>> scenarios{
-      {"A", {Eigen::Vector3d(1.0, 1.3, 0.5), 30.0}},
-      {"B", {Eigen::Vector3d(1.0, 1.3, 0.5), 250.0}},
-      {"C", {Eigen::Vector3d(1.0, 1.0, 0.5), 250.0}}};
-  const bool rigid = o.system == "rigid-body";
-  if (!rigid && o.system != "heavy-top" && o.system != "kirchhoff")
-    usageError("--system", o.system, "expected rigid-body, heavy-top or kirchhoff");
-  const auto scenario = scenarios.find(o.scenario);
-  if (scenario == scenarios.end()) usageError("--scenario", o.scenario, "expected A, B or C");
-  if (!std::isfinite(o.h) || o.h <= 0)
-    usageError("--h", app::number(o.h), "must be finite and > 0");
-  if (!o.t_end_given) o.t_end = rigid ? scenario->second.second : 30.0;
-  if (!std::isfinite(o.t_end) || o.t_end <= 0)
-    usageError("--t-end", app::number(o.t_end), "must be finite and > 0");
-  const long steps = stepCount(o.t_end, o.h, "--h");
-  if (!std::isfinite(o.alpha)) usageError("--alpha", app::number(o.alpha), "must be finite");
-  if (!std::isfinite(o.mgl)) usageError("--mgl", app::number(o.mgl), "must be finite");
-  if (o.repeat < 1) usageError("--repeat", std::to_string(o.repeat), "must be >= 1");
-  const Eigen::Vector3d inertia = parseVector<3>(
-      "--inertia", o.inertia, rigid ? scenario->second.first : Eigen::Vector3d(1.0, 1.3, 0.5));
-  if ((inertia.array() <= 0).any()) usageError("--inertia", o.inertia, "entries must be > 0");
-  using Vector6 = Eigen::Matrix<double, 6, 1>;
-  const Vector6 metric = parseVector<6>("--metric", o.metric, Vector6::Ones());
-  if ((metric.array() < 0).any()) usageError("--metric", o.metric, "entries must be >= 0");
-  const Eigen::Vector3d mass = parseVector<3>("--mass", o.mass, Eigen::Vector3d(1.0, 2.0, 3.0));
-  if ((mass.array() <= 0).any()) usageError("--mass", o.mass, "entries must be > 0");
-  const Eigen::Vector3d omega0 = parseVector<3>("--omega0", o.omega0, Eigen::Vector3d(0, 0.05, 1));
-  const Eigen::Vector3d chi = parseVector<3>("--chi", o.chi, Eigen::Vector3d(0, 0, 1));
-  const Vector6 top_mu0 =
-      (Vector6() << 0.0, 0.065, 0.5, 0.0, std::sin(0.3), std::cos(0.3)).finished();
-  const Vector6 kirchhoff_mu0 = (Vector6() << 0.0, 0.065, 0.5, 1.0, 0.0, 0.2).finished();
-  const Vector6 mu0 =
-      parseVector<6>("--mu0", o.mu0, o.system == "heavy-top" ? top_mu0 : kirchhoff_mu0);
-  Sweep sweep;
-  if (!o.sweep.empty()) {
-    const auto parts = split(o.sweep, ':');
-    if (parts.size() != 3) usageError("--sweep-h", o.sweep, "expected HMIN:HMAX:COUNT");
-    sweep.h_min = parseNumber("--sweep-h", o.sweep, parts[0]);
-    sweep.h_max = parseNumber("--sweep-h", o.sweep, parts[1]);
-    const double count = parseNumber("--sweep-h", o.sweep, parts[2]);
-    if (!(sweep.h_min > 0) || !(sweep.h_max >= sweep.h_min) || count < 1 || count > 1000 ||
-        count != std::floor(count))
-      usageError("--sweep-h", o.sweep, "need 0 < HMIN <= HMAX and an integer COUNT in [1, 1000]");
-    sweep.count = static_cast<int>(count);
-    stepCount(o.t_end, sweep.h_min, "--sweep-h");
-  }
-  const std::vector<std::string> methods = o.methods.empty() ? methodNames() : split(o.methods);
-  if (methods.empty()) usageError("--method", o.methods, "no method given");
-  for (const auto& m : methods) {
-    if (std::find(methodNames().begin(), methodNames().end(), m) == methodNames().end())
-      usageError("--method", m, "unknown method");
-  }
-  const fs::path out(o.out);
-  std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec || !fs::is_directory(out)) usageError("--out", o.out, "cannot create the folder");
-  {
-    const auto probe = out / ".ddb-compare-write-test";
-    std::ofstream test(probe);
-    if (!test) usageError("--out", o.out, "folder is not writable");
-    test.close();
-    fs::remove(probe, ec);
-  }
-
-  int status = 0;
-  if (rigid) {
-    Problem<SO3> p{makeRigidBody(inertia, o.alpha), inertia.cwiseProduct(omega0), o.scenario, {}};
-    p.parameters.add("inertia", app::JsonObject::array({inertia(0), inertia(1), inertia(2)}))
-        .add("alpha", o.alpha)
-        .add("omega0", app::JsonObject::array({omega0(0), omega0(1), omega0(2)}));
-    status = compare(o, p, methods, steps, sweep, out);
+  app::requireChoice("--system", o.system, firstOf(systemDescriptions()));
+  int status = app::kExitOk;
+  if (o.system == "rigid-body") {
+    const auto problem = asUsageError([&] { return rigidBodyProblem(cli, o); });
+    status = compare(o, commonSettings(o, problem.t_end), problem);
   } else {
-    const auto vec = [](const auto& v) {
-      return app::JsonObject::array(std::vector<double>(v.data(), v.data() + v.size()));
-    };
-    Problem<SE3> p{nullptr, mu0, "", {}};
-    p.parameters.add("inertia", vec(inertia)).add("alpha", o.alpha).add("metric", vec(metric));
-    p.parameters.add("mu0", vec(mu0));
-    if (o.system == "heavy-top") {
-      p.system = makeHeavyTop(inertia, o.mgl, chi, o.alpha, metric);
-      p.parameters.add("mgl", o.mgl).add("chi", vec(chi));
-    } else {
-      p.system = makeKirchhoffBody(inertia, mass, o.alpha, metric);
-      p.parameters.add("mass", vec(mass));
-    }
-    status = compare(o, p, methods, steps, sweep, out);
+    const auto problem = asUsageError([&] { return se3Problem(cli, o); });
+    status = compare(o, commonSettings(o, problem.t_end), problem);
   }
-  if (o.plot) status = std::max(status, plot(out));
+  if (o.plot) status = std::max(status, plot(o.out));
   return status;
 }
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  try {
-    return runCompare(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "ddb-compare: " << e.what() << "\n";
-    return 2;
-  } catch (const ddb::InvalidArgument& e) {
-    std::cerr << "ddb-compare: " << e.what() << "\n";
-    return 2;
-  }
-}
+int main(int argc, char** argv) { return ddb::app::runMain(kApp, runCompare, argc, argv); }

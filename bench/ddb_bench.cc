@@ -1,12 +1,13 @@
 // One step (h = 0.1) of every registry method on the rigid body of Scenario A and on
-// the heavy top, named rigid_body/<method> and heavy_top/<method> (docs/file-formats.md), with
-// Boost.Odeint's runge_kutta4 on the same vector field as the peer
-// `rigid_body/odeint-rk4`. The counter allocs_per_step counts global operator new
+// the default heavy top (include/ddb/systems/paper_scenarios.h), named rigid_body/<method> and
+// heavy_top/<method> (docs/file-formats.md), with Boost.Odeint's runge_kutta4 on the same vector
+// field as the peer `rigid_body/odeint-rk4`. The counter allocs_per_step counts global operator new
 // calls per step. Compare methods by ratios of times within one run
 // (scripts/bench_ratios.py).
 #include <benchmark/benchmark.h>
 #include <ddb/integrators/method_registry.h>
 #include <ddb/systems/heavy_top.h>
+#include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>
 
 #include <atomic>
@@ -90,16 +91,12 @@ void BM_OdeintRk4(benchmark::State& state, std::shared_ptr<const LiePoissonSyste
 }  // namespace
 
 int main(int argc, char** argv) {
-  const Eigen::Vector3d inertia(1.0, 1.3, 0.5);
-  const auto body = makeRigidBody(inertia, 0.5);
-  const Eigen::Vector3d m0 = inertia.cwiseProduct(Eigen::Vector3d(0.0, 0.05, 1.0));
-  registerMethods<SO3>("rigid_body", body, m0);
-  benchmark::RegisterBenchmark("rigid_body/odeint-rk4", BM_OdeintRk4, body, m0);
-  using Vector6 = Eigen::Matrix<double, 6, 1>;
-  const auto top = makeHeavyTop(inertia, 1.0, Eigen::Vector3d(0, 0, 1), 0.5, Vector6::Ones());
-  registerMethods<SE3>(
-      "heavy_top", top,
-      (Vector6() << 0.0, 0.065, 0.5, 0.0, std::sin(0.3), std::cos(0.3)).finished());
+  const RigidBodyScenario& a = rigidBodyScenario("A");
+  const auto body = a.system();
+  registerMethods<SO3>("rigid_body", body, a.mu0());
+  benchmark::RegisterBenchmark("rigid_body/odeint-rk4", BM_OdeintRk4, body, a.mu0());
+  const HeavyTopSetup top;
+  registerMethods<SE3>("heavy_top", top.system(), top.mu0);
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

@@ -1,10 +1,15 @@
 // ddb-compare end to end on a short horizon: the files against the contract of
 // docs/file-formats.md (columns, row count, JSON keys, finite values), the final state
-// against the library called directly, and bad input (exit status 2, nothing written).
+// against the library called directly, bad input (exit status 2, a message naming the
+// flag, nothing written), --help, --version, "custom" scenarios, --every, FAILED runs,
+// I/O errors (exit status 1 naming the file) and constant memory on long runs.
 #include <ddb/integrators/method_registry.h>
+#include <ddb/systems/heavy_top.h>
 #include <ddb/systems/rigid_body.h>
 #include <gmock/gmock.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -17,12 +22,48 @@ namespace {
 
 namespace fs = std::filesystem;
 
-int runApp(const std::string& arguments) {
-  const std::string command =
-      std::string(DDB_COMPARE_PATH) + " --quiet " + arguments + " > /dev/null 2>&1";
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+struct AppResult {
+  int status = -1;      // exit status, -1 if killed
+  std::string output;   // stdout and stderr together
+  long max_rss_kb = 0;  // peak resident memory of the app alone
+};
+
+/// Runs the app with whitespace-separated arguments, without a shell, so that wait4()
+/// reports the app's own peak memory.
+AppResult run(const std::string& arguments) {
+  std::vector<std::string> words{DDB_COMPARE_PATH};
+  std::stringstream ss(arguments);
+  for (std::string word; ss >> word;) words.push_back(word);
+  std::vector<char*> argv;
+  for (auto& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  const fs::path log = fs::temp_directory_path() /
+                       ("ddb_compare_test_output_" + std::to_string(::getpid()) + ".txt");
+  const pid_t child = ::fork();
+  if (child == 0) {
+    std::FILE* out = std::fopen(log.c_str(), "w");
+    if (out == nullptr) ::_exit(127);
+    ::dup2(::fileno(out), STDOUT_FILENO);
+    ::dup2(::fileno(out), STDERR_FILENO);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  AppResult result;
+  int status = 0;
+  rusage usage{};
+  if (child > 0 && ::wait4(child, &status, 0, &usage) == child) {
+    result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.max_rss_kb = usage.ru_maxrss;
+  }
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  result.output = text.str();
+  fs::remove(log);
+  return result;
 }
+
+int runApp(const std::string& arguments) { return run("--quiet " + arguments).status; }
 
 fs::path freshFolder(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("ddb_compare_test_" + name);
@@ -149,16 +190,263 @@ TEST(DdbCompare, FailedSolveKeepsThePrefixAndExitsOne) {
 
 TEST(DdbCompare, BadInputExitsTwoAndWritesNothing) {
   const std::vector<std::string> bad{
-      "--system pendulum", "--scenario D",  "--method ddb-foo", "--h 0",
-      "--h -0.1",          "--h nan",       "--t-end 0",        "--t-end 1e12 --h 1e-3",
-      "--inertia 1,-1,2",  "--inertia 1,2", "--inertia 1,x,2",  "--omega0 0,0",
-      "--alpha nan"};
+      "--system pendulum", "--scenario D",     "--method ddb-foo", "--h 0",
+      "--h -0.1",          "--h nan",          "--t-end 0",        "--t-end 1e12 --h 1e-3",
+      "--inertia 1,-1,2",  "--inertia 1,2",    "--inertia 1,x,2",  "--omega0 0,0",
+      "--alpha nan",       "--every 0",        "--repeat 0",       "--sweep-h 0.1:0.01:3",
+      "--mass 1,2,3",      "--verbose --quiet"};
   for (const auto& arguments : bad) {
     const fs::path out = freshFolder("bad");
     EXPECT_EQ(runApp(arguments + " --out " + out.string()), 2) << arguments;
     EXPECT_TRUE(!fs::exists(out) || fs::is_empty(out)) << arguments;
   }
   EXPECT_EQ(runApp("--t-end 1 --out /proc/ddb-cannot-write"), 2);
+}
+
+/// The value text after `"key": ` in `json` (first occurrence after `from`).
+std::string jsonValue(const std::string& json, const std::string& key, size_t from = 0) {
+  const std::string marker = "\"" + key + "\": ";
+  const size_t at = json.find(marker, from);
+  if (at == std::string::npos) return "";
+  const size_t begin = at + marker.size();
+  if (json[begin] == '[') return json.substr(begin, json.find(']', begin) + 1 - begin);
+  return json.substr(begin, json.find_first_of(",\n", begin) - begin);
+}
+
+/// The object of method `name` in summary.json's "methods".
+std::string methodEntry(const std::string& summary, const std::string& name) {
+  const size_t begin = summary.find("\"" + name + "\": {");
+  if (begin == std::string::npos) return "";
+  return summary.substr(begin, summary.find('}', begin) - begin);
+}
+
+TEST(DdbCompare, VersionIsTheProjectVersion) {
+  const AppResult r = run("--version");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.output, std::string("ddb-compare ") + DDB_PROJECT_VERSION + "\n");
+}
+
+TEST(DdbCompare, HelpListsEveryMethodSystemScenarioAndDefault) {
+  const AppResult r = run("--help");
+  EXPECT_EQ(r.status, 0);
+  const auto hasLine = [&](const std::string& name) {
+    return std::regex_search(r.output, std::regex("\n  " + name + " +[A-Za-z(]"));
+  };
+  for (const auto& method : ddb::methodNames()) EXPECT_TRUE(hasLine(method)) << method;
+  for (const std::string system : {"rigid-body", "heavy-top", "kirchhoff"}) {
+    EXPECT_TRUE(hasLine(system)) << system;
+  }
+  for (const std::string scenario : {"A", "B", "C"}) EXPECT_TRUE(hasLine(scenario)) << scenario;
+  // Defaults of docs/file-formats.md and of the paper's scenarios (Section 5).
+  for (const std::string text :
+       {"--h TEXT=0.1", "--out TEXT=results", "--system TEXT=rigid-body", "--scenario TEXT=A",
+        "--every INT=1", "--repeat INT=5", "A 30", "B and C 250", "1,1.3,0.5", "C 1,1,0.5",
+        "0,0.05,1", "(default 0.5)", "mass 1,2,3", "mgl 1", "chi 0,0,1", "metric 1,1,1,1,1,1"}) {
+    EXPECT_THAT(r.output, ::testing::HasSubstr(text));
+  }
+}
+
+TEST(DdbCompare, UnknownNamesListTheValidOnes) {
+  const fs::path out = freshFolder("unknown");
+  AppResult r = run("--method ddb-cay,ddb-foo --out " + out.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, ::testing::HasSubstr("--method = ddb-foo"));
+  for (const auto& method : ddb::methodNames()) EXPECT_THAT(r.output, ::testing::HasSubstr(method));
+  r = run("--scenario D --out " + out.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, ::testing::HasSubstr("A, B, C"));
+  r = run("--system pendulum --out " + out.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, ::testing::HasSubstr("rigid-body, heavy-top, kirchhoff"));
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(DdbCompare, FlagsThatDoNotApplyAreBadInputNamingTheFlag) {
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"--mgl 2", "--mgl"},
+      {"--mass 1,2,3", "--mass"},
+      {"--chi 0,0,1", "--chi"},
+      {"--metric 1,1,1,1,1,1", "--metric"},
+      {"--mu0 1,2,3,4,5,6", "--mu0"},
+      {"--system heavy-top --scenario B", "--scenario"},
+      {"--system heavy-top --scenario A", "--scenario"},
+      {"--system heavy-top --omega0 0,0,1", "--omega0"},
+      {"--system heavy-top --mass 1,2,3", "--mass"},
+      {"--system kirchhoff --mgl 2", "--mgl"},
+      {"--system kirchhoff --omega0 0,0,1", "--omega0"}};
+  for (const auto& [arguments, flag] : cases) {
+    const fs::path out = freshFolder("inapplicable");
+    const AppResult r = run(arguments + " --t-end 0.2 --out " + out.string());
+    EXPECT_EQ(r.status, 2) << arguments;
+    EXPECT_THAT(r.output, ::testing::HasSubstr(flag + " = ")) << arguments;
+    EXPECT_THAT(r.output, ::testing::HasSubstr("does not apply")) << arguments;
+    EXPECT_FALSE(fs::exists(out)) << arguments;
+  }
+}
+
+TEST(DdbCompare, NonFiniteValuesInMessagesAreNanOrInf) {
+  const fs::path out = freshFolder("nonfinite");
+  for (const std::string value : {"inf", "nan", "-inf"}) {
+    const AppResult r = run("--h " + value + " --out " + out.string());
+    EXPECT_EQ(r.status, 2);
+    EXPECT_THAT(r.output, ::testing::HasSubstr("--h = " + value));
+    EXPECT_THAT(r.output, ::testing::Not(::testing::HasSubstr("null")));
+  }
+}
+
+TEST(DdbCompare, ParametersThatChangeTheScenarioAreRecordedAsCustom) {
+  const fs::path out = freshFolder("custom");
+  ASSERT_EQ(runApp("--scenario B --alpha 0.25 --t-end 0.2 --method ddb-cay --repeat 1 --out " +
+                   out.string()),
+            0);
+  std::string summary = readFile(out / "summary.json");
+  EXPECT_EQ(jsonValue(summary, "scenario"), "\"custom\"");
+  EXPECT_EQ(jsonValue(summary, "scenario_base"), "\"B\"");
+  EXPECT_EQ(jsonValue(summary, "alpha"), "0.25");
+  EXPECT_EQ(jsonValue(summary, "inertia"), "[1, 1.3, 0.5]");  // docs: scenario B's 𝕀
+  // The run used α = 0.25: the library called directly ends where the app ended.
+  const Eigen::Vector3d inertia(1.0, 1.3, 0.5);
+  auto body = ddb::makeRigidBody(inertia, 0.25);
+  auto ddb = ddb::makeMethod<ddb::SO3>("ddb-cay", body);
+  Eigen::Vector3d last;
+  ddb::integrate(*ddb, inertia.cwiseProduct(Eigen::Vector3d(0, 0.05, 1)), 0.0, 0.1, 2,
+                 [&](long, double, const Eigen::Vector3d& mu) { last = mu; });
+  std::string header;
+  const auto rows = readCsv(out / "ddb-cay.csv", header);
+  ASSERT_EQ(rows.size(), 3u);
+  for (int i = 0; i < 3; ++i) EXPECT_DOUBLE_EQ(rows.back()[1 + i], last(i));
+
+  // The scenario's own values given explicitly leave it as it is.
+  ASSERT_EQ(runApp("--scenario C --inertia 1,1,0.5 --alpha 0.5 --omega0 0,0.05,1 --t-end 0.2 "
+                   "--method ddb-cay --repeat 1 --out " +
+                   out.string()),
+            0);
+  summary = readFile(out / "summary.json");
+  EXPECT_EQ(jsonValue(summary, "scenario"), "\"C\"");
+  EXPECT_EQ(jsonValue(summary, "scenario_base"), "");
+
+  ASSERT_EQ(runApp("--system heavy-top --mgl 2 --t-end 0.2 --method ddb-cay --repeat 1 --out " +
+                   out.string()),
+            0);
+  summary = readFile(out / "summary.json");
+  EXPECT_EQ(jsonValue(summary, "scenario"), "\"custom\"");
+  EXPECT_EQ(jsonValue(summary, "mgl"), "2");
+  for (const std::string key : {"inertia", "alpha", "metric", "mu0", "chi"}) {
+    EXPECT_NE(jsonValue(summary, key), "") << key;
+  }
+}
+
+TEST(DdbCompare, EveryWritesEveryKthStateAndTheLast) {
+  // t = 0, 0.1, ..., 1 (10 steps): every 3rd state is t = 0, 0.3, 0.6, 0.9, and then the
+  // last, t = 1; every 5th is t = 0, 0.5, 1 (the last is a multiple).
+  for (const auto& [every, times] : std::vector<std::pair<int, std::vector<double>>>{
+           {3, {0.0, 0.3, 0.6, 0.9, 1.0}}, {5, {0.0, 0.5, 1.0}}, {20, {0.0, 1.0}}}) {
+    const fs::path out = freshFolder("every");
+    ASSERT_EQ(runApp("--t-end 1 --method ddb-cay,rk4 --repeat 1 --every " + std::to_string(every) +
+                     " --out " + out.string()),
+              0);
+    for (const std::string method : {"ddb-cay", "rk4"}) {
+      std::string header;
+      const auto rows = readCsv(out / (method + ".csv"), header);
+      ASSERT_EQ(rows.size(), times.size()) << method << " every " << every;
+      for (size_t i = 0; i < rows.size(); ++i) EXPECT_NEAR(rows[i][0], times[i], 1e-12);
+    }
+    EXPECT_EQ(jsonValue(readFile(out / "summary.json"), "steps"), "10");
+  }
+}
+
+TEST(DdbCompare, TEndNotAMultipleOfHIsReportedAndTheReachedOneRecorded) {
+  const fs::path out = freshFolder("t_end");
+  const AppResult r = run("--t-end 1 --h 0.3 --method ddb-cay --repeat 1 --out " + out.string());
+  ASSERT_EQ(r.status, 0);
+  EXPECT_THAT(r.output, ::testing::HasSubstr("not a multiple"));
+  const std::string summary = readFile(out / "summary.json");
+  EXPECT_NEAR(std::stod(jsonValue(summary, "t_end")), 0.9, 1e-12);  // 3 steps of 0.3
+  EXPECT_EQ(jsonValue(summary, "t_end_requested"), "1");
+  std::string header;
+  const auto rows = readCsv(out / "ddb-cay.csv", header);
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_NEAR(rows.back()[0], 0.9, 1e-12);
+  // A multiple says nothing.
+  EXPECT_THAT(run("--t-end 1 --h 0.25 --method ddb-cay --repeat 1 --out " + out.string()).output,
+              ::testing::Not(::testing::HasSubstr("not a multiple")));
+}
+
+TEST(DdbCompare, FailedMethodsAreMarkedFailedEverywhere) {
+  // Independent expectation: the step at which the library's own integrate() fails.
+  const Eigen::Vector3d inertia(1.0, 1.3, 0.5);
+  auto exact = ddb::makeMethod<ddb::SO3>("ddb-exp-exact", ddb::makeRigidBody(inertia, 0.5));
+  long failed_step = -1;
+  try {
+    ddb::integrate(*exact, inertia.cwiseProduct(Eigen::Vector3d(0, 0.05, 1)), 0.0, 10.0, 40,
+                   [](long, double, const Eigen::Vector3d&) {});
+  } catch (const ddb::SolveFailure& failure) {
+    failed_step = failure.step();
+  }
+  ASSERT_GE(failed_step, 0);
+  const std::string failed = "FAILED at step " + std::to_string(failed_step);
+
+  const fs::path out = freshFolder("failed");
+  const AppResult r =
+      run("--method ddb-exp-exact,ddb-cay --h 10 --t-end 400 --repeat 1 --out " + out.string());
+  ASSERT_EQ(r.status, 1);
+  EXPECT_THAT(r.output, ::testing::HasSubstr("ddb-exp-exact"));
+  EXPECT_THAT(r.output, ::testing::HasSubstr(failed));
+  const std::string table = readFile(out / "runtime_table.md");
+  EXPECT_TRUE(std::regex_search(table, std::regex("\\| ddb-exp-exact \\| " + failed + " \\|")))
+      << table;
+  EXPECT_TRUE(std::regex_search(table, std::regex("\\| ddb-cay \\| [0-9.e+-]+ \\|"))) << table;
+  const std::string summary = readFile(out / "summary.json");
+  const std::string entry = methodEntry(summary, "ddb-exp-exact");
+  EXPECT_EQ(jsonValue(entry, "status"), "\"FAILED\"");
+  EXPECT_EQ(jsonValue(entry, "failed_step"), std::to_string(failed_step));
+  EXPECT_EQ(jsonValue(entry, "steps"), std::to_string(failed_step));
+  EXPECT_EQ(jsonValue(entry, "casimir_drift"), "null");
+  EXPECT_EQ(jsonValue(entry, "runtime_s"), "null");
+  EXPECT_EQ(jsonValue(summary, "ddb-exp-exact", summary.find("\"runtime_table\"")),
+            "\"" + failed + "\"");
+  EXPECT_EQ(jsonValue(methodEntry(summary, "ddb-cay"), "status"), "\"ok\"");
+}
+
+TEST(DdbCompare, StepErrorsThatAreNotSolveFailuresAreRunFailuresNotBadInput) {
+  // dexp⁻¹ of the heavy top diverges for |hξ| > 2π: the rk4 file is written, so the exit
+  // status must be 1 (a run failed), not 2 (bad input, nothing written).
+  const fs::path out = freshFolder("dexp");
+  const AppResult r =
+      run("--system heavy-top --method rk4,ddb-exp-exact --h 2 --repeat 1 --out " + out.string());
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_TRUE(fs::exists(out / "rk4.csv"));
+  EXPECT_EQ(jsonValue(methodEntry(readFile(out / "summary.json"), "ddb-exp-exact"), "status"),
+            "\"FAILED\"");
+}
+
+TEST(DdbCompare, UnwritableFileIsExitOneNamingItAndLeavesNoTemporary) {
+  const fs::path out = freshFolder("io");
+  fs::create_directories(out / "rk4.csv");  // a folder where the file should go
+  const AppResult r = run("--t-end 0.2 --method rk4 --repeat 1 --out " + out.string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_THAT(r.output, ::testing::HasSubstr((out / "rk4.csv").string()));
+  for (const auto& entry : fs::directory_iterator(out)) {
+    EXPECT_EQ(entry.path().filename().string(), "rk4.csv") << "left behind: " << entry.path();
+  }
+}
+
+TEST(DdbCompare, MemoryDoesNotGrowWithTheNumberOfSteps) {
+  // 2e4 and 2e6 steps with --every 1000: the same peak memory (a stored trajectory of
+  // 2e6 states would add 2e6 * 24 bytes = 48 MB).
+  const fs::path out = freshFolder("memory");
+  const AppResult short_run =
+      run("--quiet --method rk4 --h 1e-3 --t-end 20 --every 1000 --repeat 1 --out " + out.string());
+  const AppResult long_run =
+      run("--quiet --method rk4 --h 1e-3 --t-end 2000 --every 1000 "
+          "--repeat 1 --out " +
+          out.string());
+  ASSERT_EQ(short_run.status, 0);
+  ASSERT_EQ(long_run.status, 0);
+  std::string header;
+  EXPECT_EQ(readCsv(out / "rk4.csv", header).size(), 2001u);
+  EXPECT_LT(long_run.max_rss_kb, short_run.max_rss_kb + 4096)
+      << short_run.max_rss_kb << " kB vs " << long_run.max_rss_kb << " kB";
 }
 
 }  // namespace

@@ -1,7 +1,10 @@
 // Integrators on the rigid body of Scenario A (docs/conventions.md §3): orders fitted against
 // the reference solver, exact Casimir preservation of DDB, agreement of its two
 // forms, the reference against itself, and a failed solve keeping the prefix.
+#include <ddb/integrators/method_descriptions.h>
 #include <ddb/integrators/method_registry.h>
+#include <ddb/integrators/run.h>
+#include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>
 #include <gmock/gmock.h>
 
@@ -11,9 +14,10 @@
 namespace ddb::test {
 namespace {
 
-const Eigen::Vector3d kInertia(1.0, 1.3, 0.5);
-const Eigen::Vector3d kOmega0(0.0, 0.05, 1.0);
-const Eigen::Vector3d kM0 = kInertia.cwiseProduct(kOmega0);
+const RigidBodyScenario& kA = rigidBodyScenario("A");
+const Eigen::Vector3d kInertia = kA.inertia;
+const Eigen::Vector3d kOmega0 = kA.omega0;
+const Eigen::Vector3d kM0 = kA.mu0();
 
 Eigen::Vector3d finalState(OneStepMethod<SO3>& method, double h, double t_end) {
   Eigen::Vector3d last;
@@ -186,6 +190,85 @@ TEST(Integrate, RejectsBadInputNamingIt) {
               ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("h = -0.1")));
   EXPECT_THAT([&] { integrate(rk4, kM0, 0.0, INFINITY, 1, ignore); },
               ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("h = inf")));
+}
+
+TEST(MethodDescriptions, OneLinePerRegistryMethodInItsOrder) {
+  ASSERT_EQ(methodDescriptions().size(), methodNames().size());
+  for (size_t i = 0; i < methodNames().size(); ++i) {
+    EXPECT_EQ(methodDescriptions()[i].first, methodNames()[i]);
+    EXPECT_FALSE(methodDescriptions()[i].second.empty());
+    EXPECT_EQ(methodDescriptions()[i].second.find('\n'), std::string::npos);
+  }
+}
+
+TEST(RunMethod, SinkSeesEveryKthStateAndTheLastWithDriftOverAllStates) {
+  auto body = makeRigidBody(kInertia, 0.5);
+  auto rk4 = ddb::makeMethod<SO3>("rk4", body);
+  // Independent expectation: integrate() over every state, the drift computed here.
+  Trajectory<SO3> all;
+  integrate(*rk4, kM0, 0.0, 0.3, 10, all.record());
+  double drift = 0.0;
+  for (const auto& mu : all.states) drift = std::max(drift, std::abs(mu.norm() / kM0.norm() - 1));
+
+  RunOptions options;
+  options.every = 4;
+  std::vector<long> seen;
+  const RunResult<SO3> run = runMethod(*rk4, *body, kM0, 0.3, 10, options,
+                                       [&](long k, double t, const Eigen::Vector3d& mu) {
+                                         seen.push_back(k);
+                                         EXPECT_DOUBLE_EQ(t, all.times[k]);
+                                         EXPECT_EQ(mu, all.states[k]);
+                                       });
+  EXPECT_THAT(seen, ::testing::ElementsAre(0, 4, 8, 10));
+  EXPECT_TRUE(run.ok());
+  EXPECT_EQ(run.steps, 10);
+  EXPECT_EQ(run.final, all.states.back());
+  EXPECT_NEAR(run.casimir_drift, drift, 1e-16);
+  EXPECT_GT(run.casimir_drift, 0.0);  // rk4 does not keep |M|
+}
+
+TEST(RunMethod, FailureIsRecordedWithItsStepAndThePrefixReachesTheSink) {
+  // ddb-exp-exact cannot take h = 10 for long (Ddb.TooLargeStepThrowsTypedErrorAndKeepsPrefix);
+  // integrate() says at which step, runMethod() must report the same without throwing.
+  auto body = makeRigidBody(kInertia, 0.5);
+  auto method = ddb::makeMethod<SO3>("ddb-exp-exact", body);
+  long expected_step = -1;
+  try {
+    integrate(*method, kM0, 0.0, 10.0, 40, [](long, double, const Eigen::Vector3d&) {});
+  } catch (const SolveFailure& failure) {
+    expected_step = failure.step();
+  }
+  ASSERT_GT(expected_step, 5);
+  RunOptions options;
+  options.every = 5;
+  std::vector<long> seen;
+  const RunResult<SO3> run =
+      runMethod(*method, *body, kM0, 10.0, 40, options,
+                [&](long k, double, const Eigen::Vector3d&) { seen.push_back(k); });
+  std::vector<long> expected_seen;
+  for (long k = 0; k <= expected_step; k += 5) expected_seen.push_back(k);
+  if (expected_seen.back() != expected_step) expected_seen.push_back(expected_step);
+  EXPECT_FALSE(run.ok());
+  EXPECT_EQ(run.failed_step, expected_step);
+  EXPECT_EQ(run.steps, expected_step);
+  EXPECT_DOUBLE_EQ(run.t_final, 10.0 * expected_step);
+  EXPECT_EQ(seen, expected_seen);
+  EXPECT_THAT(run.failure, ::testing::HasSubstr("step " + std::to_string(expected_step)));
+}
+
+TEST(RunMethod, InvalidArgumentInsideAStepIsAFailureNotAnException) {
+  // |h ξ| beyond 2π: the dexp⁻¹ series of the heavy top's exp method cannot converge.
+  const HeavyTopSetup top;
+  auto system = top.system();
+  auto method = ddb::makeMethod<SE3>("ddb-exp-exact", system);
+  RunResult<SE3> run;
+  ASSERT_NO_THROW(run = runMethod(*method, *system, top.mu0, 2.0, 15));
+  EXPECT_FALSE(run.ok());
+  EXPECT_GE(run.failed_step, 0);
+  EXPECT_EQ(run.failed_step, run.steps);
+  EXPECT_THAT(run.failure, ::testing::HasSubstr("step " + std::to_string(run.failed_step)));
+  // Bad arguments to runMethod itself still throw.
+  EXPECT_THROW(runMethod(*method, *system, top.mu0, -1.0, 15), InvalidArgument);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <ddb/core/autodiff.h>
 #include <ddb/core/legendre_hamiltonian.h>
 #include <ddb/integrators/method_registry.h>
+#include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>
 #include <gmock/gmock.h>
 
@@ -12,7 +13,7 @@
 namespace ddb::test {
 namespace {
 
-const Eigen::Vector3d kInertia(1.0, 1.3, 0.5);
+const Eigen::Vector3d kInertia = rigidBodyScenario("A").inertia;
 
 // A convex, non-quadratic Lagrangian: l(ξ) = ½ ξ·𝕀ξ + ¼ |ξ|⁴ + log cosh(ξ₁).
 class QuarticLagrangian : public AutoDiffLagrangian<QuarticLagrangian, SO3> {
@@ -47,7 +48,7 @@ TEST(LegendreHamiltonian, ReproducesTheRigidBodyHamiltonian) {
     EXPECT_LT((from_l->vectorField(mu) - body->vectorField(mu)).norm(), 1e-14);
   }
   // And the integrators run on it unchanged: same DDB trajectory.
-  const Eigen::Vector3d m0 = kInertia.cwiseProduct(Eigen::Vector3d(0, 0.05, 1));
+  const Eigen::Vector3d m0 = rigidBodyScenario("A").mu0();
   Eigen::Vector3d a, b;
   auto ddb_a = makeMethod<SO3>("ddb-cay", from_l);
   auto ddb_b = makeMethod<SO3>("ddb-cay", body);

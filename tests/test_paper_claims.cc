@@ -3,6 +3,7 @@
 // B: DDB ends closer to the limit point and to the reference than RK4;
 // C: DDB ends on the sphere |M| = |M0| to round-off and converges to the great circle.
 #include <ddb/integrators/method_registry.h>
+#include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>
 
 #include "test_support.h"
@@ -10,15 +11,10 @@
 namespace ddb::test {
 namespace {
 
-const Eigen::Vector3d kOmega0(0.0, 0.05, 1.0);
-
-struct Scenario {
-  Eigen::Vector3d inertia;
-  double t_end;
-};
-const Scenario kA{Eigen::Vector3d(1.0, 1.3, 0.5), 30.0};
-const Scenario kB{Eigen::Vector3d(1.0, 1.3, 0.5), 250.0};
-const Scenario kC{Eigen::Vector3d(1.0, 1.0, 0.5), 250.0};
+using Scenario = RigidBodyScenario;
+const Scenario& kA = rigidBodyScenario("A");
+const Scenario& kB = rigidBodyScenario("B");
+const Scenario& kC = rigidBodyScenario("C");
 
 struct Outcome {
   Eigen::Vector3d final;
@@ -26,9 +22,8 @@ struct Outcome {
 };
 
 Outcome run(const std::string& method, const Scenario& s) {
-  auto body = makeRigidBody(s.inertia, 0.5);
-  auto integrator = makeMethod<SO3>(method, body);
-  const Eigen::Vector3d m0 = s.inertia.cwiseProduct(kOmega0);
+  auto integrator = makeMethod<SO3>(method, s.system());
+  const Eigen::Vector3d m0 = s.mu0();
   Outcome out;
   integrate(*integrator, m0, 0.0, 0.1, std::lround(s.t_end / 0.1),
             [&](long, double, const Eigen::Vector3d& mu) {
@@ -48,7 +43,7 @@ TEST(PaperClaims, ScenarioADdbKeepsTheCasimirOthersDrift) {
 }
 
 TEST(PaperClaims, ScenarioBDdbEndsCloserThanRk4) {
-  const Eigen::Vector3d m0 = kB.inertia.cwiseProduct(kOmega0);
+  const Eigen::Vector3d m0 = kB.mu0();
   // Minimum energy on the sphere: ±|M0| e2 (largest moment of inertia).
   const auto toLimit = [&](const Eigen::Vector3d& m) {
     const Eigen::Vector3d e = m0.norm() * Eigen::Vector3d::UnitY();
@@ -64,7 +59,7 @@ TEST(PaperClaims, ScenarioBDdbEndsCloserThanRk4) {
 }
 
 TEST(PaperClaims, ScenarioCDdbEndsOnTheGreatCircle) {
-  const Eigen::Vector3d m0 = kC.inertia.cwiseProduct(kOmega0);
+  const Eigen::Vector3d m0 = kC.mu0();
   const Eigen::Vector3d reference = run("reference", kC).final;
   for (const std::string m : {"ddb-cay", "ddb-exp"}) {
     const Eigen::Vector3d M = run(m, kC).final;

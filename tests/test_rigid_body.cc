@@ -1,5 +1,6 @@
 // The rigid body against the component equations of the paper's Examples 3.1/3.5 and
 // the energy/Casimir rates of Proposition 3.3, by central differences along the flow.
+#include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>
 #include <gmock/gmock.h>
 
@@ -8,7 +9,7 @@
 namespace ddb::test {
 namespace {
 
-const Eigen::Vector3d kInertia(1.0, 1.3, 0.5);
+const Eigen::Vector3d kInertia = rigidBodyScenario("A").inertia;
 
 // Components of d(𝕀Ω)/dt = 𝕀Ω × (Ω + φ(Ω)) (paper, Example 3.1 corrected;
 // eq. (3.6)) with the paper's φ components, written out by hand.

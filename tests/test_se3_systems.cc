@@ -4,6 +4,7 @@
 #include <ddb/integrators/method_registry.h>
 #include <ddb/systems/heavy_top.h>
 #include <ddb/systems/kirchhoff.h>
+#include <ddb/systems/paper_scenarios.h>
 #include <gmock/gmock.h>
 
 #include "order_fit.h"
@@ -13,13 +14,14 @@ namespace ddb::test {
 namespace {
 
 using Vector6 = Eigen::Matrix<double, 6, 1>;
-const Eigen::Vector3d kInertia(1.0, 1.3, 0.5);
-const Eigen::Vector3d kMass(1.0, 2.0, 3.0);
-const Eigen::Vector3d kChi(0.0, 0.0, 1.0);
-const double kMgl = 1.0;
-const Vector6 kUnitMetric = Vector6::Ones();
-const Vector6 kTopMu0 =
-    (Vector6() << 0.0, 0.065, 0.5, 0.0, std::sin(0.3), std::cos(0.3)).finished();
+const HeavyTopSetup kTop;
+const KirchhoffSetup kKirchhoff;
+const Eigen::Vector3d kInertia = kTop.inertia;
+const Eigen::Vector3d kMass = kKirchhoff.mass;
+const Eigen::Vector3d kChi = kTop.chi;
+const double kMgl = kTop.mgl;
+const Vector6 kUnitMetric = kTop.metric;
+const Vector6 kTopMu0 = kTop.mu0;
 
 TEST(HeavyTop, VectorFieldIsTheHeavyTopAndDissipatesAtTheDoubleBracketRate) {
   Sampler s(21);
@@ -102,7 +104,7 @@ TEST(HeavyTop, LagrangianFormIsRejectedWithAReason) {
 
 TEST(Kirchhoff, LagrangianAndHamiltonianDdbAgree) {
   const auto body = makeKirchhoffBody(kInertia, kMass, 0.5, kUnitMetric);
-  const Vector6 mu0 = (Vector6() << 0.0, 0.065, 0.5, 1.0, 0.0, 0.2).finished();
+  const Vector6 mu0 = kKirchhoff.mu0;
   Ddb<Cayley<SE3>> lagrangian(body, Cayley<SE3>(), LegendreForm::kLagrangian);
   Ddb<Cayley<SE3>> hamiltonian(body, Cayley<SE3>(), LegendreForm::kHamiltonian);
   EXPECT_LT(

@@ -2,6 +2,7 @@
 // orders fitted against the reference (docs/conventions.md §2 facts), symmetry Φ_{-h}∘Φ_h = id,
 // and exact Casimir preservation by every stage.
 #include <ddb/integrators/method_registry.h>
+#include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>
 #include <gmock/gmock.h>
 
@@ -11,8 +12,8 @@
 namespace ddb::test {
 namespace {
 
-const Eigen::Vector3d kInertia(1.0, 1.3, 0.5);
-const Eigen::Vector3d kM0 = kInertia.cwiseProduct(Eigen::Vector3d(0.0, 0.05, 1.0));
+const Eigen::Vector3d kInertia = rigidBodyScenario("A").inertia;
+const Eigen::Vector3d kM0 = rigidBodyScenario("A").mu0();
 
 Eigen::Vector3d finalState(OneStepMethod<SO3>& method, double h, double t_end) {
   Eigen::Vector3d last;

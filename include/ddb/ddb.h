@@ -16,11 +16,14 @@
 #include <ddb/groups/so3.h>
 #include <ddb/integrators/composition.h>
 #include <ddb/integrators/ddb.h>
+#include <ddb/integrators/method_descriptions.h>
 #include <ddb/integrators/method_registry.h>
 #include <ddb/integrators/one_step_method.h>
 #include <ddb/integrators/reference.h>
+#include <ddb/integrators/run.h>
 #include <ddb/integrators/runge_kutta.h>
 #include <ddb/integrators/symmetric_ddb.h>
 #include <ddb/systems/heavy_top.h>
 #include <ddb/systems/kirchhoff.h>
+#include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>

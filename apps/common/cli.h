@@ -1,0 +1,56 @@
+// Command-line helpers shared by the apps: parsing numbers and vectors with messages
+// that name the flag and its value, choices that list the valid names, flags that do
+// not apply, --version, and CLI11's own errors turned into usage errors (exit 2;
+// docs/file-formats.md).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ddb::app {
+
+/// Throws UsageError("<flag> = <value>: <why>").
+[[noreturn]] void usageError(const std::string& flag, const std::string& value,
+                             const std::string& why);
+
+/// "a,b,,c" -> {"a", "b", "", "c"}; an empty text gives no items.
+std::vector<std::string> split(const std::string& text, char separator = ',');
+
+/// One finite number `item` taken from the value `text` of `flag`.
+double parseNumber(const std::string& flag, const std::string& text, const std::string& item);
+
+/// Exactly `count` comma-separated finite numbers.
+std::vector<double> parseNumbers(const std::string& flag, const std::string& text, int count);
+
+template <int N>
+Eigen::Matrix<double, N, 1> parseVector(const std::string& flag, const std::string& text) {
+  const std::vector<double> values = parseNumbers(flag, text, N);
+  return Eigen::Map<const Eigen::Matrix<double, N, 1>>(values.data());
+}
+
+/// Throws a UsageError listing every valid name if `value` is not one of `names`.
+void requireChoice(const std::string& flag, const std::string& value,
+                   const std::vector<std::string>& names);
+
+/// "  name  description" lines, names padded to one column, for --help.
+std::string describeChoices(const std::vector<std::pair<std::string, std::string>>& choices);
+
+/// Throws a UsageError naming `flag` if it was given although it does not apply to
+/// `context` (a flag that would be silently ignored is bad input).
+void rejectIfGiven(const CLI::App& cli, const std::string& flag, const std::string& context);
+
+/// The project version from CMake ("0.2.0").
+std::string projectVersion();
+
+/// Adds --version, printing "<app> <project version from CMake>".
+void addVersionFlag(CLI::App& cli, const std::string& app);
+
+/// Parses the command line: std::nullopt to go on, or the exit status after --help or
+/// --version was printed. Any other CLI11 error becomes a UsageError.
+std::optional<int> parseCommandLine(CLI::App& cli, int argc, char** argv);
+
+}  // namespace ddb::app
