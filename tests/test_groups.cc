@@ -26,7 +26,7 @@ class GroupTest : public ::testing::Test {
   }
 };
 
-TYPED_TEST_SUITE(GroupTest, AllGroups::Groups, GroupNames);
+TYPED_TEST_SUITE(GroupTest, AllGroups::Groups);
 
 TYPED_TEST(GroupTest, ExpMatchesEigenMatrixExponential) {
   using G = typename TestFixture::G;

@@ -42,7 +42,7 @@ struct Concat<::testing::Types<As...>, ::testing::Types<Bs...>> {
   using type = ::testing::Types<As..., Bs...>;
 };
 using AllRetractions = Concat<AllGroups::With<Cayley>, AllGroups::With<Exponential>>::type;
-TYPED_TEST_SUITE(RetractionTest, AllRetractions, GroupNames);
+TYPED_TEST_SUITE(RetractionTest, AllRetractions);
 
 TYPED_TEST(RetractionTest, IdentityAndInverseProperty) {
   using G = typename TestFixture::G;

@@ -13,7 +13,6 @@
 
 #include <Eigen/Core>
 #include <algorithm>
-#include <cctype>
 #include <numeric>
 #include <random>
 #include <string>
@@ -43,18 +42,6 @@ struct AllGroups {
   using Groups = GroupsWith<Cayley>;
   template <template <class> class R>
   using With = GroupsWith<R>;
-};
-
-/// Readable typed-test names: "SO3-cay", "SUN4-cay", "SE3-exp".
-struct GroupNames {
-  template <class T>
-  static std::string GetName(int) {
-    std::string name = T::Group::kName;
-    name.erase(std::remove_if(name.begin(), name.end(), [](char c) { return !std::isalnum(c); }),
-               name.end());
-    if (T::kN > 0) name += std::to_string(T::kN);
-    return name + "-" + T::Retraction::kName;
-  }
 };
 
 /// Deterministic random vectors with entries in [-1, 1].
