@@ -53,11 +53,14 @@ class Composition : public OneStepMethod<G> {
 
   Dual step(const Dual& mu, double t, double h) override {
     Dual state = mu;
+    advance(state, t, h);
+    return state;
+  }
+  void advance(Dual& mu, double t, double h) override {
     for (double gamma : scheme_.coefficients) {
-      state = base_->step(state, t, gamma * h);
+      base_->advance(mu, t, gamma * h);
       t += gamma * h;
     }
-    return state;
   }
 
  private:

@@ -5,11 +5,14 @@
 // orbit of M_0 exactly; first order for α ≠ 0, second order for α = 0 (docs/conventions.md §2).
 #pragma once
 
+#include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/integrators/legendre_method.h>
+#include <ddb/integrators/matrix_cayley_transport.h>
 
 #include <memory>
 #include <string>
+#include <type_traits>
 
 namespace ddb {
 
@@ -21,18 +24,41 @@ class Ddb : public LegendreMethod<R> {
   using typename LegendreMethod<R>::Algebra;
 
   Ddb(std::shared_ptr<const LiePoissonSystem<G>> system, R retraction = R(),
-      LegendreForm form = LegendreForm::kLagrangian, SolverOptions options = {})
+      LegendreForm form = LegendreForm::kLagrangian,
+      SolverOptions options = defaultLegendreOptions<G>())
       : LegendreMethod<R>(std::move(system), std::move(retraction), form, options) {}
 
   std::string name() const override { return this->nameWith("ddb-"); }
 
   Dual step(const Dual& mu, double t, double h) override {
-    Dual p;
-    const Algebra xi = this->legendre_.solve(mu, t, h, p);
-    const Algebra phi = this->system_->dissipation(xi, p);
-    const Algebra hxi = h * xi, hphi = h * phi;
-    return this->retraction_.transport(hxi, hphi, mu);
+    if constexpr (isDynamicGroup<G>) {
+      Dual next = mu;
+      advance(next, t, h);
+      return next;
+    } else {
+      Dual p;
+      const Algebra xi = this->legendre_.solve(mu, t, h, p);
+      const Algebra phi = this->system_->dissipation(xi, p);
+      const Algebra hxi = h * xi, hphi = h * phi;
+      return this->retraction_.transport(hxi, hphi, mu);
+    }
   }
+
+  /// Matrix groups: the same step in place, through the solver's solution and the
+  /// preallocated Cayley transport (no allocation once the size is known).
+  void advance(Dual& mu, double t, double h) override {
+    if constexpr (isDynamicGroup<G>) {
+      this->legendre_.solveInPlace(FixedMomentum<G>{mu}, mu, t, h);
+      transport_.apply(this->system_->metric(), this->legendre_.solution(),
+                       this->legendre_.halfStep(), mu);
+    } else {
+      mu = step(mu, t, h);
+    }
+  }
+
+ private:
+  struct NoTransport {};
+  std::conditional_t<isDynamicGroup<G>, MatrixCayleyTransport<G>, NoTransport> transport_;
 };
 
 }  // namespace ddb

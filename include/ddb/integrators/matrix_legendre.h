@@ -81,6 +81,20 @@ class MatrixLegendreSolver {
   /// Solves (I + hξ(p)/2) p (I − hξ(p)/2) = target(ξ, p); returns ξ and sets p.
   template <class Target>
   Algebra solve(const Target& target, const Dual& near, double t, double h, Dual& p) {
+    solveInPlace(target, near, t, h);
+    p = p_;
+    return xi_;
+  }
+
+  /// DDB's equation: target = the momentum M_k.
+  Algebra solve(const Dual& momentum, double t, double h, Dual& p) {
+    return solve(FixedMomentum<G>{momentum}, momentum, t, h, p);
+  }
+
+  /// Solves without copying out: the solution is solution(), ξ = velocity() and
+  /// a = hξ/2 = halfStep(), valid until the next solve.
+  template <class Target>
+  void solveInPlace(const Target& target, const Dual& near, double t, double h) {
     constexpr bool kFixed = std::is_same_v<Target, FixedMomentum<G>>;
     allocate(near);
     stats_ = MatrixLegendreStats{};
@@ -142,16 +156,13 @@ class MatrixLegendreSolver {
                          -1, t, h, stats_.residual, tolerance);
     }
     updateVelocity(h);
-    p = p_;
     correction_ = p_ - near;
     has_guess_ = true;
-    return xi_;
   }
 
-  /// DDB's equation: target = the momentum M_k.
-  Algebra solve(const Dual& momentum, double t, double h, Dual& p) {
-    return solve(FixedMomentum<G>{momentum}, momentum, t, h, p);
-  }
+  const Dual& solution() const { return p_; }
+  const Algebra& velocity() const { return xi_; }
+  const Algebra& halfStep() const { return a_; }
 
  private:
   void allocate(const Dual& like) {

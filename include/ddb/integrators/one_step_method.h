@@ -23,6 +23,9 @@ class OneStepMethod {
   virtual void reset() {}
   /// μ(t + h) from μ(t). Throws SolveFailure (step index -1) if an implicit solve fails.
   virtual Dual step(const Dual& mu, double t, double h) = 0;
+  /// μ ← μ(t + h) in place. Matrix-group methods override it so that a step does not
+  /// allocate (an N×N state returned by value would); integrate() calls this.
+  virtual void advance(Dual& mu, double t, double h) { mu = step(mu, t, h); }
 };
 
 /// Advances `steps` steps of size h from (t0, mu0); observer(k, t_k, mu_k) sees k = 0..steps.
@@ -40,7 +43,7 @@ void integrate(OneStepMethod<G>& method, const typename G::template Dual<double>
   for (long k = 0; k < steps; ++k) {
     const double t = t0 + static_cast<double>(k) * h;
     try {
-      mu = method.step(mu, t, h);
+      method.advance(mu, t, h);
     } catch (const SolveFailure& failure) {
       throw failure.atStep(k, t, h);
     }

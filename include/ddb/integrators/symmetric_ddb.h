@@ -49,7 +49,8 @@ class SymmetricDdb : public LegendreMethod<R> {
   using typename LegendreMethod<R>::Algebra;
 
   SymmetricDdb(std::shared_ptr<const LiePoissonSystem<G>> system, R retraction = R(),
-               LegendreForm form = LegendreForm::kLagrangian, SolverOptions options = {})
+               LegendreForm form = LegendreForm::kLagrangian,
+               SolverOptions options = defaultLegendreOptions<G>())
       : LegendreMethod<R>(std::move(system), std::move(retraction), form, options) {}
 
   std::string name() const override { return this->nameWith("sddb-"); }
@@ -76,7 +77,7 @@ class PaperSymmetricDdb : public LegendreMethod<R> {
 
   PaperSymmetricDdb(std::shared_ptr<const LiePoissonSystem<G>> system, R retraction = R(),
                     Force force = Force::kMidpoint, ReadOut read_out = ReadOut::kAsWritten,
-                    SolverOptions options = {})
+                    SolverOptions options = defaultLegendreOptions<G>())
       : LegendreMethod<R>(std::move(system), std::move(retraction), LegendreForm::kLagrangian,
                           options),
         force_(force),

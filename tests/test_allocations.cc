@@ -1,0 +1,69 @@
+// A DDB Cayley step on a matrix group allocates nothing once its workspaces exist
+// (docs/conventions.md §4): every malloc is counted in this binary only.
+#include <ddb/integrators/method_registry.h>
+#include <ddb/systems/manakov_body.h>
+#include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_initial_conditions.h>
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <string>
+
+namespace {
+std::atomic<long> allocations{0};
+}  // namespace
+
+// Eigen takes a dynamic matrix's storage from malloc, not operator new (which also ends
+// in malloc), so malloc itself is counted, through glibc's own entry point.
+extern "C" void* __libc_malloc(std::size_t size);
+extern "C" void* malloc(std::size_t size) {
+  ++allocations;
+  return __libc_malloc(size);
+}
+
+namespace ddb::test {
+namespace {
+
+template <class G>
+long allocationsPerStep(std::shared_ptr<const LiePoissonSystem<G>> system,
+                        typename G::template Dual<double> mu, double h,
+                        const std::string& name = "ddb-cay") {
+  auto method = makeMethod<G>(name, system);
+  method->advance(mu, 0.0, h);  // first step: workspaces sized
+  method->advance(mu, h, h);    // warm start in place
+  const long before = allocations;
+  for (int k = 2; k < 22; ++k) method->advance(mu, k * h, h);
+  return (allocations - before) / 20;
+}
+
+TEST(Allocations, DdbCayleyOnSuNAllocatesNothingPerStep) {
+  for (double alpha : {0.0, 0.5}) {
+    EXPECT_EQ(allocationsPerStep<SUN>(makeZeitlinFluid(16, alpha), randomVorticity(16, 1), 0.01), 0)
+        << alpha;
+  }
+}
+
+TEST(Allocations, DdbCayleyOnSoNAllocatesNothingPerStep) {
+  Eigen::VectorXd J(5);
+  J << 0.3, 0.5, 0.8, 1.1, 1.7;
+  Eigen::MatrixXd M = Eigen::MatrixXd::Random(5, 5);
+  M = SON::vee(M);
+  EXPECT_EQ(allocationsPerStep<SON>(makeManakovBody(J, 0.5), M, 0.05), 0);
+}
+
+TEST(Allocations, TheCounterSeesAStepThatAllocates) {
+  // RK4 on a matrix group returns its stages by value: the counter must see that.
+  EXPECT_GT(allocationsPerStep<SUN>(makeZeitlinFluid(16, 0.5), randomVorticity(16, 1), 0.01, "rk4"),
+            0);
+}
+
+TEST(Allocations, TheCounterSeesAnAllocation) {
+  const long before = allocations;
+  auto* p = new Eigen::MatrixXcd(Eigen::MatrixXcd::Zero(4, 4));
+  delete p;
+  EXPECT_GE(allocations - before, 2);  // the object and its storage
+}
+
+}  // namespace
+}  // namespace ddb::test
