@@ -1,34 +1,22 @@
 // One step (h = 0.1) of every registry method on the rigid body of Scenario A and on
 // the default heavy top (include/ddb/systems/paper_scenarios.h), named rigid_body/<method> and
 // heavy_top/<method> (docs/file-formats.md), with Boost.Odeint's runge_kutta4 on the same vector
-// field as the peer `rigid_body/odeint-rk4`. The counter allocs_per_step counts global operator new
-// calls per step. Compare methods by ratios of times within one run
-// (scripts/bench_ratios.py).
+// field as the peer `rigid_body/odeint-rk4`. The counter allocs_per_step counts mallocs per
+// step (tools/malloc_counter.h). The fluid's benchmarks are in zeitlin_bench.cc. Compare methods by
+// ratios of times within one run (scripts/bench_ratios.py).
 #include <benchmark/benchmark.h>
 #include <ddb/integrators/method_registry.h>
 #include <ddb/systems/heavy_top.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>
 
-#include <atomic>
 #include <boost/numeric/odeint.hpp>
 #include <cstdlib>
 #include <functional>
 #include <memory>
-#include <new>
 
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size)) return p;
-  throw std::bad_alloc();
-}
-// Counting replacement of the global allocator (malloc-backed, so free matches).
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "malloc_counter.h"
+#include "zeitlin_bench.h"
 
 namespace {
 
@@ -45,7 +33,7 @@ void runSteps(benchmark::State& state, const Dual& mu0,
   Dual mu = mu0;
   int k = 0;
   long steps = 0;
-  const long before = g_allocations.load();
+  const long before = tools::mallocCount();
   for (auto _ : state) {
     mu = step(mu, k * kH);
     benchmark::DoNotOptimize(mu.data());
@@ -56,7 +44,7 @@ void runSteps(benchmark::State& state, const Dual& mu0,
     ++steps;
   }
   state.counters["allocs_per_step"] =
-      static_cast<double>(g_allocations.load() - before) / static_cast<double>(steps);
+      static_cast<double>(tools::mallocCount() - before) / static_cast<double>(steps);
 }
 
 // One benchmark per applicable registry method, named <prefix>/<method>.
@@ -97,6 +85,7 @@ int main(int argc, char** argv) {
   benchmark::RegisterBenchmark("rigid_body/odeint-rk4", BM_OdeintRk4, body, a.mu0());
   const HeavyTopSetup top;
   registerMethods<SE3>("heavy_top", top.system(), top.mu0);
+  bench::registerZeitlinBenchmarks();
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

@@ -1,26 +1,14 @@
 // A DDB Cayley step on a matrix group allocates nothing once its workspaces exist
-// (docs/conventions.md §4): every malloc is counted in this binary only.
+// (docs/conventions.md §4): every malloc of this binary is counted (tools/malloc_counter.h).
 #include <ddb/integrators/method_registry.h>
 #include <ddb/systems/manakov_body.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
 #include <string>
 
-namespace {
-std::atomic<long> allocations{0};
-}  // namespace
-
-// Eigen takes a dynamic matrix's storage from malloc, not operator new (which also ends
-// in malloc), so malloc itself is counted, through glibc's own entry point.
-extern "C" void* __libc_malloc(std::size_t size);
-extern "C" void* malloc(std::size_t size) {
-  ++allocations;
-  return __libc_malloc(size);
-}
+#include "malloc_counter.h"
 
 namespace ddb::test {
 namespace {
@@ -32,9 +20,9 @@ long allocationsPerStep(std::shared_ptr<const LiePoissonSystem<G>> system,
   auto method = makeMethod<G>(name, system);
   method->advance(mu, 0.0, h);  // first step: workspaces sized
   method->advance(mu, h, h);    // warm start in place
-  const long before = allocations;
+  const long before = tools::mallocCount();
   for (int k = 2; k < 22; ++k) method->advance(mu, k * h, h);
-  return (allocations - before) / 20;
+  return (tools::mallocCount() - before) / 20;
 }
 
 TEST(Allocations, DdbCayleyOnSuNAllocatesNothingPerStep) {
@@ -59,10 +47,10 @@ TEST(Allocations, TheCounterSeesAStepThatAllocates) {
 }
 
 TEST(Allocations, TheCounterSeesAnAllocation) {
-  const long before = allocations;
+  const long before = tools::mallocCount();
   auto* p = new Eigen::MatrixXcd(Eigen::MatrixXcd::Zero(4, 4));
   delete p;
-  EXPECT_GE(allocations - before, 2);  // the object and its storage
+  EXPECT_GE(tools::mallocCount() - before, 2);  // the object and its storage
 }
 
 }  // namespace

@@ -119,7 +119,7 @@ class MatrixLegendreSolver {
     bool converged = false;
     const bool forced = strategy_ == MatrixLegendreStrategy::kFixedPoint;
     const bool fixed_point = strategy_ == MatrixLegendreStrategy::kAuto || forced;
-    const int budget = forced ? kMaxForcedFixedPoint : kMaxFixedPoint;
+    const int budget = (forced || !kFixed) ? kMaxForcedFixedPoint : kMaxFixedPoint;
     for (int k = 0; fixed_point && k < budget; ++k) {
       updateVelocity(h);
       const Dual& W = targetValue();
@@ -133,7 +133,8 @@ class MatrixLegendreSolver {
         converged = true;
         break;
       }
-      if (!forced && k >= 2 && update > kSlowContraction * previous) {
+      // Only a fixed target has the Newton–Krylov fallback; other targets iterate on.
+      if (kFixed && !forced && k >= 2 && update > kSlowContraction * previous) {
         break;  // contracting too slowly: Newton–Krylov takes over
       }
       previous = update;
