@@ -1,21 +1,29 @@
 // The whole public API of ddb in one include. The per-concept headers below stay
-// reachable on their own (#include <ddb/groups/so3.h>, ...).
+// reachable on their own (<ddb/groups/so3.h>, ...); headers they include themselves
+// (solver details, scalar helpers) are not listed.
 #pragma once
 
 #include <ddb/core/autodiff.h>
 #include <ddb/core/dissipation_metric.h>
 #include <ddb/core/errors.h>
+#include <ddb/core/group_traits.h>
 #include <ddb/core/lagrangian.h>
 #include <ddb/core/legendre_hamiltonian.h>
 #include <ddb/core/lie_group.h>
 #include <ddb/core/lie_poisson_system.h>
+#include <ddb/core/matrix_free_gmres.h>
 #include <ddb/core/retraction.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/exponential.h>
 #include <ddb/groups/se3.h>
+#include <ddb/groups/skew_hermitian_group.h>
 #include <ddb/groups/so3.h>
+#include <ddb/groups/son.h>
+#include <ddb/groups/sun.h>
 #include <ddb/integrators/composition.h>
 #include <ddb/integrators/ddb.h>
+#include <ddb/integrators/matrix_cayley_transport.h>
+#include <ddb/integrators/matrix_legendre.h>
 #include <ddb/integrators/method_descriptions.h>
 #include <ddb/integrators/method_registry.h>
 #include <ddb/integrators/one_step_method.h>
@@ -24,6 +32,11 @@
 #include <ddb/integrators/runge_kutta.h>
 #include <ddb/integrators/symmetric_ddb.h>
 #include <ddb/systems/heavy_top.h>
+#include <ddb/systems/hoppe_yau_laplacian.h>
 #include <ddb/systems/kirchhoff.h>
+#include <ddb/systems/manakov_body.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>
+#include <ddb/systems/spherical_harmonic_basis.h>
+#include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_initial_conditions.h>
