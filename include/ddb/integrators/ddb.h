@@ -24,8 +24,7 @@ class Ddb : public LegendreMethod<R> {
   using typename LegendreMethod<R>::Algebra;
 
   Ddb(std::shared_ptr<const LiePoissonSystem<G>> system, R retraction = R(),
-      LegendreForm form = LegendreForm::kLagrangian,
-      SolverOptions options = defaultLegendreOptions<G>())
+      LegendreForm form = LegendreForm::kLagrangian, SolverOptions options = {})
       : LegendreMethod<R>(std::move(system), std::move(retraction), form, options) {}
 
   std::string name() const override { return this->nameWith("ddb-"); }

@@ -15,17 +15,6 @@
 
 namespace ddb {
 
-/// The default Legendre tolerance: 1e-14 relative for small groups (round-off of O(1)
-/// data for TinySolver); 1e-15 for matrix groups, whose fixed point reaches 1e-17
-/// (docs/design.md, "Measured"), so that the DDB step at α = 0 agrees with the isospectral
-/// midpoint's read-out to round-off over many steps.
-template <class G>
-SolverOptions defaultLegendreOptions() {
-  SolverOptions options;
-  if constexpr (isDynamicGroup<G>) options.relative_tolerance = 1e-15;
-  return options;
-}
-
 /// The Legendre solver a retraction's group gets, chosen by its traits: TinySolver with
 /// Jet Jacobians for small fixed-size groups, matrix-free iterations for matrix groups.
 template <class R>

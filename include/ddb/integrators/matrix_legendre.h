@@ -12,8 +12,9 @@
 // coordinates of u(N) when asked, for small N only (at most kMaxCeresDimension unknowns):
 // an independent check of the matrix-free iterations.
 //
-// Convergence: the fixed-point update (equal to the residual r(p)) or the Newton
-// residual below relative_tolerance·‖target‖; otherwise a SolveFailure with the last
+// Convergence: the error bound of the accepted fixed-point iterate, ρ/(1 − ρ) times the
+// last update (the update equals the residual r(p)), with ρ the measured rate, or the
+// Newton residual, below relative_tolerance·‖target‖; otherwise a SolveFailure with the last
 // residual, and the caller keeps every state before it.
 #pragma once
 
@@ -73,7 +74,7 @@ class MatrixLegendreSolver {
     }
   }
 
-  void reset() { has_guess_ = false; }
+  void reset() { guesses_ = 0; }
   LegendreForm form() const { return form_; }
   const MatrixLegendreStats& stats() const { return stats_; }
   void setStrategy(MatrixLegendreStrategy strategy) { strategy_ = strategy; }
@@ -106,9 +107,12 @@ class MatrixLegendreSolver {
         return target_;
       }
     };
-    // Predictor: the correction p − target of the previous step, carried over
-    // (p − target = O(h) and varies by O(h) per step, so the guess is O(h²) off).
-    if (has_guess_) {
+    // Predictor: the correction c = p − target varies smoothly along the trajectory
+    // (c = O(h)); it is extrapolated linearly from the last two steps, 2c_{k−1} − c_{k−2}
+    // (constant after the first step), so the guess is O(h²) closer than c_{k−1}.
+    if (guesses_ >= 2) {
+      p_ = near + 2.0 * correction_ - previous_correction_;
+    } else if (guesses_ == 1) {
       p_ = near + correction_;
     } else {
       p_ = near;
@@ -127,9 +131,14 @@ class MatrixLegendreSolver {
       const double update = (next_ - p_).norm();
       p_.swap(next_);
       ++stats_.fixed_point;
-      stats_.residual = update;
       if (!std::isfinite(update)) break;
-      if (update <= tolerance) {
+      // The accepted iterate is p_new: for a contraction of rate ρ its error is at most
+      // ρ/(1 − ρ)·update, with ρ measured from the last two updates (the first sweep has
+      // no estimate and is judged by its update).
+      const double rate = std::isfinite(previous) ? update / previous : 1.0;
+      const double error = rate < 0.5 ? update * rate / (1.0 - rate) : update;
+      stats_.residual = error;
+      if (error <= tolerance) {
         converged = true;
         break;
       }
@@ -157,8 +166,9 @@ class MatrixLegendreSolver {
                          -1, t, h, stats_.residual, tolerance);
     }
     updateVelocity(h);
+    previous_correction_.swap(correction_);
     correction_ = p_ - near;
-    has_guess_ = true;
+    ++guesses_;
   }
 
   const Dual& solution() const { return p_; }
@@ -169,11 +179,11 @@ class MatrixLegendreSolver {
   void allocate(const Dual& like) {
     if (p_.rows() == like.rows() && p_.cols() == like.cols()) return;
     for (Dual* m : {&p_, &next_, &xi_, &a_, &ap_, &apa_, &residual_, &delta_, &delta_a_, &t1_, &t2_,
-                    &correction_, &target_}) {
+                    &correction_, &previous_correction_, &target_}) {
       m->setZero(like.rows(), like.cols());
     }
     gmres_.resize(like.rows(), like.cols());
-    has_guess_ = false;
+    guesses_ = 0;
   }
 
   // ξ = ∂H/∂μ(p), a = hξ/2.
@@ -325,10 +335,11 @@ class MatrixLegendreSolver {
   const LiePoissonSystem<G>& system_;
   LegendreForm form_;
   SolverOptions options_;
-  bool has_guess_ = false;
+  int guesses_ = 0;  // previous solutions the predictor may use
   MatrixLegendreStrategy strategy_ = MatrixLegendreStrategy::kAuto;
   MatrixLegendreStats stats_;
-  Dual p_, next_, xi_, a_, ap_, apa_, residual_, delta_, delta_a_, t1_, t2_, correction_, target_;
+  Dual p_, next_, xi_, a_, ap_, apa_, residual_, delta_, delta_a_, t1_, t2_, correction_,
+      previous_correction_, target_;
   MatrixFreeGmres<Dual> gmres_;
 };
 

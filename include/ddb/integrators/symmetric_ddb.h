@@ -49,8 +49,7 @@ class SymmetricDdb : public LegendreMethod<R> {
   using typename LegendreMethod<R>::Algebra;
 
   SymmetricDdb(std::shared_ptr<const LiePoissonSystem<G>> system, R retraction = R(),
-               LegendreForm form = LegendreForm::kLagrangian,
-               SolverOptions options = defaultLegendreOptions<G>())
+               LegendreForm form = LegendreForm::kLagrangian, SolverOptions options = {})
       : LegendreMethod<R>(std::move(system), std::move(retraction), form, options) {}
 
   std::string name() const override { return this->nameWith("sddb-"); }
@@ -77,7 +76,7 @@ class PaperSymmetricDdb : public LegendreMethod<R> {
 
   PaperSymmetricDdb(std::shared_ptr<const LiePoissonSystem<G>> system, R retraction = R(),
                     Force force = Force::kMidpoint, ReadOut read_out = ReadOut::kAsWritten,
-                    SolverOptions options = defaultLegendreOptions<G>())
+                    SolverOptions options = {})
       : LegendreMethod<R>(std::move(system), std::move(retraction), LegendreForm::kLagrangian,
                           options),
         force_(force),
