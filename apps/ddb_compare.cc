@@ -8,7 +8,6 @@
 #include <ddb/integrators/run.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <spdlog/spdlog.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -23,6 +22,7 @@
 #include "common/format.h"
 #include "common/json.h"
 #include "common/logging.h"
+#include "common/plot.h"
 #include "common/progress.h"
 
 namespace {
@@ -316,16 +316,6 @@ Settings commonSettings(const Options& o, double default_t_end) {
   return s;
 }
 
-/// Creates the out folder, or says why it cannot be used (bad input: nothing written).
-void prepareOutFolder(const Options& o, const fs::path& out) {
-  std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec || !fs::is_directory(out)) app::usageError("--out", o.out, "cannot create the folder");
-  if (::access(out.c_str(), W_OK | X_OK) != 0) {
-    app::usageError("--out", o.out, "folder is not writable");
-  }
-}
-
 /// <method>.csv rows as they are computed (docs/file-formats.md): t, μ, energy,
 /// Casimirs, 17 significant digits, formatted on the stack (no allocation per row).
 template <class G>
@@ -392,7 +382,7 @@ int compare(const Options& o, const Settings& s, const Problem<G>& problem) {
   }
   std::vector<std::unique_ptr<OneStepMethod<G>>> methods;
   for (const auto& name : names) methods.push_back(makeMethod<G>(name, problem.system));
-  prepareOutFolder(o, s.out);
+  app::prepareOutputFolder("--out", o.out, s.out);
   // ---- from here on, files are written: failures are exit status 1 ----
 
   const double t_reached = static_cast<double>(s.steps) * s.h;
@@ -529,15 +519,6 @@ int compare(const Options& o, const Settings& s, const Problem<G>& problem) {
   return any_failed ? app::kExitFailed : app::kExitOk;
 }
 
-int plot(const fs::path& out) {
-  const std::string command = "'" + std::string(DDB_PYTHON3) + "' '" +
-                              std::string(DDB_PLOT_SCRIPT) + "' '" + out.string() + "'";
-  spdlog::info("plotting: {}", command);
-  const int status = std::system(command.c_str());
-  if (status != 0) spdlog::error("plotting failed (python3 with matplotlib is needed)");
-  return status == 0 ? app::kExitOk : app::kExitFailed;
-}
-
 /// Library checks of the problem's data (InvalidArgument) are bad input too.
 template <class F>
 auto asUsageError(F&& make) {
@@ -564,7 +545,7 @@ int runCompare(int argc, char** argv) {
     const auto problem = asUsageError([&] { return se3Problem(cli, o); });
     status = compare(o, commonSettings(o, problem.t_end), problem);
   }
-  if (o.plot) status = std::max(status, plot(o.out));
+  if (o.plot) status = std::max(status, app::runPlotScript(DDB_PLOT_SCRIPT, o.out));
   return status;
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "common/cli.h"
 #include "common/exit_status.h"
 
 namespace ddb::app {
@@ -84,6 +85,16 @@ void writeFileAtomically(const std::filesystem::path& target, std::string_view c
   AtomicFile file(target);
   file.write(content);
   file.commit();
+}
+
+void prepareOutputFolder(const std::string& flag, const std::string& text,
+                         const std::filesystem::path& folder) {
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (ec || !std::filesystem::is_directory(folder)) {
+    usageError(flag, text, "cannot create the folder");
+  }
+  if (::access(folder.c_str(), W_OK | X_OK) != 0) usageError(flag, text, "folder is not writable");
 }
 
 }  // namespace ddb::app

@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 namespace ddb::app {
@@ -39,5 +40,11 @@ class AtomicFile {
 
 /// The whole content at once, through AtomicFile.
 void writeFileAtomically(const std::filesystem::path& target, std::string_view content);
+
+/// Creates the output folder `folder` (given as `text` to `flag`) if missing and checks
+/// that it is writable, or throws UsageError: apps call it after every other check, so
+/// that bad input creates nothing (docs/file-formats.md).
+void prepareOutputFolder(const std::string& flag, const std::string& text,
+                         const std::filesystem::path& folder);
 
 }  // namespace ddb::app

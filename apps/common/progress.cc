@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace ddb::app {
@@ -18,15 +19,28 @@ void Progress::show(const std::string& label) {
   last_ = std::chrono::steady_clock::now();
 }
 
-void Progress::update(const std::string& label, long done, long total) {
+void Progress::update(const std::string& label, long done, long total,
+                      const std::function<std::string()>& detail) {
   if (!enabled_) return;
   const auto now = std::chrono::steady_clock::now();
+  if (label != rate_label_ || done < rate_done_) {
+    rate_label_ = label;
+    rate_done_ = done;
+    rate_start_ = now;
+  }
   if (shown_ && now - last_ < std::chrono::milliseconds(100)) return;
   const double percent = total > 0 ? 100.0 * static_cast<double>(done) / total : 100.0;
   char line[256];
-  std::snprintf(line, sizeof line, "%s: %5.1f%% (%ld/%ld steps)", label.c_str(), percent, done,
-                total);
-  show(line);
+  int n = std::snprintf(line, sizeof line, "%s: %5.1f%% (%ld/%ld steps", label.c_str(), percent,
+                        done, total);
+  const double seconds = std::chrono::duration<double>(now - rate_start_).count();
+  if (done > rate_done_ && seconds > 0 && n > 0 && n < static_cast<int>(sizeof line)) {
+    const double rate = static_cast<double>(done - rate_done_) / seconds;
+    n += std::snprintf(line + n, sizeof line - n, ", %.3g steps/s, %.0f s left", rate,
+                       static_cast<double>(total - done) / rate);
+  }
+  show(std::string(line, std::min<std::size_t>(std::max(n, 0), sizeof line - 1)) + ")" +
+       (detail ? "  " + detail() : ""));
 }
 
 void Progress::clear() {

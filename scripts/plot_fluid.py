@@ -1,0 +1,144 @@
+#!/usr/bin/env python3
+"""Figures for a fluid-relax output folder (docs/file-formats.md), from its CSV/JSON only.
+
+Usage: plot_fluid.py OUT_DIR
+
+vorticity_sphere.png  the vorticity on the sphere, initial and final, Mollweide projection,
+                      one colour scale, evaluated from omega_initial.csv / omega_final.csv
+history.png           energy, enstrophy, ||[P,W]||_F (log) and spectrum drift (log, zeros
+                      omitted) against t, from history.csv
+
+The vorticity is omega(theta, phi) = sum omega_lm Y_lm(theta, phi) with the real spherical
+harmonics of docs/conventions.md §2 (theta colatitude, phi longitude):
+  m > 0: sqrt(2) (-1)^m Re Y_l^m,  m < 0: sqrt(2) (-1)^m Im Y_l^|m|,  m = 0: Y_l^0,
+Y_l^m being scipy's complex harmonics (Condon-Shortley phase), so that Y_10, Y_11, Y_1-1
+are proportional to z, x, y.
+"""
+import csv
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from scipy.special import sph_harm  # noqa: E402
+
+# Harmonics above this degree are left out of the sphere figure (and the title says so):
+# the grid below resolves about this many wavelengths around the equator.
+L_MAX_PLOTTED = 128
+
+
+def read_columns(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]} if rows else {}
+
+
+def save(fig, out, name):
+    path = os.path.join(out, name)
+    tmp = path + ".tmp.png"
+    fig.savefig(tmp, dpi=110)
+    os.replace(tmp, path)
+    plt.close(fig)
+    print("wrote", path)
+
+
+def vorticity(omega, theta, phi, l_max):
+    """sum over l <= l_max of omega[(l, m)] Y_lm on the grid theta (colatitudes) x phi."""
+    field = np.zeros((theta.size, phi.size))
+    by_m = {}
+    for (l, m), w in omega.items():
+        if l <= l_max and w != 0.0:
+            by_m.setdefault(abs(m), []).append((l, m, w))
+    for m_abs, terms in by_m.items():
+        cos_part = np.zeros(theta.size)
+        sin_part = np.zeros(theta.size)
+        for l, m, w in terms:
+            # Y_l^|m| at longitude 0 is real: N_lm P_l^|m|(cos theta).
+            y = sph_harm(m_abs, l, 0.0, theta).real
+            if m == 0:
+                cos_part += w * y
+            elif m > 0:
+                cos_part += w * math.sqrt(2.0) * (-1) ** m_abs * y
+            else:
+                sin_part += w * math.sqrt(2.0) * (-1) ** m_abs * y
+        field += np.outer(cos_part, np.cos(m_abs * phi)) + np.outer(sin_part, np.sin(m_abs * phi))
+    return field
+
+
+def read_omega(path):
+    columns = read_columns(path)
+    return {(int(l), int(m)): w for l, m, w in zip(columns["l"], columns["m"], columns["omega"])}
+
+
+def plot_sphere(out, summary):
+    n = int(summary["n"])
+    l_max = min(n - 1, L_MAX_PLOTTED)
+    points = max(181, 4 * l_max + 1)
+    latitude = np.linspace(-math.pi / 2, math.pi / 2, points)
+    longitude = np.linspace(-math.pi, math.pi, 2 * points - 1)
+    fields = [
+        vorticity(read_omega(os.path.join(out, name)), math.pi / 2 - latitude, longitude, l_max)
+        for name in ("omega_initial.csv", "omega_final.csv")
+    ]
+    limit = max(np.abs(f).max() for f in fields)
+    fig = plt.figure(figsize=(12, 4.2), layout="constrained")
+    titles = ["initial, t = 0", "final, t = %.4g" % summary["t_end"]]
+    for i, (field, title) in enumerate(zip(fields, titles)):
+        ax = fig.add_subplot(1, 2, i + 1, projection="mollweide")
+        mesh = ax.pcolormesh(longitude, latitude, field, cmap="RdBu_r", vmin=-limit, vmax=limit,
+                             shading="auto", rasterized=True)
+        ax.set_title(title)
+        ax.set_xticklabels([])
+        ax.grid(alpha=0.3)
+    truncated = " (l <= %d shown)" % l_max if l_max < n - 1 else ""
+    fig.suptitle("vorticity $\\omega(\\theta, \\varphi)$, N = %d, alpha = %g, %s, init %s%s" %
+                 (n, summary["alpha"], summary["method"], summary["init"], truncated))
+    fig.colorbar(mesh, ax=fig.axes, orientation="horizontal", fraction=0.06, shrink=0.5,
+                 label="$\\omega$ (one scale for both)")
+    save(fig, out, "vorticity_sphere.png")
+
+
+def plot_history(out, summary):
+    h = read_columns(os.path.join(out, "history.csv"))
+    t = h["t"]
+    fig, axes = plt.subplots(2, 2, figsize=(11, 7), sharex=True)
+    axes[0, 0].plot(t, h["energy"], color="tab:blue")
+    axes[0, 0].set_ylabel("energy E = Re tr(WP)/(2N)")
+    axes[0, 1].plot(t, h["enstrophy"] - h["enstrophy"][0], color="tab:green")
+    axes[0, 1].set_ylabel("enstrophy Z(t) - Z(0), Z(0) = %.6g" % h["enstrophy"][0])
+    for ax, key, label in ((axes[1, 0], "commutator_norm", "$\\|[P, W]\\|_F$"),
+                           (axes[1, 1], "spectrum_drift", "spectrum drift (relative)")):
+        values = h[key]
+        keep = values > 0  # zeros have no logarithm: omitted
+        if keep.any():
+            ax.semilogy(t[keep], values[keep], color="tab:red" if key == "spectrum_drift" else "k")
+        else:
+            ax.text(0.5, 0.5, "zero at every t", transform=ax.transAxes, ha="center")
+        ax.set_ylabel(label + (" (zeros omitted)" if not keep.all() and keep.any() else ""))
+        ax.set_xlabel("t")
+    for ax in axes.flat:
+        ax.grid(alpha=0.3)
+    fig.suptitle("N = %d, alpha = %g, %s, h = %.4g, %d steps, init %s" %
+                 (summary["n"], summary["alpha"], summary["method"], summary["h"],
+                  summary["steps"], summary["init"]))
+    fig.tight_layout()
+    save(fig, out, "history.png")
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    out = sys.argv[1]
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    plot_history(out, summary)
+    plot_sphere(out, summary)
+
+
+if __name__ == "__main__":
+    main()

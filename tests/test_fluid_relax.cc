@@ -1,0 +1,336 @@
+// fluid-relax end to end at N = 8 and 16 (docs/file-formats.md, "fluid-relax"): the files
+// against the contract (columns, rows, JSON keys, finite values), W_final.csv against the
+// library called directly, the spectrum kept to round-off, the energy monotone in the
+// direction of alpha's sign, the --init-file round trip, and every bad input (exit
+// status 2, a message naming the flag, nothing written).
+#include <ddb/integrators/method_registry.h>
+#include <ddb/systems/spherical_harmonic_basis.h>
+#include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_initial_conditions.h>
+#include <gmock/gmock.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+using Matrix = Eigen::MatrixXcd;
+
+struct AppResult {
+  int status = -1;     // exit status, -1 if killed
+  std::string output;  // stdout and stderr together
+};
+
+/// Runs the app with whitespace-separated arguments, without a shell.
+AppResult run(const std::string& arguments) {
+  std::vector<std::string> words{FLUID_RELAX_PATH};
+  std::stringstream ss(arguments);
+  for (std::string word; ss >> word;) words.push_back(word);
+  std::vector<char*> argv;
+  for (auto& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  const fs::path log = fs::temp_directory_path() /
+                       ("fluid_relax_test_output_" + std::to_string(::getpid()) + ".txt");
+  const pid_t child = ::fork();
+  if (child == 0) {
+    std::FILE* out = std::fopen(log.c_str(), "w");
+    if (out == nullptr) ::_exit(127);
+    ::dup2(::fileno(out), STDOUT_FILENO);
+    ::dup2(::fileno(out), STDERR_FILENO);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  AppResult result;
+  int status = 0;
+  if (child > 0 && ::waitpid(child, &status, 0) == child) {
+    result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  result.output = text.str();
+  fs::remove(log);
+  return result;
+}
+
+fs::path freshFolder(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("fluid_relax_test_" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::vector<std::vector<double>> readCsv(const fs::path& path, std::string* header) {
+  std::ifstream in(path);
+  std::string line;
+  if (header != nullptr) std::getline(in, *header);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+/// W from the layout of W_final.csv and --init-file.
+Matrix readMatrix(const fs::path& path) {
+  const auto rows = readCsv(path, nullptr);
+  const auto n = static_cast<Eigen::Index>(rows.size());
+  Matrix W(n, n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    EXPECT_EQ(static_cast<Eigen::Index>(rows[j].size()), 2 * n);
+    for (Eigen::Index k = 0; k < n; ++k) W(j, k) = {rows[j][k], rows[j][n + k]};
+  }
+  return W;
+}
+
+void writeMatrix(const fs::path& path, const Matrix& W) {
+  std::ofstream out(path);
+  out.precision(17);
+  for (Eigen::Index j = 0; j < W.rows(); ++j) {
+    for (Eigen::Index k = 0; k < W.cols(); ++k) out << W(j, k).real() << ",";
+    for (Eigen::Index k = 0; k < W.cols(); ++k) {
+      out << W(j, k).imag() << (k + 1 < W.cols() ? "," : "\n");
+    }
+  }
+}
+
+/// The number after `"key": ` in summary.json.
+double jsonNumber(const std::string& json, const std::string& key) {
+  const std::string marker = "\"" + key + "\": ";
+  const size_t at = json.find(marker);
+  if (at == std::string::npos) return NAN;
+  return std::stod(json.substr(at + marker.size()));
+}
+
+/// The library called directly: `steps` steps of `method` with h from W0.
+Matrix libraryFinal(const Matrix& W0, double alpha, const std::string& method, double h,
+                    long steps) {
+  auto fluid = ddb::makeZeitlinFluid(W0.rows(), alpha);
+  auto integrator = ddb::makeMethod<ddb::SUN>(method, fluid);
+  Matrix last;
+  ddb::integrate(*integrator, W0, 0.0, h, steps, [&](long, double, const Matrix& W) { last = W; });
+  return last;
+}
+
+TEST(FluidRelax, WritesContractFilesMatchingTheLibrary) {
+  for (int n : {8, 16}) {
+    for (double alpha : {0.5, -0.5}) {
+      const std::string method = alpha > 0 ? "sddb-cay" : "ddb-cay";
+      const fs::path out = freshFolder("contract");
+      const long steps = 40, every = n == 8 ? 3 : 1;
+      const double h = 0.05;
+      const std::string args = "--quiet --n " + std::to_string(n) + " --alpha " +
+                               std::to_string(alpha) + " --h 0.05 --steps 40 --seed 3 --method " +
+                               method + " --every " + std::to_string(every) + " --out " +
+                               out.string();
+      const AppResult r = run(args);
+      ASSERT_EQ(r.status, 0) << args << "\n" << r.output;
+
+      std::string header;
+      const auto rows = readCsv(out / "history.csv", &header);
+      EXPECT_EQ(header, "t,energy,enstrophy,commutator_norm,spectrum_drift");
+      // k = 0, 3, ..., 39 and the last, 40; or every k.
+      ASSERT_EQ(rows.size(), every == 3 ? 15u : 41u);
+      EXPECT_NEAR(rows.back()[0], steps * h, 1e-12);
+      for (size_t i = 0; i < rows.size(); ++i) {
+        ASSERT_EQ(rows[i].size(), 5u);
+        for (double v : rows[i]) EXPECT_TRUE(std::isfinite(v));
+        EXPECT_LE(rows[i][4], 1e-12) << "spectrum drift, N = " << n;
+        EXPECT_NEAR(rows[i][2], 0.5, 1e-12) << "enstrophy of ||W||_F = sqrt(N)";
+        if (i > 0) {
+          // dE/dt = −α‖[P, W]‖²/(ħN) (docs/conventions.md §2): E falls for α > 0, rises for α < 0.
+          EXPECT_LT(alpha * (rows[i][1] - rows[i - 1][1]), 0.0) << "N = " << n << " row " << i;
+        }
+      }
+
+      const Matrix W0 = ddb::randomVorticity(n, 3);
+      const Matrix expected = libraryFinal(W0, alpha, method, h, steps);
+      const Matrix W = readMatrix(out / "W_final.csv");
+      ASSERT_EQ(W.rows(), n);
+      EXPECT_LT((W - expected).cwiseAbs().maxCoeff(), 1e-13) << "N = " << n;
+
+      const std::string summary = readFile(out / "summary.json");
+      for (const std::string key : {"n", "alpha", "h", "steps", "energy_initial", "energy_final",
+                                    "enstrophy", "spectrum_drift_max", "commutator_final",
+                                    "runtime_s", "iterations_mean", "iterations_max", "t_end"}) {
+        EXPECT_TRUE(std::isfinite(jsonNumber(summary, key))) << key;
+      }
+      EXPECT_EQ(jsonNumber(summary, "n"), n);
+      EXPECT_EQ(jsonNumber(summary, "steps"), steps);
+      EXPECT_EQ(jsonNumber(summary, "h"), h);
+      EXPECT_EQ(jsonNumber(summary, "seed"), 3);
+      EXPECT_THAT(summary, ::testing::HasSubstr("\"method\": \"" + method + "\""));
+      EXPECT_THAT(summary, ::testing::HasSubstr("\"init\": \"random\""));
+      EXPECT_LE(jsonNumber(summary, "spectrum_drift_max"), 1e-12);
+      EXPECT_GE(jsonNumber(summary, "iterations_max"), jsonNumber(summary, "iterations_mean"));
+      EXPECT_GE(jsonNumber(summary, "iterations_mean"), 1.0);
+
+      // ω_lm of W_final: N² rows, and W_final rebuilt from them (docs/conventions.md §2).
+      const auto omega = readCsv(out / "omega_final.csv", &header);
+      EXPECT_EQ(header, "l,m,omega");
+      ASSERT_EQ(omega.size(), static_cast<size_t>(n * n));
+      Eigen::VectorXd coefficients(n * n);
+      for (size_t i = 0; i < omega.size(); ++i) {
+        coefficients(ddb::SphericalHarmonicBasis::index(long(omega[i][0]), long(omega[i][1]))) =
+            omega[i][2];
+      }
+      const ddb::SphericalHarmonicBasis basis{ddb::HoppeYauLaplacian(n)};
+      EXPECT_LT((basis.matrix(coefficients) - W).norm(), 1e-13 * W.norm());
+      EXPECT_TRUE(fs::exists(out / "omega_initial.csv"));
+    }
+  }
+}
+
+TEST(FluidRelax, DefaultStepIsTwoHundredthsOfHbarOverTheStreamNorm) {
+  const fs::path out = freshFolder("default_h");
+  ASSERT_EQ(run("--quiet --n 8 --init l1 --seed 2 --t-end 0.5 --out " + out.string()).status, 0);
+  const std::string summary = readFile(out / "summary.json");
+  const Matrix W0 = ddb::l1Vorticity(8, 2);
+  const ddb::ZeitlinHamiltonian hamiltonian(8);
+  const double norm = Eigen::JacobiSVD<Matrix>(hamiltonian.streamMatrix(W0)).singularValues()(0);
+  const double h0 = 0.02 * hamiltonian.hbar() / norm;
+  // --t-end with the default h: the fewest equal steps no longer than h0 that end at T.
+  const double steps = std::ceil(0.5 / h0);
+  EXPECT_EQ(jsonNumber(summary, "steps"), steps);
+  EXPECT_NEAR(jsonNumber(summary, "h"), 0.5 / steps, 1e-15);
+  EXPECT_NEAR(jsonNumber(summary, "t_end"), 0.5, 1e-12);
+  EXPECT_THAT(summary, ::testing::HasSubstr("\"h_source\": \"default\""));
+  std::string header;
+  EXPECT_EQ(readCsv(out / "history.csv", &header).size(), steps + 1);
+}
+
+TEST(FluidRelax, InitFileRoundTripContinuesTheLongerRun) {
+  const fs::path first = freshFolder("first"), second = freshFolder("second"),
+                 whole = freshFolder("whole");
+  const std::string common = "--quiet --alpha 0.5 --h 0.04 --method ddb-cay ";
+  ASSERT_EQ(run(common + "--n 16 --seed 5 --steps 30 --out " + first.string()).status, 0);
+  ASSERT_EQ(run(common + "--n 16 --seed 5 --steps 50 --out " + whole.string()).status, 0);
+  const AppResult r = run(common + "--init-file " + (first / "W_final.csv").string() +
+                          " --steps 20 --out " + second.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Matrix continued = readMatrix(second / "W_final.csv");
+  const Matrix longer = readMatrix(whole / "W_final.csv");
+  EXPECT_LT((continued - longer).cwiseAbs().maxCoeff(), 1e-13);
+  // The continuation's history is the longer run's from step 30 on (its t restarts at 0).
+  std::string header;
+  const auto rows = readCsv(second / "history.csv", &header);
+  const auto whole_rows = readCsv(whole / "history.csv", &header);
+  ASSERT_EQ(rows.size(), 21u);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_NEAR(rows[i][1], whole_rows[30 + i][1], 1e-13);
+    EXPECT_NEAR(rows[i][3], whole_rows[30 + i][3], 1e-12 * whole_rows[30][3]);
+  }
+  const std::string summary = readFile(second / "summary.json");
+  EXPECT_THAT(summary, ::testing::HasSubstr("\"init\": \"file\""));
+  EXPECT_EQ(jsonNumber(summary, "n"), 16);
+}
+
+TEST(FluidRelax, FailedSolveKeepsTheHistoryPrefixAndExitsOne) {
+  // At h = 2 (h||P||_2/hbar about 10) the Legendre solve of step 1 does not converge.
+  const fs::path out = freshFolder("failure");
+  const AppResult r = run("--quiet --n 8 --h 2 --steps 50 --out " + out.string());
+  EXPECT_EQ(r.status, 1) << r.output;
+  for (const std::string text : {"step 1 ", "t = 2", "h = 2", "residual"}) {
+    EXPECT_THAT(r.output, ::testing::HasSubstr(text)) << r.output;
+  }
+  std::string header;
+  const auto rows = readCsv(out / "history.csv", &header);
+  ASSERT_EQ(rows.size(), 2u);  // t = 0 and t = 2, the states before the failing step
+  for (const auto& row : rows)
+    for (double v : row) EXPECT_TRUE(std::isfinite(v));
+  const std::string summary = readFile(out / "summary.json");
+  EXPECT_THAT(summary, ::testing::HasSubstr("\"status\": \"FAILED\""));
+  EXPECT_EQ(jsonNumber(summary, "steps"), 1);
+  EXPECT_FALSE(fs::exists(out / "W_final.csv"));
+  EXPECT_FALSE(fs::exists(out / "omega_final.csv"));
+}
+
+TEST(FluidRelax, BadInputExitsTwoNamingTheFlagAndWritesNothing) {
+  const fs::path files = freshFolder("bad_files");
+  fs::create_directories(files);
+  const int n = 4;
+  Matrix W = ddb::randomVorticity(n, 1);
+  writeMatrix(files / "good.csv", W);
+  {
+    std::ofstream(files / "short_row.csv") << "0,1,2\n0,1,2,3,4,5,6,7\n";
+    std::ofstream(files / "rows.csv") << "0,0,0,0\n";  // one row: N = 1
+    std::ofstream(files / "word.csv") << readFile(files / "good.csv").replace(0, 1, "x");
+    Matrix hermitian = W;
+    hermitian(0, 1) = -hermitian(0, 1);  // W[0,1] no longer −conj(W[1,0])
+    writeMatrix(files / "not_skew.csv", hermitian);
+    Matrix traced = W;
+    traced(0, 0) += std::complex<double>(0, 1e-6);
+    writeMatrix(files / "trace.csv", traced);
+  }
+  const std::string file = " --steps 2 --init-file " + files.string();
+  const std::vector<std::pair<std::string, std::string>> bad{
+      {"--n 1 --steps 2", "--n"},
+      {"--n 1025 --steps 2", "--n"},
+      {"--n -3 --steps 2", "--n"},
+      {"--h 0 --steps 2", "--h"},
+      {"--h -0.1 --steps 2", "--h"},
+      {"--h nan --steps 2", "--h"},
+      {"--h inf --steps 2", "--h"},
+      {"--alpha nan --steps 2", "--alpha"},
+      {"--alpha inf --steps 2", "--alpha"},
+      {"--steps 0", "--steps"},
+      {"--steps -1", "--steps"},
+      {"--steps 2 --t-end 1", "--steps"},
+      {"--alpha 0.5", "--steps"},
+      {"--t-end 0", "--t-end"},
+      {"--t-end nan", "--t-end"},
+      {"--init vortex --steps 2", "--init"},
+      {"--method ddb-exp --steps 2", "--method"},
+      {"--every 0 --steps 2", "--every"},
+      {"--steps 2 --init-file " + (files / "missing.csv").string(), "--init-file"},
+      {"--steps 2 --init-file " + files.string(), "--init-file"},  // a folder
+      {file + "/short_row.csv", "--init-file"},
+      {file + "/rows.csv", "--init-file"},
+      {file + "/word.csv", "--init-file"},
+      {file + "/not_skew.csv", "--init-file"},
+      {file + "/trace.csv", "--init-file"},
+      {file + "/good.csv --n 5", "--n"},
+      {file + "/good.csv --init l1", "--init"},
+      {file + "/good.csv --seed 3", "--seed"},
+  };
+  for (const auto& [arguments, flag] : bad) {
+    const fs::path out = freshFolder("bad");
+    const AppResult r = run(arguments + " --out " + out.string());
+    EXPECT_EQ(r.status, 2) << arguments << "\n" << r.output;
+    EXPECT_THAT(r.output, ::testing::StartsWith("fluid-relax: ")) << arguments;
+    EXPECT_THAT(r.output, ::testing::HasSubstr(flag)) << arguments << "\n" << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_FALSE(fs::exists(out)) << arguments;
+  }
+  // The good file is accepted: the cases above fail for the reason they name.
+  const fs::path out = freshFolder("good_file");
+  EXPECT_EQ(run("--quiet" + file + "/good.csv --n 4 --out " + out.string()).status, 0);
+}
+
+TEST(FluidRelax, HelpListsMethodsInitsAndDefaults) {
+  const AppResult r = run("--help");
+  EXPECT_EQ(r.status, 0);
+  for (const std::string text :
+       {"--n INT=32", "--alpha TEXT=0.5", "--method TEXT=ddb-cay", "--init TEXT=random",
+        "--seed UINT=1", "--out TEXT=results-fluid", "--every INT=1", "N <= 1024",
+        "0.02 hbar/||P0||_2", "\n  ddb-cay ", "\n  sddb-cay ", "\n  rk4 ", "\n  random ", "\n  l1 ",
+        "\n  zonal "}) {
+    EXPECT_THAT(r.output, ::testing::HasSubstr(text)) << r.output;
+  }
+}
+
+}  // namespace
