@@ -3,12 +3,19 @@
 
 Usage: plot_compare.py OUT_DIR
 
-Always:  casimir_vs_t.png (all methods; DDB and reference only)
-Sweep:   error_vs_h.png, work_precision.png          (if error_vs_h.csv exists)
-Rigid body with an isolated minimum (Scenario B-like):
-         sphere_trajectory.png, distance_to_limit_points.png, error_vs_reference.png
-Rigid body with I1 = I2 > I3 (Scenario C-like):
-         sphere_trajectory.png, distance_to_great_circle.png
+Always:  casimir_vs_t.png   relative Casimir drift |C(t) - C(0)| / |C(0)|, every method
+Sweep:   error_vs_h.png (with slope guides h, h^2, h^4), work_precision.png
+                                                     (if error_vs_h.csv exists)
+Rigid body with an isolated minimum (Scenarios A, B):
+         sphere_trajectory.png (with the limit points +-|M0| e_i),
+         distance_to_limit_points.png, error_vs_reference.png
+Rigid body with I1 = I2 > I3 (Scenario C):
+         sphere_trajectory.png (with the great circle of minimum energy),
+         distance_to_great_circle.png
+
+Every method has its own colour, line style and marker. Log axes cannot show an
+exact 0: such points (round-off cancelling exactly, or the common initial state)
+are left out, and the figure says so.
 """
 import csv
 import json
@@ -20,26 +27,50 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
 
+# colour, line style, marker: unique per method; families share a legend group.
 STYLE = {
-    "ddb-cay": dict(color="tab:blue", ls="-"),
-    "ddb-exp": dict(color="tab:orange", ls="--"),
-    "ddb-exp-exact": dict(color="tab:brown", ls=":"),
-    "sddb-cay": dict(color="tab:cyan", ls="-"),
-    "sddb-exp": dict(color="tab:olive", ls="--"),
-    "ddb4-cay": dict(color="navy", ls="-"),
-    "ddb4-exp": dict(color="darkgreen", ls="--"),
-    "ddb6-exp": dict(color="black", ls="-."),
-    "sddb-paper-cay": dict(color="tab:pink", ls="-"),
-    "sddb-paper-exp": dict(color="tab:pink", ls="--"),
-    "rk4": dict(color="tab:red", ls="-"),
-    "lobatto3c": dict(color="tab:purple", ls="-"),
-    "reference": dict(color="tab:gray", ls="-"),
+    "ddb-cay": dict(color="tab:blue", ls="-", marker="o"),
+    "ddb-exp": dict(color="tab:orange", ls="--", marker="s"),
+    "ddb-exp-exact": dict(color="tab:brown", ls=":", marker="^"),
+    "sddb-paper-cay": dict(color="hotpink", ls="-.", marker="v"),
+    "sddb-paper-exp": dict(color="goldenrod", ls=(0, (5, 1, 1, 1, 1, 1)), marker="<"),
+    "sddb-cay": dict(color="tab:cyan", ls="-", marker="D"),
+    "sddb-exp": dict(color="tab:olive", ls="--", marker="P"),
+    "ddb4-cay": dict(color="navy", ls="-.", marker="X"),
+    "ddb4-exp": dict(color="darkgreen", ls=":", marker="*"),
+    "ddb6-exp": dict(color="black", ls=(0, (8, 2)), marker="h"),
+    "rk4": dict(color="tab:red", ls="-", marker=">"),
+    "lobatto3c": dict(color="tab:purple", ls="--", marker="d"),
+    "reference": dict(color="0.55", ls="-", marker="", lw=2.2),
 }
+GROUPS = [
+    ("DDB, order 1", ["ddb-cay", "ddb-exp", "ddb-exp-exact"]),
+    ("paper's symmetric DDB, order 1", ["sddb-paper-cay", "sddb-paper-exp"]),
+    ("symmetric DDB, order 2", ["sddb-cay", "sddb-exp"]),
+    ("compositions, order 4 / 6", ["ddb4-cay", "ddb4-exp", "ddb6-exp"]),
+    ("Runge–Kutta (no Casimir)", ["rk4", "lobatto3c"]),
+    ("reference", ["reference"]),
+]
+ORDER = [m for _, ms in GROUPS for m in ms]
+NOTE_ZEROS = "exact zeros cannot be drawn on a log axis and are left out"
+NORM_REF = r"$\Vert M_N - M_N^{\mathrm{ref}}\Vert$"
 
 
-def style(name):
-    return STYLE.get(name, {})
+def style(name, index=0, dense=True):
+    """Line keywords for a method; on dense curves the markers are spread out and
+    shifted per method so that they do not sit on top of each other."""
+    s = dict(STYLE.get(name, dict(color="k", ls="-", marker=".")))
+    s.setdefault("lw", 1.1)
+    if dense and s.get("marker"):
+        s["markevery"] = (0.011 * (index % 9), 0.1)
+    s["ms"] = 5 if dense else 4
+    return s
+
+
+def sort_methods(names):
+    return sorted(names, key=lambda m: ORDER.index(m) if m in ORDER else len(ORDER))
 
 
 def read_csv(path):
@@ -51,88 +82,211 @@ def read_csv(path):
 def save(fig, out, name):
     path = os.path.join(out, name)
     tmp = path + ".tmp.png"
-    fig.tight_layout()
-    fig.savefig(tmp, dpi=110)
+    fig.savefig(tmp, dpi=110, bbox_inches="tight")
     os.replace(tmp, path)
     plt.close(fig)
     print("wrote", path)
 
 
-def casimir_columns(data):
-    return [k for k in data if k.startswith("casimir")]
+def grouped_legend(ax, names, **kw):
+    """Legend outside the axes, right, grouped by method family with a header each."""
+    handles, labels = ax.get_legend_handles_labels()
+    by_label = dict(zip(labels, handles))
+    hs, ls = [], []
+    for title, members in GROUPS + [("other", [n for n in names if n not in ORDER])]:
+        present = [m for m in members if m in by_label]
+        if not present:
+            continue
+        hs.append(Line2D([], [], ls="none"))
+        ls.append(f"$\\bf{{{title.replace(' ', '~')}}}$" if False else title + ":")
+        for m in present:
+            hs.append(by_label[m])
+            ls.append("  " + m)
+    leg = ax.legend(hs, ls, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8,
+                    frameon=False, handlelength=3.2, borderaxespad=0.0, **kw)
+    for text, label in zip(leg.get_texts(), ls):
+        if not label.startswith("  "):
+            text.set_fontweight("bold")
+    return leg
+
+
+def positive(xs, ys):
+    """(x, y) with y > 0 and finite, plus how many y were exactly 0."""
+    zeros = sum(1 for y in ys if y == 0.0)
+    pts = [(x, y) for x, y in zip(xs, ys) if y > 0.0 and math.isfinite(y)]
+    return [p[0] for p in pts], [p[1] for p in pts], zeros
+
+
+def footnote(fig, text):
+    fig.text(0.01, -0.01, text, fontsize=8, color="0.3", ha="left", va="top")
 
 
 def plot_casimirs(out, traj):
-    fig, axes = plt.subplots(2, 1, figsize=(8, 7))
-    for name, d in traj.items():
-        for col in casimir_columns(d):
+    """Relative Casimir drift of every method (the Casimir value itself, a flat line
+    at |M0| for every Casimir-preserving method, says nothing more)."""
+    fig, ax = plt.subplots(figsize=(9.5, 5))
+    names = sort_methods(traj)
+    any_zero = False
+    for i, name in enumerate(names):
+        d = traj[name]
+        for col in [k for k in d if k.startswith("casimir")]:
             c0 = d[col][0]
             scale = abs(c0) if c0 != 0 else 1.0
-            dev = [max(abs(c - c0) / scale, 1e-18) for c in d[col]]
-            axes[0].semilogy(d["t"], dev, label=f"{name} {col}", **style(name))
-    axes[0].set_title("relative Casimir deviation |C(t) - C(0)| / |C(0)|, all methods")
-    axes[0].set_xlabel("t")
-    axes[0].legend(fontsize=7)
-    for name, d in traj.items():
-        if name.startswith("ddb") or name.startswith("sddb") or name == "reference":
-            for col in casimir_columns(d):
-                axes[1].plot(d["t"], d[col], label=f"{name} {col}", **style(name))
-    axes[1].set_title("Casimir value, DDB methods and reference")
-    axes[1].set_xlabel("t")
-    axes[1].ticklabel_format(useOffset=False)
-    axes[1].legend(fontsize=7)
+            dev = [abs(c - c0) / scale for c in d[col]]
+            ts, ys, zeros = positive(d["t"][1:], dev[1:])
+            any_zero |= zeros > 0
+            label = name if col == "casimir" else f"{name} {col}"
+            ax.semilogy(ts, ys, label=label, **style(name, i))
+    ax.axhline(2.22e-16, color="0.3", lw=0.8, ls=(0, (1, 3)))
+    ax.annotate("machine ε", (1.0, 2.22e-16), xycoords=("axes fraction", "data"),
+                xytext=(3, 0), textcoords="offset points", fontsize=8, color="0.3",
+                va="center", ha="left")
+    ax.set_xlabel("time t")
+    ax.set_ylabel(r"relative Casimir drift  $|C(t) - C(0)|\,/\,|C(0)|$,  $C = \Vert M\Vert$")
+    ax.set_title("Casimir drift: DDB keeps ‖M‖ to round-off, Runge–Kutta methods drift")
+    ax.grid(True, which="major", alpha=0.3)
+    grouped_legend(ax, names)
+    if any_zero:
+        footnote(fig, f"Drift exactly 0 at some steps (round-off cancels): {NOTE_ZEROS}.")
     save(fig, out, "casimir_vs_t.png")
+
+
+METHOD_ORDER = {"ddb-cay": 1, "ddb-exp": 1, "ddb-exp-exact": 1, "sddb-paper-cay": 1,
+                "sddb-paper-exp": 1, "sddb-cay": 2, "sddb-exp": 2, "ddb4-cay": 4,
+                "ddb4-exp": 4, "rk4": 4, "lobatto3c": 4}
+
+
+def slope_guides(ax, curves):
+    """Slope guides h^p, p = 1, 2, 4, one decade of h long, each next to the methods of
+    that order: O(h) above them, O(h^2) and O(h^4) below them (factor 4), at the
+    smallest step sizes where those methods are still above round-off (error > 30 x the smallest error
+    of the figure)."""
+    import numpy as np
+
+    floor = 30 * min(e for c in curves.values() for _, e in c) if curves else 0.0
+    for p in (1, 2, 4):
+        group = {m: dict(c) for m, c in curves.items() if METHOD_ORDER.get(m) == p}
+        if not group:
+            continue
+        hs = sorted(set.intersection(*[set(g) for g in group.values()]))
+        hs = [h for h in hs if all(g[h] > floor for g in group.values())]
+        if len(hs) < 2:
+            continue
+        h_lo = hs[0]
+        h_hi = min(hs[-1], h_lo * 10)
+        h = np.geomspace(h_lo, h_hi, 10)
+        pick = max if p == 1 else min
+        factor = 4.0 if p == 1 else 0.25
+        # envelope of the group on the window, then a line of slope p just outside it
+        env = [pick(g[x] for g in group.values()) for x in hs if h_lo <= x <= h_hi]
+        xs = [x for x in hs if h_lo <= x <= h_hi]
+        if len(xs) < 2 or abs(math.log(env[-1] / env[0]) / math.log(xs[-1] / xs[0]) - p) > 0.75:
+            continue  # the data do not show this order here (round-off, or not asymptotic)
+        shifts = [e / x ** p for x, e in zip(xs, env)]
+        c = (max(shifts) if p == 1 else min(shifts)) * factor
+        ax.plot(h, c * h ** p, color="0.2", lw=2.0, ls="-", alpha=0.55, zorder=1,
+                solid_capstyle="butt")
+        txt = "slope 1: O(h)" if p == 1 else f"slope {p}: O(h$^{p}$)"
+        ax.annotate(txt, (h[-1], c * h[-1] ** p), xytext=(4, 0 if p == 1 else -4),
+                    textcoords="offset points", fontsize=9, color="0.15",
+                    ha="left", va="top" if p != 1 else "bottom")
 
 
 def plot_sweep(out, path, title):
     rows = list(csv.DictReader(open(path, newline="")))
-    methods = sorted({r["method"] for r in rows}, key=lambda m: list(STYLE).index(m) if m in STYLE else 99)
-    fig, ax = plt.subplots(figsize=(7, 5))
-    fig2, ax2 = plt.subplots(figsize=(7, 5))
-    for m in methods:
+    methods = sort_methods({r["method"] for r in rows})
+    fig, ax = plt.subplots(figsize=(9.5, 6))
+    fig2, ax2 = plt.subplots(figsize=(9.5, 6))
+    curves, omitted = {}, []
+    for i, m in enumerate(methods):
         pts = [(float(r["h"]), float(r["err_final"]), float(r["runtime_s"])) for r in rows
-               if r["method"] == m and math.isfinite(float(r["err_final"])) and float(r["err_final"]) > 0]
+               if r["method"] == m]
+        bad = [p for p in pts if not (math.isfinite(p[1]) and p[1] > 0)]
+        if bad:
+            omitted.append(f"{m} ({len(bad)})")
+        pts = sorted(p for p in pts if p not in bad)
         if not pts:
             continue
-        pts.sort()
-        ax.loglog([p[0] for p in pts], [p[1] for p in pts], marker="o", ms=3, label=m, **style(m))
-        ax2.loglog([p[2] for p in pts], [p[1] for p in pts], marker="o", ms=3, label=m, **style(m))
-    ax.set_xlabel("h")
-    ax.set_ylabel("‖M_N − M_N^ref‖")
-    ax.set_title(f"error in the final momentum vs h ({title})")
-    ax.legend(fontsize=8)
-    ax2.set_xlabel("CPU time (s)")
-    ax2.set_ylabel("‖M_N − M_N^ref‖")
-    ax2.set_title(f"work–precision ({title})")
-    ax2.legend(fontsize=8)
+        s = style(m, i, dense=False)
+        ax.loglog([p[0] for p in pts], [p[1] for p in pts], label=m, **s)
+        ax2.loglog([p[2] for p in pts], [p[1] for p in pts], label=m, **s)
+        curves[m] = [(p[0], p[1]) for p in pts]
+    slope_guides(ax, curves)
+    ax.set_xlabel("step size h")
+    ax.set_ylabel("error in the final momentum  " + NORM_REF)
+    ax.set_title(f"Convergence: final error vs step size ({title})\n"
+                 "grey bars: slopes 1, 2, 4 (orders of the methods); the flat tail at small h is round-off")
+    ax2.set_xlabel("CPU time per run (s, median)")
+    ax2.set_ylabel("error in the final momentum  " + NORM_REF)
+    ax2.set_title(f"Work–precision: final error vs cost ({title})\n"
+                  "one point per step size; lower left is better")
+    for a in (ax, ax2):
+        a.grid(True, which="major", alpha=0.3)
+        grouped_legend(a, methods)
+    if omitted:
+        for f in (fig, fig2):
+            footnote(f, "Final error exactly 0 or not finite, left out: " + ", ".join(omitted))
     save(fig, out, "error_vs_h.png")
     save(fig2, out, "work_precision.png")
 
 
-def sphere(ax, radius):
+def plot_sphere(out, traj, name, radius, largest, circle, scenario):
     import numpy as np
 
+    d = traj[name]
+    fig = plt.figure(figsize=(7.5, 7))
+    ax = fig.add_subplot(projection="3d")
     u, v = np.mgrid[0:2 * np.pi:40j, 0:np.pi:20j]
     ax.plot_wireframe(radius * np.cos(u) * np.sin(v), radius * np.sin(u) * np.sin(v),
                       radius * np.cos(v), color="0.85", lw=0.4)
+    ax.plot(d["m1"], d["m2"], d["m3"], color="tab:blue", lw=0.9,
+            label=f"$M_k$, {name} (h = {traj['_h']:g})")
+    ax.scatter([d["m1"][0]], [d["m2"][0]], [d["m3"][0]], color="tab:green", s=110,
+               marker="o", edgecolors="k", depthshade=False, label="start $M_0$", zorder=5)
+    ax.scatter([d["m1"][-1]], [d["m2"][-1]], [d["m3"][-1]], color="tab:red", s=90,
+               marker="s", edgecolors="k", depthshade=False, label=f"end $M_N$ (t = {d['t'][-1]:g})", zorder=5)
+    if circle:
+        th = np.linspace(0, 2 * np.pi, 200)
+        ax.plot(radius * np.cos(th), radius * np.sin(th), 0 * th, color="k", lw=2.0, ls="--",
+                label=r"great circle $\{M_3 = 0,\ \Vert M\Vert = \Vert M_0\Vert\}$")
+    else:
+        p = np.zeros((2, 3))
+        p[0, largest], p[1, largest] = radius, -radius
+        ax.scatter(p[:, 0], p[:, 1], p[:, 2], color="k", marker="*", s=180, depthshade=False,
+                   label=f"limit points $\\pm\\Vert M_0\\Vert e_{largest + 1}$", zorder=6)
+    lim = radius * 1.05
+    ax.set_xlim(-lim, lim)
+    ax.set_ylim(-lim, lim)
+    ax.set_zlim(-lim, lim)
+    ax.set_box_aspect((1, 1, 1), zoom=0.88)
+    ax.set_xlabel("$M_1$")
+    ax.set_ylabel("$M_2$")
+    ax.set_zlabel("$M_3$")
+    ax.view_init(elev=22, azim=-35 if not circle else -60)
+    ax.set_title(f"Scenario {scenario}: $M_k$ on the Casimir sphere "
+                 f"$\\Vert M\\Vert = \\Vert M_0\\Vert$ = {radius:.4g}")
+    ax.legend(loc="upper left", bbox_to_anchor=(0.0, -0.02), fontsize=9, ncol=2,
+              frameon=False)
+    save(fig, out, "sphere_trajectory.png")
 
 
 def plot_rigid_body(out, traj, summary):
     inertia = summary["parameters"]["inertia"]
+    scenario = summary.get("scenario", "")
     ref = traj.get("reference")
-    ddb = traj.get("ddb-cay") or next((d for n, d in traj.items() if n.startswith("ddb")), None)
-    if ddb is None:
+    ddb_name = "ddb-cay" if "ddb-cay" in traj else next((n for n in traj if n.startswith("ddb")), None)
+    if ddb_name is None:
         return
+    ddb = traj[ddb_name]
     radius = math.sqrt(ddb["m1"][0] ** 2 + ddb["m2"][0] ** 2 + ddb["m3"][0] ** 2)
     order = sorted(range(3), key=lambda i: inertia[i])
     largest, second = order[2], order[1]
     circle = abs(inertia[largest] - inertia[second]) < 1e-12
-    fig = plt.figure(figsize=(6, 6))
-    ax = fig.add_subplot(projection="3d")
-    sphere(ax, radius)
-    ax.plot(ddb["m1"], ddb["m2"], ddb["m3"], color="tab:blue", lw=0.8)
-    ax.set_title("M_k on the Casimir sphere (DDB, Cayley)")
-    save(fig, out, "sphere_trajectory.png")
+    traj["_h"] = summary.get("h", float("nan"))
+    plot_sphere(out, traj, ddb_name, radius, largest, circle, scenario)
+    del traj["_h"]
+    names = sort_methods(traj)
+    title = f"scenario {scenario}, h = {summary.get('h', float('nan')):g}"
 
     def last_part(d):
         n = len(d["t"])
@@ -141,51 +295,78 @@ def plot_rigid_body(out, traj, summary):
     M = lambda d, k: [d["m1"][k], d["m2"][k], d["m3"][k]]  # noqa: E731
     if not circle:
         axis = largest
-        fig, ax = plt.subplots(figsize=(8, 5))
-        for name, d in traj.items():
+        fig, ax = plt.subplots(figsize=(9.5, 5))
+        zeros = 0
+        for i, name in enumerate(names):
+            d = traj[name]
             ks = last_part(d)
             dist = []
             for k in ks:
                 m = M(d, k)
-                dist.append(min(math.dist(m, [s * radius if i == axis else 0.0 for i in range(3)])
+                dist.append(min(math.dist(m, [s * radius if j == axis else 0.0 for j in range(3)])
                                 for s in (1.0, -1.0)))
-            ax.semilogy([d["t"][k] for k in ks], [max(x, 1e-18) for x in dist], label=name, **style(name))
-        ax.set_title(f"distance to the limit points ±‖M0‖e{axis + 1} (last 20% of the run)")
-        ax.set_xlabel("t")
-        ax.legend(fontsize=8)
+            ts, ys, z = positive([d["t"][k] for k in ks], dist)
+            zeros += z
+            ax.semilogy(ts, ys, label=name, **style(name, i))
+        ax.set_xlabel("time t (last 20% of the run)")
+        ax.set_ylabel(f"$\\min_\\pm \\Vert M(t) \\mp \\Vert M_0\\Vert e_{axis + 1}\\Vert$")
+        ax.set_title(f"Distance to the nearer limit point $\\pm\\Vert M_0\\Vert e_{axis + 1}$ "
+                     f"(energy minimum on the sphere), {title}")
+        ax.grid(True, which="major", alpha=0.3)
+        grouped_legend(ax, names)
+        if zeros:
+            footnote(fig, f"Some distances are exactly 0: {NOTE_ZEROS}.")
         save(fig, out, "distance_to_limit_points.png")
         if ref is not None:
-            fig, ax = plt.subplots(figsize=(8, 5))
-            for name, d in traj.items():
-                if name == "reference":
-                    continue
+            fig, ax = plt.subplots(figsize=(9.5, 5))
+            others = [n for n in names if n != "reference"]
+            for i, name in enumerate(others):
+                d = traj[name]
                 n = min(len(d["t"]), len(ref["t"]))
-                err = [max(math.dist(M(d, k), M(ref, k)), 1e-18) for k in range(n)]
-                ax.semilogy(d["t"][:n], err, label=name, **style(name))
-            ax.set_title("‖M(t) − M_ref(t)‖")
-            ax.set_xlabel("t")
-            ax.legend(fontsize=8)
+                err = [math.dist(M(d, k), M(ref, k)) for k in range(n)]
+                ts, ys, _ = positive(d["t"][:n], err)
+                ax.semilogy(ts, ys, label=name, **style(name, i))
+            ax.set_xlabel("time t")
+            ax.set_ylabel(r"$\Vert M(t) - M^{\mathrm{ref}}(t)\Vert$")
+            ax.set_title(f"Error against the reference solution (RKF 7(8), tol 1e-13), {title}")
+            ax.grid(True, which="major", alpha=0.3)
+            grouped_legend(ax, others)
+            footnote(fig, f"At t = 0 every method equals the reference; {NOTE_ZEROS}.")
             save(fig, out, "error_vs_reference.png")
     else:
         smallest = order[0]
         plane = [i for i in range(3) if i != smallest]
-        fig, axes = plt.subplots(2, 1, figsize=(8, 7))
-        for name, d in traj.items():
+        fig, axes = plt.subplots(2, 1, figsize=(9.5, 8), sharex=True)
+        zeros = 0
+        for i, name in enumerate(names):
+            d = traj[name]
             ks = last_part(d)
             to_circle, to_plane = [], []
             for k in ks:
                 m = M(d, k)
                 rho = math.hypot(m[plane[0]], m[plane[1]])
-                to_circle.append(max(math.hypot(m[smallest], rho - radius), 1e-18))
-                to_plane.append(max(abs(m[smallest]), 1e-18))
-            ts = [d["t"][k] for k in ks]
-            axes[0].semilogy(ts, to_circle, label=name, **style(name))
-            axes[1].semilogy(ts, to_plane, label=name, **style(name))
-        axes[0].set_title("distance to the great circle of minimum energy (last 20%)")
-        axes[1].set_title(f"distance to the plane M{smallest + 1} = 0 (last 20%)")
+                to_circle.append(math.hypot(m[smallest], rho - radius))
+                to_plane.append(abs(m[smallest]))
+            t_all = [d["t"][k] for k in ks]
+            ts, ys, z1 = positive(t_all, to_circle)
+            axes[0].semilogy(ts, ys, label=name, **style(name, i))
+            ts, ys, z2 = positive(t_all, to_plane)
+            axes[1].semilogy(ts, ys, label=name, **style(name, i))
+            zeros += z1 + z2
+        c = smallest + 1
+        axes[0].set_title(f"Distance to the great circle of minimum energy "
+                          f"$\\{{M_{c} = 0,\\ \\Vert M\\Vert = \\Vert M_0\\Vert\\}}$, {title}")
+        axes[0].set_ylabel(f"$\\sqrt{{M_{c}^2 + (\\rho - \\Vert M_0\\Vert)^2}}$")
+        axes[0].text(0.01, 0.03, f"$\\rho = \\sqrt{{M_{plane[0] + 1}^2 + M_{plane[1] + 1}^2}}$",
+                     transform=axes[0].transAxes, fontsize=9, color="0.3")
+        axes[1].set_title(f"Distance to the plane $M_{c} = 0$")
+        axes[1].set_ylabel(f"$|M_{c}(t)|$")
+        axes[1].set_xlabel("time t (last 20% of the run)")
         for a in axes:
-            a.set_xlabel("t")
-            a.legend(fontsize=8)
+            a.grid(True, which="major", alpha=0.3)
+        grouped_legend(axes[0], names)
+        if zeros:
+            footnote(fig, f"Some distances are exactly 0: {NOTE_ZEROS}.")
         save(fig, out, "distance_to_great_circle.png")
 
 
