@@ -18,77 +18,18 @@
 #include <regex>
 #include <sstream>
 
+#include "app_test_support.h"
+
 namespace {
 
-namespace fs = std::filesystem;
+using namespace ddb::test;
 
-struct AppResult {
-  int status = -1;      // exit status, -1 if killed
-  std::string output;   // stdout and stderr together
-  long max_rss_kb = 0;  // peak resident memory of the app alone
-};
-
-/// Runs the app with whitespace-separated arguments, without a shell, so that wait4()
-/// reports the app's own peak memory.
-AppResult run(const std::string& arguments) {
-  std::vector<std::string> words{DDB_COMPARE_PATH};
-  std::stringstream ss(arguments);
-  for (std::string word; ss >> word;) words.push_back(word);
-  std::vector<char*> argv;
-  for (auto& word : words) argv.push_back(word.data());
-  argv.push_back(nullptr);
-  const fs::path log = fs::temp_directory_path() /
-                       ("ddb_compare_test_output_" + std::to_string(::getpid()) + ".txt");
-  const pid_t child = ::fork();
-  if (child == 0) {
-    std::FILE* out = std::fopen(log.c_str(), "w");
-    if (out == nullptr) ::_exit(127);
-    ::dup2(::fileno(out), STDOUT_FILENO);
-    ::dup2(::fileno(out), STDERR_FILENO);
-    ::execv(argv[0], argv.data());
-    ::_exit(127);
-  }
-  AppResult result;
-  int status = 0;
-  rusage usage{};
-  if (child > 0 && ::wait4(child, &status, 0, &usage) == child) {
-    result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.max_rss_kb = usage.ru_maxrss;
-  }
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  result.output = text.str();
-  fs::remove(log);
-  return result;
-}
+AppResult run(const std::string& arguments) { return runProgram(DDB_COMPARE_PATH, arguments); }
 
 int runApp(const std::string& arguments) { return run("--quiet " + arguments).status; }
 
 fs::path freshFolder(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("ddb_compare_test_" + name);
-  fs::remove_all(dir);
-  return dir;
-}
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-std::vector<std::vector<double>> readCsv(const fs::path& path, std::string& header) {
-  std::ifstream in(path);
-  std::getline(in, header);
-  std::vector<std::vector<double>> rows;
-  for (std::string line; std::getline(in, line);) {
-    std::vector<double> row;
-    std::stringstream ss(line);
-    for (std::string cell; std::getline(ss, cell, ',');) row.push_back(std::stod(cell));
-    rows.push_back(row);
-  }
-  return rows;
+  return ddb::test::freshFolder("ddb_compare_test_", name);
 }
 
 TEST(DdbCompare, WritesContractFilesMatchingTheLibrary) {
@@ -96,7 +37,7 @@ TEST(DdbCompare, WritesContractFilesMatchingTheLibrary) {
   ASSERT_EQ(runApp("--scenario B --t-end 2 --h 0.1 --method ddb-cay,rk4 --out " + out.string()), 0);
   for (const std::string method : {"ddb-cay", "rk4"}) {
     std::string header;
-    const auto rows = readCsv(out / (method + ".csv"), header);
+    const auto rows = readCsv(out / (method + ".csv"), &header);
     EXPECT_EQ(header, "t,m1,m2,m3,energy,casimir");
     ASSERT_EQ(rows.size(), 21u);  // t = 0, 0.1, ..., 2
     for (const auto& row : rows) {
@@ -160,7 +101,7 @@ TEST(DdbCompare, SE3SystemsWriteTwoCasimirColumns) {
     const fs::path out = freshFolder(system);
     ASSERT_EQ(runApp("--system " + system + " --t-end 1 --repeat 1 --out " + out.string()), 0);
     std::string header;
-    const auto rows = readCsv(out / "ddb-cay.csv", header);
+    const auto rows = readCsv(out / "ddb-cay.csv", &header);
     EXPECT_EQ(header, "t,m1,m2,m3,m4,m5,m6,energy,casimir1,casimir2");
     EXPECT_EQ(rows.size(), 11u);
     const std::string summary = readFile(out / "summary.json");
@@ -178,7 +119,7 @@ TEST(DdbCompare, FailedSolveKeepsThePrefixAndExitsOne) {
   ASSERT_EQ(runApp("--method ddb-exp-exact --h 10 --t-end 400 --repeat 1 --out " + out.string()),
             1);
   std::string header;
-  const auto rows = readCsv(out / "ddb-exp-exact.csv", header);
+  const auto rows = readCsv(out / "ddb-exp-exact.csv", &header);
   EXPECT_EQ(rows.size(), 15u);
   for (const auto& row : rows)
     for (double v : row) EXPECT_TRUE(std::isfinite(v));
@@ -312,7 +253,7 @@ TEST(DdbCompare, ParametersThatChangeTheScenarioAreRecordedAsCustom) {
   ddb::integrate(*ddb, inertia.cwiseProduct(Eigen::Vector3d(0, 0.05, 1)), 0.0, 0.1, 2,
                  [&](long, double, const Eigen::Vector3d& mu) { last = mu; });
   std::string header;
-  const auto rows = readCsv(out / "ddb-cay.csv", header);
+  const auto rows = readCsv(out / "ddb-cay.csv", &header);
   ASSERT_EQ(rows.size(), 3u);
   for (int i = 0; i < 3; ++i) EXPECT_DOUBLE_EQ(rows.back()[1 + i], last(i));
 
@@ -347,7 +288,7 @@ TEST(DdbCompare, EveryWritesEveryKthStateAndTheLast) {
               0);
     for (const std::string method : {"ddb-cay", "rk4"}) {
       std::string header;
-      const auto rows = readCsv(out / (method + ".csv"), header);
+      const auto rows = readCsv(out / (method + ".csv"), &header);
       ASSERT_EQ(rows.size(), times.size()) << method << " every " << every;
       for (size_t i = 0; i < rows.size(); ++i) EXPECT_NEAR(rows[i][0], times[i], 1e-12);
     }
@@ -364,7 +305,7 @@ TEST(DdbCompare, TEndNotAMultipleOfHIsReportedAndTheReachedOneRecorded) {
   EXPECT_NEAR(std::stod(jsonValue(summary, "t_end")), 0.9, 1e-12);  // 3 steps of 0.3
   EXPECT_EQ(jsonValue(summary, "t_end_requested"), "1");
   std::string header;
-  const auto rows = readCsv(out / "ddb-cay.csv", header);
+  const auto rows = readCsv(out / "ddb-cay.csv", &header);
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_NEAR(rows.back()[0], 0.9, 1e-12);
   // A multiple says nothing.
@@ -444,7 +385,7 @@ TEST(DdbCompare, MemoryDoesNotGrowWithTheNumberOfSteps) {
   ASSERT_EQ(short_run.status, 0);
   ASSERT_EQ(long_run.status, 0);
   std::string header;
-  EXPECT_EQ(readCsv(out / "rk4.csv", header).size(), 2001u);
+  EXPECT_EQ(readCsv(out / "rk4.csv", &header).size(), 2001u);
   EXPECT_LT(long_run.max_rss_kb, short_run.max_rss_kb + 4096)
       << short_run.max_rss_kb << " kB vs " << long_run.max_rss_kb << " kB";
 }

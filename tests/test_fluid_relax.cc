@@ -16,73 +16,17 @@
 #include <fstream>
 #include <sstream>
 
+#include "app_test_support.h"
+
 namespace {
 
-namespace fs = std::filesystem;
+using namespace ddb::test;
 using Matrix = Eigen::MatrixXcd;
 
-struct AppResult {
-  int status = -1;     // exit status, -1 if killed
-  std::string output;  // stdout and stderr together
-};
-
-/// Runs the app with whitespace-separated arguments, without a shell.
-AppResult run(const std::string& arguments) {
-  std::vector<std::string> words{FLUID_RELAX_PATH};
-  std::stringstream ss(arguments);
-  for (std::string word; ss >> word;) words.push_back(word);
-  std::vector<char*> argv;
-  for (auto& word : words) argv.push_back(word.data());
-  argv.push_back(nullptr);
-  const fs::path log = fs::temp_directory_path() /
-                       ("fluid_relax_test_output_" + std::to_string(::getpid()) + ".txt");
-  const pid_t child = ::fork();
-  if (child == 0) {
-    std::FILE* out = std::fopen(log.c_str(), "w");
-    if (out == nullptr) ::_exit(127);
-    ::dup2(::fileno(out), STDOUT_FILENO);
-    ::dup2(::fileno(out), STDERR_FILENO);
-    ::execv(argv[0], argv.data());
-    ::_exit(127);
-  }
-  AppResult result;
-  int status = 0;
-  if (child > 0 && ::waitpid(child, &status, 0) == child) {
-    result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  result.output = text.str();
-  fs::remove(log);
-  return result;
-}
+AppResult run(const std::string& arguments) { return runProgram(FLUID_RELAX_PATH, arguments); }
 
 fs::path freshFolder(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("fluid_relax_test_" + name);
-  fs::remove_all(dir);
-  return dir;
-}
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-std::vector<std::vector<double>> readCsv(const fs::path& path, std::string* header) {
-  std::ifstream in(path);
-  std::string line;
-  if (header != nullptr) std::getline(in, *header);
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    std::stringstream ss(line);
-    for (std::string cell; std::getline(ss, cell, ',');) row.push_back(std::stod(cell));
-    rows.push_back(row);
-  }
-  return rows;
+  return ddb::test::freshFolder("fluid_relax_test_", name);
 }
 
 /// W from the layout of W_final.csv and --init-file.
