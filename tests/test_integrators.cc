@@ -271,5 +271,24 @@ TEST(RunMethod, InvalidArgumentInsideAStepIsAFailureNotAnException) {
   EXPECT_THROW(runMethod(*method, *system, top.mu0, -1.0, 15), InvalidArgument);
 }
 
+// An explicit step that overflows is reported as a non-finite state with its step, t and
+// h, not as a solver residual; the observer has seen every state before it.
+TEST(Integrate, OverflowIsReportedAsANonFiniteState) {
+  auto rk4 = ddb::makeMethod<SO3>("rk4", makeRigidBody(Eigen::Vector3d(1, 1.3, 0.5), 0.5));
+  long seen = 0;
+  try {
+    integrate(*rk4, Eigen::Vector3d(0, 65, 500), 0.0, 10.0, 1000,
+              [&](long k, double, const Eigen::Vector3d&) { seen = k + 1; });
+    FAIL() << "no overflow";
+  } catch (const NonFiniteState& e) {
+    const std::string what = e.what();
+    EXPECT_THAT(what, ::testing::HasSubstr("non-finite"));
+    EXPECT_THAT(what, ::testing::HasSubstr("rk4 step " + std::to_string(e.step())));
+    EXPECT_THAT(what, ::testing::Not(::testing::HasSubstr("residual")));
+    EXPECT_EQ(e.step(), seen - 1);
+    EXPECT_EQ(e.h(), 10.0);
+  }
+}
+
 }  // namespace
 }  // namespace ddb::test

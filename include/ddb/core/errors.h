@@ -57,6 +57,33 @@ class SolveFailure : public std::runtime_error {
   double time_, h_, residual_, tolerance_;
 };
 
+std::string formatValue(double v);
+template <class Derived>
+std::string formatValue(const Eigen::DenseBase<Derived>& v);
+
+/// A state that overflowed or became NaN inside a step. It is what it says, not a
+/// solver that missed its tolerance: the message names the step, t, h and the offending
+/// entry (docs/conventions.md §4). A SolveFailure, so the valid prefix is kept alike.
+class NonFiniteState : public SolveFailure {
+ public:
+  template <class State>
+  NonFiniteState(const std::string& method, long step, double time, double h, const State& state)
+      : SolveFailure(method + " step", step, time, h, INFINITY, 0),
+        message_(describe(method, step, time, h, formatValue(state))) {}
+  const char* what() const noexcept override { return message_.c_str(); }
+
+ private:
+  static std::string describe(const std::string& method, long step, double time, double h,
+                              const std::string& state) {
+    std::ostringstream os;
+    os.precision(17);
+    os << method << " step " << step << " (t = " << time << ", h = " << h
+       << ") made the state non-finite (overflow or NaN): state = " << state;
+    return os.str();
+  }
+  std::string message_;
+};
+
 inline std::string formatValue(double v) {
   std::ostringstream os;
   os.precision(17);

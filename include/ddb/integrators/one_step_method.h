@@ -48,7 +48,7 @@ void integrate(OneStepMethod<G>& method, const typename G::template Dual<double>
       throw failure.atStep(k, t, h);
     }
     if (!mu.allFinite()) {
-      throw SolveFailure(method.name() + " step (state became non-finite)", k, t, h, INFINITY, 0);
+      throw NonFiniteState(method.name(), k, t, h, mu);
     }
     observer(k + 1, t0 + static_cast<double>(k + 1) * h, mu);
   }
