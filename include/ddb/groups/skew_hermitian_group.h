@@ -154,14 +154,6 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
     out = W - ap + ap.adjoint() + apa;
   }
 
-  /// out = (I − a) p (I + a) = p − [a, p] − a p a; ap, apa workspaces. Two products.
-  template <class X>
-  static void cayleyReadOut(const X& a, const X& p, X& ap, X& apa, X& out) {
-    ap.noalias() = a * p;
-    apa.noalias() = ap * a;
-    out = p - ap + ap.adjoint() - apa;
-  }
-
   /// out = D_p[(I + a) p (I − a)][δ] with a = a(p) and δa = Da[δ] given:
   ///   δ + [a, δ] − a δ a + [δa, p] − (δa p a + a p δa),
   /// where a p δa = −(δa p a)ᴴ. Four products; t1, t2 workspaces.

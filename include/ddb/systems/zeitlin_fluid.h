@@ -72,9 +72,8 @@ class ZeitlinDiagnostics {
   using Matrix = Eigen::MatrixXcd;
   explicit ZeitlinDiagnostics(const ZeitlinHamiltonian& hamiltonian) : h_(hamiltonian) {}
 
-  double energy(const Matrix& W) const {
-    return (W.cwiseProduct(h_.streamMatrix(W).transpose())).sum().real() / (2.0 * W.rows());
-  }
+  /// E = ħ H / N (H = Re tr(WP)/(2ħ), the system's Hamiltonian).
+  double energy(const Matrix& W) const { return h_.value(W) * h_.hbar() / double(W.rows()); }
   double enstrophy(const Matrix& W) const { return W.squaredNorm() / (2.0 * W.rows()); }
   /// ‖[P, W]‖_F: zero exactly at steady states of the Euler flow.
   double commutatorNorm(const Matrix& W) const {
