@@ -18,6 +18,7 @@
 
 #include "common/atomic_file.h"
 #include "common/cli.h"
+#include "common/energy_rises.h"
 #include "common/exit_status.h"
 #include "common/format.h"
 #include "common/json.h"
@@ -172,11 +173,11 @@ struct Sweep {
   }
 };
 
-/// round(t_end / h), at least 1 and at most kMaxSteps.
-long stepCount(double t_end, double h, const std::string& flag) {
+/// round(t_end / h), at least 1; more than kMaxSteps is bad input naming `flag` = `text`.
+long stepCount(double t_end, double h, const std::string& flag, const std::string& text) {
   const double n = std::round(t_end / h);
   if (n > static_cast<double>(kMaxSteps)) {
-    app::usageError(flag, app::number(h), "more than 1e9 steps to t-end " + app::number(t_end));
+    app::usageError(flag, text, fmt::format("more than 1e9 steps of h = {} to t-end {}", h, t_end));
   }
   return std::max(1L, static_cast<long>(n));
 }
@@ -198,6 +199,7 @@ struct Problem {
   std::string scenario;       // "A", "B", "C", "custom" or "none"
   std::string scenario_base;  // the scenario "custom" started from
   double t_end = 0.0;         // the default horizon
+  double alpha = 0.0;         // the dissipation scale, for energy_rises
   app::JsonObject parameters;
 };
 
@@ -227,8 +229,9 @@ Problem<SO3> rigidBodyProblem(const CLI::App& cli, const Options& o) {
   used.alpha = optionalNumber("--alpha", o.alpha, base.alpha);
   used.omega0 = optionalVector<3>("--omega0", o.omega0, base.omega0);
   const bool custom = !used.sameParameters(base);
-  Problem<SO3> p{used.system(),           used.mu0(), custom ? "custom" : base.name,
-                 custom ? base.name : "", base.t_end, {}};
+  Problem<SO3> p{
+      used.system(), used.mu0(), custom ? "custom" : base.name, custom ? base.name : "", base.t_end,
+      used.alpha,    {}};
   p.parameters.add("inertia", app::JsonObject::array(values(used.inertia)))
       .add("alpha", used.alpha)
       .add("omega0", app::JsonObject::array(values(used.omega0)))
@@ -258,6 +261,7 @@ Problem<SE3> se3Problem(const CLI::App& cli, const Options& o) {
     }
     p.mu0 = setup.mu0;
     p.t_end = setup.t_end;
+    p.alpha = setup.alpha;
     p.parameters.add("inertia", app::JsonObject::array(values(setup.inertia)))
         .add("alpha", setup.alpha)
         .add("metric", app::JsonObject::array(values(setup.metric)))
@@ -285,6 +289,70 @@ Problem<SE3> se3Problem(const CLI::App& cli, const Options& o) {
   return p;
 }
 
+/// ‖∂f/∂μ‖∞ at μ₀ of the flow μ̇ = f(μ) (core/lie_poisson_system.h), through Jets; inf
+/// if H(μ₀), f(μ₀) or a derivative is not finite. Its inverse is the flow's fastest time
+/// scale there, which the explicit adaptive reference must resolve.
+template <class G>
+double flowRate(const LiePoissonSystem<G>& system, const typename G::template Dual<double>& mu0) {
+  using Jet = ceres::Jet<double, G::kDim>;
+  typename G::template Dual<Jet> mu;
+  for (int i = 0; i < G::kDim; ++i) mu(i) = Jet(mu0(i), i);
+  if (!std::isfinite(system.energy(mu0))) return INFINITY;
+  const auto f = system.vectorField(mu);
+  double rate = 0.0;
+  for (int i = 0; i < G::kDim; ++i) {
+    const double row = f(i).v.cwiseAbs().sum();
+    if (!std::isfinite(f(i).a) || !std::isfinite(row)) return INFINITY;
+    rate = std::max(rate, row);
+  }
+  return rate;
+}
+
+/// Why the reference cannot follow the flow from μ₀ to t_end in at most kMaxSteps of
+/// its time scale 1/rate, or "" if it can. An overflowing or extremely stiff problem
+/// (α = 1e308, 𝕀 = 1e-300, μ₀ = 1e200) would otherwise run for hours or fail at step 0.
+template <class G>
+std::string unresolvable(const Problem<G>& p, double t_end) {
+  const double rate = flowRate(*p.system, p.mu0);
+  if (rate * t_end <= static_cast<double>(kMaxSteps)) return "";
+  return fmt::format(
+      "the flow's rate |df/dmu|_inf = {:.3g} at mu0 exceeds 1e9/t-end = {:.3g}: no integrator "
+      "resolves it in 1e9 steps",
+      rate, static_cast<double>(kMaxSteps) / t_end);
+}
+
+/// Bad input if the problem cannot be resolved (unresolvable()), naming the first given
+/// flag whose default alone makes it resolvable, else the first given one: the flag
+/// whose value made the flow too fast or overflow.
+template <class G, class MakeProblem>
+void requireResolvable(const Options& o, const Problem<G>& problem, const MakeProblem& make) {
+  const auto horizon = [](const Options& options, double fallback) {
+    return optionalNumber("--t-end", options.t_end, fallback);
+  };
+  const std::string why = unresolvable(problem, horizon(o, problem.t_end));
+  if (why.empty()) return;
+  const std::vector<std::pair<const char*, std::string Options::*>> flags{
+      {"--alpha", &Options::alpha},   {"--inertia", &Options::inertia},
+      {"--omega0", &Options::omega0}, {"--mu0", &Options::mu0},
+      {"--mgl", &Options::mgl},       {"--chi", &Options::chi},
+      {"--metric", &Options::metric}, {"--mass", &Options::mass},
+      {"--t-end", &Options::t_end}};
+  const std::pair<const char*, std::string Options::*>* blamed = nullptr;
+  for (const auto& flag : flags) {
+    if ((o.*flag.second).empty()) continue;
+    Options reverted = o;
+    (reverted.*flag.second).clear();
+    const auto fixed = make(reverted);
+    if (unresolvable(fixed, horizon(reverted, fixed.t_end)).empty()) {
+      blamed = &flag;
+      break;
+    }
+    if (blamed == nullptr) blamed = &flag;
+  }
+  if (blamed == nullptr) throw std::logic_error("the default problem is unresolvable: " + why);
+  app::usageError(blamed->first, o.*blamed->second, why);
+}
+
 /// h, t-end, steps, sweep and method names; `default_t_end` is the system's or scenario's.
 Settings commonSettings(const Options& o, double default_t_end) {
   Settings s;
@@ -292,7 +360,10 @@ Settings commonSettings(const Options& o, double default_t_end) {
   if (!(s.h > 0)) app::usageError("--h", o.h, "must be > 0");
   s.t_end = optionalNumber("--t-end", o.t_end, default_t_end);
   if (!(s.t_end > 0)) app::usageError("--t-end", o.t_end, "must be > 0");
-  s.steps = stepCount(s.t_end, s.h, "--h");
+  // The message names both; the flag is --t-end if given (every default t-end takes at
+  // most 2500 steps of the default h), else --h.
+  s.steps = o.t_end.empty() ? stepCount(s.t_end, s.h, "--h", o.h)
+                            : stepCount(s.t_end, s.h, "--t-end", o.t_end);
   if (o.repeat < 1) app::usageError("--repeat", std::to_string(o.repeat), "must be >= 1");
   if (o.every < 1) app::usageError("--every", std::to_string(o.every), "must be >= 1");
   if (!o.sweep.empty()) {
@@ -307,11 +378,16 @@ Settings commonSettings(const Options& o, double default_t_end) {
                       "need 0 < HMIN <= HMAX and an integer COUNT in [1, 1000]");
     }
     s.sweep.count = static_cast<int>(count);
-    stepCount(s.t_end, s.sweep.h_min, "--sweep-h");
+    stepCount(s.t_end, s.sweep.h_min, "--sweep-h", o.sweep);
   }
-  s.methods = o.methods.empty() ? methodNames() : app::split(o.methods);
-  if (s.methods.empty()) app::usageError("--method", o.methods, "no method given");
-  for (const auto& m : s.methods) app::requireChoice("--method", m, methodNames());
+  s.methods = o.methods.empty() ? methodNames() : app::splitItems("--method", o.methods);
+  for (auto m = s.methods.begin(); m != s.methods.end(); ++m) {
+    app::requireChoice("--method", *m, methodNames());
+    // Twice the same method would write its file twice and its summary entry twice.
+    if (std::find(s.methods.begin(), m, *m) != m) {
+      app::usageError("--method", o.methods, *m + " is given twice");
+    }
+  }
   s.out = o.out;
   return s;
 }
@@ -410,13 +486,21 @@ int compare(const Options& o, const Settings& s, const Problem<G>& problem) {
   for (size_t m = 0; m < names.size(); ++m) {
     const std::string& name = names[m];
     RunOptions options;
-    options.every = o.every;
     options.progress = [&](long done, long total) { progress.update(name, done, total); };
     app::AtomicFile csv_file(s.out / (name + ".csv"));
     TrajectoryCsv<G> csv(csv_file, system);
-    const RunResult<G> run =
-        runMethod(*methods[m], system, problem.mu0, s.h, s.steps, options, csv);
+    // Every state passes the energy check; only every K-th reaches the file.
+    EveryKth<typename G::template Dual<double>, TrajectoryCsv<G>> rows(o.every, csv);
+    const bool watch_energy = app::EnergyRises::applies(name, problem.alpha);
+    app::EnergyRises rises;
+    const RunResult<G> run = runMethod(*methods[m], system, problem.mu0, s.h, s.steps, options,
+                                       [&](long k, double t, const auto& mu) {
+                                         if (watch_energy) rises.observe(k, t, system.energy(mu));
+                                         rows(k, t, mu);
+                                       });
+    rows.finish();
     csv_file.commit();
+    rises.warnIfAny(name);
 
     // A short run is timed again without output, for a median that is not noise.
     double runtime = run.runtime_s;
@@ -439,6 +523,7 @@ int compare(const Options& o, const Settings& s, const Problem<G>& problem) {
         .add("energy_final", system.energy(run.final))
         .add("steps", run.steps)
         .add("t_final", run.t_final);
+    if (watch_energy) entry.add("energy_rises", rises.count());
     if (run.ok()) {
       const double err_final = reference.ok() ? (run.final - reference.final).norm() : NAN;
       entry.addString("status", "ok")
@@ -473,7 +558,7 @@ int compare(const Options& o, const Settings& s, const Problem<G>& problem) {
     std::string rows = "method,h,err_final,casimir_drift,runtime_s\n";
     const auto hs = s.sweep.steps();
     for (size_t i = 0; i < hs.size(); ++i) {
-      const long n = stepCount(s.t_end, hs[i], "--sweep-h");
+      const long n = stepCount(s.t_end, hs[i], "--sweep-h", o.sweep);
       // The reference at the same final time n·h, in one adaptive sweep.
       progress.show("sweep " + std::to_string(i + 1) + "/" + std::to_string(hs.size()) +
                     fmt::format("  h = {}  reference", hs[i]));
@@ -529,6 +614,15 @@ auto asUsageError(F&& make) {
   }
 }
 
+/// Every check of the input, in the order the messages name them, then the comparison.
+template <class MakeProblem>
+int checkAndCompare(const Options& o, const MakeProblem& make) {
+  const auto problem = make(o);
+  const Settings settings = commonSettings(o, problem.t_end);
+  requireResolvable(o, problem, make);
+  return compare(o, settings, problem);
+}
+
 int runCompare(int argc, char** argv) {
   CLI::App cli{"Compare integrators for double-bracket dissipation (paper, Section 5)", kApp};
   Options o;
@@ -537,14 +631,13 @@ int runCompare(int argc, char** argv) {
   app::setupLogging(o.log);
 
   app::requireChoice("--system", o.system, firstOf(systemDescriptions()));
-  int status = app::kExitOk;
-  if (o.system == "rigid-body") {
-    const auto problem = asUsageError([&] { return rigidBodyProblem(cli, o); });
-    status = compare(o, commonSettings(o, problem.t_end), problem);
-  } else {
-    const auto problem = asUsageError([&] { return se3Problem(cli, o); });
-    status = compare(o, commonSettings(o, problem.t_end), problem);
-  }
+  const auto rigidBody = [&](const Options& options) {
+    return asUsageError([&] { return rigidBodyProblem(cli, options); });
+  };
+  const auto se3 = [&](const Options& options) {
+    return asUsageError([&] { return se3Problem(cli, options); });
+  };
+  int status = o.system == "rigid-body" ? checkAndCompare(o, rigidBody) : checkAndCompare(o, se3);
   if (o.plot) status = std::max(status, app::runPlotScript(DDB_PLOT_SCRIPT, o.out));
   return status;
 }

@@ -21,6 +21,7 @@
 
 #include "common/atomic_file.h"
 #include "common/cli.h"
+#include "common/energy_rises.h"
 #include "common/exit_status.h"
 #include "common/format.h"
 #include "common/json.h"
@@ -93,7 +94,15 @@ void addOptions(CLI::App& cli, Options& o) {
   cli.add_option("--t-end", o.t_end,
                  "final time: round(T/h) steps of the given --h, or with the default h the "
                  "smallest step count whose equal steps are no longer than it");
-  cli.add_option("--seed", o.seed, "seed of the initial vorticity")->capture_default_str();
+  cli.add_option("--seed", o.seed, "seed of the initial vorticity")
+      ->capture_default_str()
+      ->check(
+          [](const std::string& text) {
+            // CLI11 would wrap a negative seed around to 2^64 - 1 without a word.
+            return text.rfind('-', 0) != 0 ? std::string()
+                                           : text + " is negative; a seed is in [0, 2^64)";
+          },
+          "");
   cli.add_option("--init", o.init, "initial vorticity (listed below)")->capture_default_str();
   cli.add_option("--init-file", o.init_file,
                  "read W0 from a CSV of N rows x 2N columns (row j: Re W[j,:] then Im W[j,:]); "
@@ -202,6 +211,33 @@ double spectralNorm(const Matrix& A) {
   return std::max(std::abs(spectrum(0)), std::abs(spectrum(spectrum.size() - 1)));
 }
 
+/// Bad input if the first step would overflow: the DDB step squares its dissipative part
+/// h|α|‖P₀‖₂‖W₀‖₂/ħ, which past √(largest double) ≈ 1e154 becomes inf and then NaN
+/// (measured without this check at N = 8 and 32 with the default h: α = 1e155 ran, and
+/// 1e160 made the state NaN at step 0).
+/// The check keeps a margin, kMaxDissipativeStep. A huge α below it is valid: the flow
+/// relaxes within the step. The flag named is --alpha if α alone makes it too large
+/// (with the default α it would pass), else --h if given, else the initial vorticity.
+constexpr double kMaxDissipativeStep = 1e150;
+void requireRepresentableStep(const CLI::App& cli, const Options& o, const Settings& s) {
+  const ZeitlinHamiltonian hamiltonian(s.W0.rows());
+  const double scale =
+      spectralNorm(hamiltonian.streamMatrix(s.W0)) * spectralNorm(s.W0) / hamiltonian.hbar() * s.h;
+  // NaN (0 · inf) fails too.
+  const auto fits = [&](double alpha) { return std::abs(alpha) * scale <= kMaxDissipativeStep; };
+  if (fits(s.alpha)) return;
+  const std::string why = fmt::format(
+      "the dissipative step h|alpha||P0|_2|W0|_2/hbar = {:.3g} exceeds {:g} and would "
+      "overflow",
+      std::abs(s.alpha) * scale, kMaxDissipativeStep);
+  if (fits(std::stod(Options().alpha))) {
+    app::usageError("--alpha", o.alpha, why);
+  }
+  if (cli.count("--h") > 0) app::usageError("--h", o.h, why);
+  if (!o.init_file.empty()) app::usageError("--init-file", o.init_file, why);
+  throw std::logic_error("a generated vorticity overflows: " + why);
+}
+
 Settings settings(const CLI::App& cli, const Options& o) {
   Settings s;
   app::requireChoice("--method", o.method, namesOf(fluidMethods()));
@@ -235,15 +271,17 @@ Settings settings(const CLI::App& cli, const Options& o) {
     // With the default h, equal steps that end exactly at T and are no longer than it.
     const double count = s.default_h ? std::ceil(t_end / s.h) : std::round(t_end / s.h);
     if (count > static_cast<double>(kMaxSteps)) {
-      app::usageError("--t-end", o.t_end, "more than 1e9 steps of h = " + app::number(s.h));
+      app::usageError("--t-end", o.t_end, fmt::format("more than 1e9 steps of h = {}", s.h));
     }
     s.steps = std::max(1L, static_cast<long>(count));
     if (s.default_h) s.h = t_end / static_cast<double>(s.steps);
-    const double reached = static_cast<double>(s.steps) * s.h;
-    if (std::abs(reached - t_end) > 1e-9 * t_end) {
-      spdlog::warn("--t-end {} is not a multiple of --h {}: {} steps end at t = {}", t_end, s.h,
-                   s.steps, reached);
-    }
+  }
+  requireRepresentableStep(cli, o, s);
+  // Only valid input is warned about: bad input gives its one line and nothing else.
+  const double reached = static_cast<double>(s.steps) * s.h;
+  if (by_time && std::abs(reached - t_end) > 1e-9 * t_end) {
+    spdlog::warn("--t-end {} is not a multiple of --h {}: {} steps end at t = {}", t_end, s.h,
+                 s.steps, reached);
   }
   s.out = o.out;
   return s;
@@ -343,6 +381,8 @@ int relax(const Options& o, const Settings& s) {
   };
   EveryKth<Matrix, decltype(historyRow)> history(o.every, historyRow);
 
+  const bool watch_energy = app::EnergyRises::applies(o.method, s.alpha);
+  app::EnergyRises rises;
   app::Progress progress(o.log.quiet);
   const std::string label = o.method + " N=" + std::to_string(n);
   const RunResult<SUN> run = runMethod(
@@ -353,6 +393,7 @@ int relax(const Options& o, const Settings& s) {
           iterations_total += iterations;
           iterations_max = std::max(iterations_max, iterations);
         }
+        if (watch_energy) rises.observe(k, t, diagnostics.energy(W));
         drift = spectrumDrift(W);
         drift_max = std::max(drift_max, drift);
         history(k, t, W);
@@ -364,6 +405,7 @@ int relax(const Options& o, const Settings& s) {
   history.finish();
   history_file.commit();
   progress.clear();
+  rises.warnIfAny(o.method);
 
   const double commutator_final = diagnostics.commutatorNorm(run.final);
   app::JsonObject summary;
@@ -392,6 +434,7 @@ int relax(const Options& o, const Settings& s) {
       .add("iterations_mean",
            run.steps > 0 ? static_cast<double>(iterations_total) / run.steps : 0.0)
       .add("iterations_max", iterations_max);
+  if (watch_energy) summary.add("energy_rises", rises.count());
   if (!run.ok()) {
     // A failed run writes no final state: W_final.csv and omega_final.csv would claim a
     // time the run did not reach (docs/file-formats.md).

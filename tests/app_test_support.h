@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -17,29 +18,49 @@ namespace ddb::test {
 
 namespace fs = std::filesystem;
 
+inline std::string readFile(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
 struct AppResult {
-  int status = -1;      // exit status, -1 if killed
-  std::string output;   // stdout and stderr together
+  int status = -1;      // exit status, -1 if killed (e.g. by the timeout)
+  std::string output;   // stdout, then stderr
+  std::string error;    // stderr alone
   long max_rss_kb = 0;  // peak resident memory of the app alone
+};
+
+/// How runProgram() starts the app beyond its arguments.
+struct RunEnvironment {
+  std::vector<std::string> variables;  // "NAME=value", added to the test's environment
+  unsigned timeout_s = 0;              // kill the app (SIGALRM) after this; 0: never
 };
 
 /// Runs `program` with whitespace-separated arguments, without a shell, so that wait4()
 /// reports the app's own peak memory.
-inline AppResult runProgram(const std::string& program, const std::string& arguments) {
+inline AppResult runProgram(const std::string& program, const std::string& arguments,
+                            const RunEnvironment& environment = {}) {
   std::vector<std::string> words{program};
   std::stringstream ss(arguments);
   for (std::string word; ss >> word;) words.push_back(word);
   std::vector<char*> argv;
   for (auto& word : words) argv.push_back(word.data());
   argv.push_back(nullptr);
-  const fs::path log =
-      fs::temp_directory_path() / ("ddb_app_test_output_" + std::to_string(::getpid()) + ".txt");
+  const std::string stem = "ddb_app_test_" + std::to_string(::getpid());
+  const fs::path out_log = fs::temp_directory_path() / (stem + "_stdout.txt");
+  const fs::path err_log = fs::temp_directory_path() / (stem + "_stderr.txt");
   const pid_t child = ::fork();
   if (child == 0) {
-    std::FILE* out = std::fopen(log.c_str(), "w");
-    if (out == nullptr) ::_exit(127);
+    std::FILE* out = std::fopen(out_log.c_str(), "w");
+    std::FILE* err = std::fopen(err_log.c_str(), "w");
+    if (out == nullptr || err == nullptr) ::_exit(127);
     ::dup2(::fileno(out), STDOUT_FILENO);
-    ::dup2(::fileno(out), STDERR_FILENO);
+    ::dup2(::fileno(err), STDERR_FILENO);
+    for (const auto& variable : environment.variables) ::putenv(strdup(variable.c_str()));
+    // An alarm survives execv: a hanging app is killed instead of hanging the test.
+    if (environment.timeout_s > 0) ::alarm(environment.timeout_s);
     ::execv(argv[0], argv.data());
     ::_exit(127);
   }
@@ -50,11 +71,10 @@ inline AppResult runProgram(const std::string& program, const std::string& argum
     result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     result.max_rss_kb = usage.ru_maxrss;
   }
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  result.output = text.str();
-  fs::remove(log);
+  result.error = readFile(err_log);
+  result.output = readFile(out_log) + result.error;
+  fs::remove(out_log);
+  fs::remove(err_log);
   return result;
 }
 
@@ -63,13 +83,6 @@ inline fs::path freshFolder(const std::string& prefix, const std::string& name) 
   const fs::path dir = fs::temp_directory_path() / (prefix + name);
   fs::remove_all(dir);
   return dir;
-}
-
-inline std::string readFile(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 /// The numeric rows of a CSV file; its header line into *header unless null.

@@ -92,7 +92,8 @@ void prepareOutputFolder(const std::string& flag, const std::string& text,
   std::error_code ec;
   std::filesystem::create_directories(folder, ec);
   if (ec || !std::filesystem::is_directory(folder)) {
-    usageError(flag, text, "cannot create the folder");
+    usageError(flag, text,
+               "cannot create the folder" + (ec ? ": " + ec.message() : ": a file is in the way"));
   }
   if (::access(folder.c_str(), W_OK | X_OK) != 0) usageError(flag, text, "folder is not writable");
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <map>
 #include <sstream>
 
 #include "common/exit_status.h"
@@ -35,8 +36,16 @@ double parseNumber(const std::string& flag, const std::string& text, const std::
   usageError(flag, text, "'" + item + "' is not a finite number");
 }
 
+std::vector<std::string> splitItems(const std::string& flag, const std::string& text) {
+  std::vector<std::string> items = split(text);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (items[i].empty()) usageError(flag, text, "item " + std::to_string(i + 1) + " is empty");
+  }
+  return items;
+}
+
 std::vector<double> parseNumbers(const std::string& flag, const std::string& text, int count) {
-  const std::vector<std::string> items = split(text);
+  const std::vector<std::string> items = splitItems(flag, text);
   if (static_cast<int>(items.size()) != count) {
     usageError(flag, text, "expected " + std::to_string(count) + " comma-separated numbers");
   }
@@ -76,7 +85,42 @@ void addVersionFlag(CLI::App& cli, const std::string& app) {
   cli.set_version_flag("--version", app + " " + projectVersion());
 }
 
+namespace {
+
+/// Throws a UsageError naming an option given more than once and every value it was
+/// given: CLI11 would say only "At Most 1 required but received 2" (or, for a flag,
+/// nothing at all), and a silent choice between two values is a wrong number.
+void rejectRepeated(const CLI::App& cli, int argc, char** argv) {
+  std::map<std::string, std::vector<std::string>> given;
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word.rfind("--", 0) != 0) continue;
+    const std::size_t equals = word.find('=');
+    const std::string name = word.substr(0, equals);
+    const CLI::Option* option = cli.get_option_no_throw(name);
+    if (option == nullptr) continue;  // an unknown flag: CLI11 reports it
+    std::string value;
+    if (equals != std::string::npos) {
+      value = word.substr(equals + 1);
+    } else if (option->get_expected_max() > 0 && i + 1 < argc) {
+      value = argv[++i];
+    }
+    given[name].push_back(value);
+  }
+  for (const auto& [name, values] : given) {
+    if (values.size() < 2) continue;
+    const std::string why = "given " + std::to_string(values.size()) + " times; give it once";
+    if (cli.get_option(name)->get_expected_max() == 0) throw UsageError(name + ": " + why);
+    std::string all;
+    for (const auto& value : values) all += (all.empty() ? "" : " and ") + value;
+    usageError(name, all, why);
+  }
+}
+
+}  // namespace
+
 std::optional<int> parseCommandLine(CLI::App& cli, int argc, char** argv) {
+  rejectRepeated(cli, argc, argv);
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

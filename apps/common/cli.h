@@ -20,6 +20,9 @@ namespace ddb::app {
 /// "a,b,,c" -> {"a", "b", "", "c"}; an empty text gives no items.
 std::vector<std::string> split(const std::string& text, char separator = ',');
 
+/// split(text), or a UsageError naming `flag` if an item is empty ("a,,b", "a,").
+std::vector<std::string> splitItems(const std::string& flag, const std::string& text);
+
 /// One finite number `item` taken from the value `text` of `flag`.
 double parseNumber(const std::string& flag, const std::string& text, const std::string& item);
 
@@ -50,7 +53,8 @@ std::string projectVersion();
 void addVersionFlag(CLI::App& cli, const std::string& app);
 
 /// Parses the command line: std::nullopt to go on, or the exit status after --help or
-/// --version was printed. Any other CLI11 error becomes a UsageError.
+/// --version was printed. Any other CLI11 error, and an option given twice, becomes a
+/// UsageError.
 std::optional<int> parseCommandLine(CLI::App& cli, int argc, char** argv);
 
 }  // namespace ddb::app

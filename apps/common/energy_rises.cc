@@ -1,0 +1,41 @@
+#include "common/energy_rises.h"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ddb::app {
+
+bool EnergyRises::applies(const std::string& method, double alpha) {
+  return alpha > 0 && method.find("ddb") != std::string::npos;
+}
+
+void EnergyRises::observe(long k, double t, double energy) {
+  if (started_) {
+    const double rise = energy - last_;
+    const double roundoff = kRoundOffUlps * std::numeric_limits<double>::epsilon() *
+                            std::max(std::abs(last_), std::abs(energy));
+    if (rise > roundoff) {
+      if (count_ == 0) {
+        first_step_ = k;
+        first_t_ = t;
+      }
+      ++count_;
+      largest_ = std::max(largest_, rise);
+    }
+  }
+  started_ = true;
+  last_ = energy;
+}
+
+void EnergyRises::warnIfAny(const std::string& method) const {
+  if (count_ == 0) return;
+  spdlog::warn(
+      "{}: the energy rose beyond round-off in {} steps (first at step {}, t = {}; largest "
+      "rise {:.3g}) although alpha > 0: h is probably too large",
+      method, count_, first_step_, first_t_, largest_);
+}
+
+}  // namespace ddb::app

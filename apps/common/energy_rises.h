@@ -1,0 +1,37 @@
+// Energy rises of a dissipative run (docs/file-formats.md, "energy_rises"). With α > 0
+// the flow lowers the energy (dH/dt = −k(ad*_ξ μ, ad*_ξ μ) ≤ 0) and a DDB step does too
+// when h resolves the flow; a rise beyond round-off is a sign that h is too large, which
+// the apps count and report instead of passing over in silence.
+#pragma once
+
+#include <string>
+
+namespace ddb::app {
+
+class EnergyRises {
+ public:
+  /// A rise E_k − E_{k−1} counts if it exceeds kRoundOffUlps·ε·max(|E_{k−1}|, |E_k|):
+  /// the energy is a sum of a few rounded products, each good to ε relative, so honest
+  /// round-off stays within a few ε of the larger of the two values.
+  static constexpr double kRoundOffUlps = 8.0;
+
+  /// Whether rises are counted: a DDB method (its name contains "ddb": ddb-*, sddb-*,
+  /// ddb4-*, ddb6-*) with α > 0. Other methods, and α ≤ 0, promise no monotone energy.
+  static bool applies(const std::string& method, double alpha);
+
+  /// The energy of state k at time t, in the order of the run.
+  void observe(long k, double t, double energy);
+  long count() const { return count_; }
+  /// Logs a warning naming `method`, the count, the first and the largest rise, if any.
+  void warnIfAny(const std::string& method) const;
+
+ private:
+  bool started_ = false;
+  double last_ = 0.0;
+  long count_ = 0;
+  long first_step_ = 0;
+  double first_t_ = 0.0;
+  double largest_ = 0.0;
+};
+
+}  // namespace ddb::app

@@ -1,0 +1,87 @@
+// The apps against real I/O faults: tests/io_fault_preload.cc, preloaded into the
+// unmodified binaries, makes one operation on one output file fail, as a full disk
+// (write or fsync: ENOSPC) or an output folder that turned unwritable (creating the
+// file or renaming it into place: EACCES) would. Each fault must give exit status 1 and
+// a message naming the file, leave no temporary file, and keep every file completed
+// before it whole: byte for byte what a run without the fault wrote.
+#include <gmock/gmock.h>
+
+#include <cstdlib>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "app_test_support.h"
+
+namespace {
+
+using namespace ddb::test;
+
+struct AppCase {
+  std::string program, arguments;
+  std::vector<std::string> files;  // the output files, in the order the app writes them
+};
+
+const std::vector<std::string> kOperations{"write", "fsync", "create", "rename"};
+
+AppResult runWithFault(const AppCase& app, const fs::path& out, const std::string& operation,
+                       const std::string& file) {
+  RunEnvironment environment;
+  environment.timeout_s = 60;
+  environment.variables = {"LD_PRELOAD=" IO_FAULT_PRELOAD, "DDB_IO_FAULT_OP=" + operation,
+                           "DDB_IO_FAULT_PATH=" + file};
+  // Under AddressSanitizer the preloaded library comes before the sanitizer's runtime.
+  const char* asan = std::getenv("ASAN_OPTIONS");
+  environment.variables.push_back(std::string("ASAN_OPTIONS=") + (asan ? asan : "") +
+                                  ":verify_asan_link_order=0");
+  return runProgram(app.program, app.arguments + " --out " + out.string(), environment);
+}
+
+void expectFaultsHandled(const AppCase& app, const std::string& prefix,
+                         const std::vector<std::string>& faulty_files) {
+  const fs::path clean = freshFolder(prefix, "clean");
+  ASSERT_EQ(runProgram(app.program, app.arguments + " --out " + clean.string()).status, 0);
+  for (const std::string& file : faulty_files) {
+    for (const std::string& operation : kOperations) {
+      const std::string what = operation + " fault on " + file;
+      const fs::path out = freshFolder(prefix, "fault");
+      const AppResult r = runWithFault(app, out, operation, file);
+      EXPECT_EQ(r.status, 1) << what << "\n" << r.output;
+      EXPECT_THAT(r.error, ::testing::HasSubstr((out / file).string())) << what;
+      // What was written before the faulty file, whole, and nothing else.
+      std::set<std::string> expected;
+      for (const std::string& name : app.files) {
+        if (name == file) break;
+        expected.insert(name);
+      }
+      std::set<std::string> found;
+      for (const auto& entry : fs::directory_iterator(out)) {
+        found.insert(entry.path().filename().string());
+      }
+      EXPECT_EQ(found, expected) << what << ": a temporary or a partial file was left";
+      for (const std::string& name : expected) {
+        EXPECT_EQ(readFile(out / name), readFile(clean / name)) << what << ": " << name;
+      }
+    }
+  }
+}
+
+TEST(IoFaults, DdbCompareExitsOneNamingTheFileAndKeepsTheFilesBefore) {
+  // The trajectories, then summary.json and runtime_table.md (whose runtimes differ
+  // between runs, so the faults are put on the CSV files only).
+  const AppCase app{DDB_COMPARE_PATH,
+                    "--quiet --t-end 1 --method ddb-cay,rk4,sddb-cay --repeat 1",
+                    {"ddb-cay.csv", "rk4.csv", "sddb-cay.csv", "summary.json", "runtime_table.md"}};
+  expectFaultsHandled(app, "ddb_io_faults_", {"ddb-cay.csv", "sddb-cay.csv"});
+}
+
+TEST(IoFaults, FluidRelaxExitsOneNamingTheFileAndKeepsTheFilesBefore) {
+  // history.csv is streamed while the run goes, so its fault arrives inside the run.
+  const AppCase app{
+      FLUID_RELAX_PATH,
+      "--quiet --n 8 --steps 20 --seed 2",
+      {"history.csv", "W_final.csv", "omega_initial.csv", "omega_final.csv", "summary.json"}};
+  expectFaultsHandled(app, "fluid_io_faults_", {"history.csv", "omega_initial.csv"});
+}
+
+}  // namespace
