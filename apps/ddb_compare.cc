@@ -38,6 +38,7 @@ constexpr long kMaxSteps = 1000000000L;
 // A run shorter than this is timed again (--repeat) for a stable median; a longer one
 // is timed once, as it ran.
 constexpr double kRepeatBelowSeconds = 1.0;
+constexpr int kMaxRepeat = 1000;
 
 const std::vector<std::pair<std::string, std::string>>& systemDescriptions() {
   static const std::vector<std::pair<std::string, std::string>> systems{
@@ -364,7 +365,11 @@ Settings commonSettings(const Options& o, double default_t_end) {
   // most 2500 steps of the default h), else --h.
   s.steps = o.t_end.empty() ? stepCount(s.t_end, s.h, "--h", o.h)
                             : stepCount(s.t_end, s.h, "--t-end", o.t_end);
-  if (o.repeat < 1) app::usageError("--repeat", std::to_string(o.repeat), "must be >= 1");
+  // Each timed run is shorter than 1 s: 1000 of them per method bound the timing to
+  // minutes, where 1e9 would take years.
+  if (o.repeat < 1 || o.repeat > kMaxRepeat) {
+    app::usageError("--repeat", std::to_string(o.repeat), "must be in [1, 1000]");
+  }
   if (o.every < 1) app::usageError("--every", std::to_string(o.every), "must be >= 1");
   if (!o.sweep.empty()) {
     const auto parts = app::split(o.sweep, ':');
