@@ -3,7 +3,8 @@
 // (write or fsync: ENOSPC) or an output folder that turned unwritable (creating the
 // file or renaming it into place: EACCES) would. Each fault must give exit status 1 and
 // a message naming the file, leave no temporary file, and keep every file completed
-// before it whole: byte for byte what a run without the fault wrote.
+// before it whole: byte for byte what a run without the fault wrote. (A chmod of the
+// folder mid-run would not do: tests may run as root, whom a mode of 0555 does not stop.)
 #include <gmock/gmock.h>
 
 #include <cstdlib>
