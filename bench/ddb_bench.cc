@@ -1,7 +1,8 @@
 // One step (h = 0.1) of every registry method on the rigid body of Scenario A and on
 // the default heavy top (include/ddb/systems/paper_scenarios.h), named rigid_body/<method> and
 // heavy_top/<method> (docs/file-formats.md), with Boost.Odeint's runge_kutta4 on the same vector
-// field as the peer `rigid_body/odeint-rk4`. The counter allocs_per_step counts mallocs per
+// field as the peer `rigid_body/odeint-rk4`, and RK4 written out by hand as the floor
+// `rigid_body/rk4-handwritten`. The counter allocs_per_step counts mallocs per
 // step (tools/malloc_counter.h). The fluid's benchmarks are in zeitlin_bench.cc. Compare methods by
 // ratios of times within one run (scripts/bench_ratios.py).
 #include <benchmark/benchmark.h>
@@ -26,25 +27,44 @@ constexpr double kH = 0.1;
 constexpr int kScenarioSteps = 300;  // Scenario A: t in [0, 30]
 
 // Steps along a real trajectory from mu0, restarting every 300 steps, so that the
-// warm starts and states are those of a run; counts heap allocations per step.
+// warm starts and states are those of a run; counts heap allocations per step and, when
+// `newton` reports the Newton iterations of the last step, their mean.
 template <class Dual>
 void runSteps(benchmark::State& state, const Dual& mu0,
-              const std::function<Dual(const Dual&, double)>& step) {
+              const std::function<Dual(const Dual&, double)>& step,
+              const std::function<int()>& newton = nullptr) {
   Dual mu = mu0;
   int k = 0;
-  long steps = 0;
+  long steps = 0, iterations = 0;
   const long before = tools::mallocCount();
   for (auto _ : state) {
     mu = step(mu, k * kH);
     benchmark::DoNotOptimize(mu.data());
+    if (newton) iterations += newton();
     if (++k == kScenarioSteps) {
       k = 0;
       mu = mu0;
     }
     ++steps;
   }
-  state.counters["allocs_per_step"] =
-      static_cast<double>(tools::mallocCount() - before) / static_cast<double>(steps);
+  const double per_step = 1.0 / static_cast<double>(steps);
+  state.counters["allocs_per_step"] = static_cast<double>(tools::mallocCount() - before) * per_step;
+  if (newton) state.counters["newton_per_step"] = static_cast<double>(iterations) * per_step;
+}
+
+// The Newton iterations of a DDB-family method's last Legendre solve (one solve per step),
+// or nullptr for the other methods (the compositions run several solves per step).
+template <class G, class R>
+std::function<int()> newtonCounterFor(const OneStepMethod<G>& method) {
+  const auto* legendre = dynamic_cast<const LegendreMethod<R>*>(&method);
+  if (legendre == nullptr) return nullptr;
+  return [legendre] { return legendre->legendreSolver().stats().newton; };
+}
+template <class G>
+std::function<int()> newtonCounter(const OneStepMethod<G>& method) {
+  if (auto counter = newtonCounterFor<G, Cayley<G>>(method)) return counter;
+  if (auto counter = newtonCounterFor<G, Exponential<G>>(method)) return counter;
+  return newtonCounterFor<G, TruncatedExponential<G>>(method);
 }
 
 // One benchmark per applicable registry method, named <prefix>/<method>.
@@ -57,7 +77,9 @@ void registerMethods(const std::string& prefix, std::shared_ptr<const LiePoisson
     benchmark::RegisterBenchmark((prefix + "/" + name).c_str(), [=](benchmark::State& state) {
       auto method = makeMethod<G>(name, system);
       method->reset();
-      runSteps<Dual>(state, mu0, [&](const Dual& mu, double t) { return method->step(mu, t, kH); });
+      runSteps<Dual>(
+          state, mu0, [&](const Dual& mu, double t) { return method->step(mu, t, kH); },
+          newtonCounter(*method));
     });
   }
 }
@@ -76,6 +98,24 @@ void BM_OdeintRk4(benchmark::State& state, std::shared_ptr<const LiePoissonSyste
   });
 }
 
+// The floor reference: RK4 written out by hand on the rigid body's formula (eq. (3.6)),
+// Ṁ = M × Ω + α M × (M × Ω), Ω = 𝕀⁻¹M, with no framework in between.
+void BM_HandwrittenRk4(benchmark::State& state, Eigen::Vector3d inertia, double alpha,
+                       Eigen::Vector3d mu0) {
+  const Eigen::Vector3d inverse = inertia.cwiseInverse();
+  const auto field = [&](const Eigen::Vector3d& m) -> Eigen::Vector3d {
+    const Eigen::Vector3d turn = m.cross(inverse.cwiseProduct(m));
+    return turn + alpha * m.cross(turn);
+  };
+  runSteps<Eigen::Vector3d>(state, mu0, [&](const Eigen::Vector3d& m, double) {
+    const Eigen::Vector3d k1 = field(m);
+    const Eigen::Vector3d k2 = field(m + (0.5 * kH) * k1);
+    const Eigen::Vector3d k3 = field(m + (0.5 * kH) * k2);
+    const Eigen::Vector3d k4 = field(m + kH * k3);
+    return Eigen::Vector3d(m + (kH / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4));
+  });
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -83,6 +123,8 @@ int main(int argc, char** argv) {
   const auto body = a.system();
   registerMethods<SO3>("rigid_body", body, a.mu0());
   benchmark::RegisterBenchmark("rigid_body/odeint-rk4", BM_OdeintRk4, body, a.mu0());
+  benchmark::RegisterBenchmark("rigid_body/rk4-handwritten", BM_HandwrittenRk4, a.inertia, a.alpha,
+                               a.mu0());
   const HeavyTopSetup top;
   registerMethods<SE3>("heavy_top", top.system(), top.mu0);
   bench::registerZeitlinBenchmarks();

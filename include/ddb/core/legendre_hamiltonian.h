@@ -35,12 +35,7 @@ class LegendreHamiltonian : public Hamiltonian<G> {
   }
   Algebra gradient(const Dual& mu) const override { return velocity(mu); }
   Algebra hessianTimes(const Dual& mu, const Dual& nu) const override {
-    const Algebra xi = velocity(mu);
-    Eigen::Matrix<double, kDim, kDim> hessian;
-    for (int j = 0; j < kDim; ++j) {
-      hessian.col(j) = lagrangian_->hessianTimes(xi, Algebra::Unit(j));
-    }
-    return hessian.partialPivLu().solve(nu);
+    return hessianMatrix(*lagrangian_, velocity(mu)).partialPivLu().solve(nu);
   }
 
  private:

@@ -2,6 +2,8 @@
 // common shape of a reduced Lagrangian l: g → R and a Hamiltonian H: g* → R.
 #pragma once
 
+#include <Eigen/Core>
+
 namespace ddb {
 
 /// f: Domain → R with gradient in Codomain (the dual space of Domain).
@@ -26,5 +28,17 @@ class SmoothFunction {
     out = hessianTimes(x, v);
   }
 };
+
+/// The Hessian of f at x as a matrix, column j = hessianTimes(x, e_j): fixed-size
+/// domains only (the small implicit solvers' Jacobians and the Legendre transform).
+template <class Domain, class Codomain>
+Eigen::Matrix<double, Domain::RowsAtCompileTime, Domain::RowsAtCompileTime> hessianMatrix(
+    const SmoothFunction<Domain, Codomain>& f, const Domain& x) {
+  constexpr int n = Domain::RowsAtCompileTime;
+  static_assert(n != Eigen::Dynamic, "hessianMatrix needs a fixed-size domain");
+  Eigen::Matrix<double, n, n> hessian;
+  for (int j = 0; j < n; ++j) hessian.col(j) = f.hessianTimes(x, Domain::Unit(j));
+  return hessian;
+}
 
 }  // namespace ddb

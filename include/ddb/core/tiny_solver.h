@@ -1,6 +1,7 @@
-// Solves the small fixed-size implicit equations r(x) = 0 with ceres::TinySolver and
-// Jet autodiff (docs/conventions.md §4). TinySolver has no converged flag and an absolute
-// function tolerance, so convergence is decided here on the final residual:
+// Solves the small fixed-size implicit equations r(x) = 0 with ceres::TinySolver
+// (docs/conventions.md §4), the Jacobian either supplied by the equation (analytic) or
+// from Jet autodiff. TinySolver has no converged flag and an absolute function
+// tolerance, so convergence is decided here on the final residual:
 //   ‖r(x)‖ <= relative_tolerance · scale,
 // scale being the size of the equation's data (e.g. ‖M_k‖). Failure throws SolveFailure.
 #pragma once
@@ -9,7 +10,11 @@
 #include <ceres/tiny_solver_autodiff_function.h>
 #include <ddb/core/errors.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <Eigen/LU>
+#include <cmath>
+#include <type_traits>
 
 namespace ddb {
 
@@ -19,28 +24,116 @@ struct SolverOptions {
   int max_iterations = 30;
 };
 
-/// Solves residual(x) = 0 for x (in place, from the initial guess); returns ‖r(x)‖.
-/// `Residual` has `template <class T> bool operator()(const T* x, T* r) const`.
-template <int N, class Residual>
-double solveTiny(const Residual& residual, Eigen::Matrix<double, N, 1>& x, double scale,
-                 const SolverOptions& options, const char* what, double t, double h) {
-  using AutoDiff = ceres::TinySolverAutoDiffFunction<Residual, N, N>;
-  const AutoDiff function(residual);
-  ceres::TinySolver<AutoDiff> solver;
-  const double target = options.relative_tolerance * scale;
-  solver.options.max_num_iterations = options.max_iterations;
+/// What one solve took: Newton (Levenberg–Marquardt) iterations, the final ‖r‖, and
+/// whether ‖r‖ met the relative tolerance.
+struct TinySolveStats {
+  int iterations = 0;
+  double residual = 0.0;
+  bool converged = false;
+};
+
+/// TinySolver's linear solver for its normal equations JᵀJ δ = Jᵀr (SPD): for n ≤ 4 the
+/// inverse by Eigen's closed form (cofactors, no pivoting loop: the 3 × 3 of SO(3) costs a
+/// few dozen flops), LLT above (the 6 × 6 of SE(3)). Its rounding only slows Newton's
+/// convergence, not what it converges to: the residual is always the true one.
+template <int N>
+struct SmallInverseSolver {
+  Eigen::Matrix<double, N, N> inverse;
+  template <class Matrix>
+  void compute(const Matrix& a) {
+    inverse = a.inverse();
+  }
+  template <class Vector>
+  Eigen::Matrix<double, N, 1> solve(const Vector& b) const {
+    return inverse * b;
+  }
+};
+template <int N>
+using NormalEquationSolver =
+    std::conditional_t<(N <= 4), SmallInverseSolver<N>, Eigen::LLT<Eigen::Matrix<double, N, N>>>;
+
+/// Runs TinySolver on r(x) = 0 in place from the initial guess x, at most `max_iterations`
+/// iterations, and reports (no throw). `Function` is a TinySolver function (NUM_RESIDUALS =
+/// NUM_PARAMETERS = N; `operator()(x, r, J)` with J column-major, J may be null). The trust
+/// region starts huge, so every step is (almost) pure Newton.
+template <class Function, int N = Function::NUM_PARAMETERS>
+TinySolveStats runTinySolver(const Function& function, Eigen::Matrix<double, N, 1>& x,
+                             double target, int max_iterations) {
+  ceres::TinySolver<Function, NormalEquationSolver<N>> solver;
+  solver.options.max_num_iterations = max_iterations;
   solver.options.gradient_tolerance = 0.0;
   solver.options.function_tolerance = 0.0;  // absolute in Ceres 2.1: useless here
   solver.options.parameter_tolerance = 1e-16;
   solver.options.cost_threshold = 0.5 * (0.25 * target) * (0.25 * target);
-  solver.options.initial_trust_region_radius = 1e12;  // start as (almost) pure Newton
-  solver.Solve(function, &x);
+  solver.options.initial_trust_region_radius = 1e12;
+  const auto& summary = solver.Solve(function, &x);
+  // final_cost = ½‖r(x)‖² at the returned x: every accepted step re-evaluates it there,
+  // and a rejected one leaves x and the cost as they were.
+  const double norm = std::sqrt(2.0 * summary.final_cost);
+  return {summary.iterations, norm, norm <= target};
+}
 
-  Eigen::Matrix<double, N, 1> r;
-  residual(x.data(), r.data());
-  const double norm = r.norm();
-  if (!(norm <= target)) throw SolveFailure(what, -1, t, h, norm, target);
-  return norm;
+/// Solves r(x) = 0 to ‖r‖ <= relative_tolerance · scale or throws SolveFailure.
+template <class Function, int N = Function::NUM_PARAMETERS>
+TinySolveStats solveTinyWith(const Function& function, Eigen::Matrix<double, N, 1>& x, double scale,
+                             const SolverOptions& options, const char* what, double t, double h) {
+  const double target = options.relative_tolerance * scale;
+  const TinySolveStats stats = runTinySolver(function, x, target, options.max_iterations);
+  if (!stats.converged) throw SolveFailure(what, -1, t, h, stats.residual, target);
+  return stats;
+}
+
+/// A TinySolver function with its Jacobian evaluated once, at the first point asked, and
+/// reused at every later point (the simplified Newton, or chord, method): from a guess
+/// within δ of the solution it contracts like δ per iteration, so a predicted guess needs
+/// one iteration as Newton does, at one Jacobian per solve instead of one per iterate.
+/// The residual of the last point is kept too: TinySolver evaluates an accepted point
+/// twice (without and then with the Jacobian).
+template <class Function>
+class FrozenJacobian {
+ public:
+  using Scalar = double;
+  enum { NUM_RESIDUALS = Function::NUM_RESIDUALS, NUM_PARAMETERS = Function::NUM_PARAMETERS };
+
+  explicit FrozenJacobian(const Function& function) : function_(function) {}
+
+  bool operator()(const double* x, double* r, double* jacobian) const {
+    const Eigen::Map<const Vector> point(x);
+    Eigen::Map<Vector> residual(r);
+    if (jacobian != nullptr && !frozen_) {
+      function_(x, r, jacobian_.data());
+      frozen_ = true;
+    } else if (has_last_ && point == last_point_) {
+      residual = last_residual_;
+    } else {
+      function_(x, r, nullptr);
+    }
+    last_point_ = point;
+    last_residual_ = residual;
+    has_last_ = true;
+    if (jacobian != nullptr) {
+      Eigen::Map<Square> out(jacobian);
+      out = jacobian_;
+    }
+    return true;  // TinySolver ignores the return (docs/conventions.md §4)
+  }
+
+ private:
+  using Vector = Eigen::Matrix<double, NUM_RESIDUALS, 1>;
+  using Square = Eigen::Matrix<double, NUM_RESIDUALS, NUM_PARAMETERS>;
+  const Function& function_;
+  mutable bool frozen_ = false, has_last_ = false;
+  mutable Square jacobian_;
+  mutable Vector last_point_, last_residual_;
+};
+
+/// The same with the Jacobian by Jet autodiff. `Residual` has
+/// `template <class T> bool operator()(const T* x, T* r) const`.
+template <int N, class Residual>
+TinySolveStats solveTiny(const Residual& residual, Eigen::Matrix<double, N, 1>& x, double scale,
+                         const SolverOptions& options, const char* what, double t, double h) {
+  const ceres::TinySolverAutoDiffFunction<Residual, N, N> function(residual);
+  return solveTinyWith(function, x, scale, options, what, t, h);
 }
 
 }  // namespace ddb

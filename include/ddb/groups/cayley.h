@@ -32,6 +32,14 @@ class Cayley : public Retraction<Cayley<G>, G> {
   D dTauInverseDual(const A& x, const D& mu) const {
     return G::dcayInvDual(x, mu);
   }
+  template <class A>
+  auto dTauInverseDualMatrix(const A& x) const {
+    return G::dcayInvDualMatrix(x);
+  }
+  template <class A, class D>
+  auto dTauInverseDualJacobian(const A& x, const D& mu) const {
+    return G::dcayInvDualJacobian(x, mu);
+  }
 };
 
 }  // namespace ddb

@@ -5,7 +5,10 @@
 
 #include <ddb/core/bernoulli.h>
 #include <ddb/core/errors.h>
+#include <ddb/core/jet_jacobian.h>
 #include <ddb/core/retraction.h>
+
+#include <type_traits>
 
 namespace ddb {
 
@@ -41,6 +44,10 @@ class Exponential : public Retraction<Exponential<G>, G> {
   Dual<T> dTauInverseDual(const Algebra<T>& x, const Dual<T>& mu) const {
     return G::dexpInvDual(x, mu);
   }
+  auto dTauInverseDualMatrix(const Algebra<double>& x) const { return G::dexpInvDualMatrix(x); }
+  auto dTauInverseDualJacobian(const Algebra<double>& x, const Dual<double>& mu) const {
+    return G::dexpInvDualJacobian(x, mu);
+  }
 };
 
 /// τ = exp with dτ^{-1} replaced by its Bernoulli series truncated after ad^order.
@@ -66,6 +73,19 @@ class TruncatedExponential : public Exponential<G> {
   template <class A, class D>
   D dTauInverseDual(const A& x, const D& mu) const {
     return G::dexpInvDualSeries(x, mu, order_);
+  }
+  auto dTauInverseDualMatrix(const typename G::template Algebra<double>& x) const {
+    return linearMapMatrix<G::kDim>([&](const auto& mu) { return dTauInverseDual(x, mu); });
+  }
+  auto dTauInverseDualJacobian(const typename G::template Algebra<double>& x,
+                               const typename G::template Dual<double>& mu) const {
+    return jacobianByJets<G::kDim>(
+        [&](const auto& y) {
+          using T = typename std::decay_t<decltype(y)>::Scalar;
+          using Dual = typename G::template Dual<T>;
+          return G::dexpInvDualSeries(y, Dual(mu.template cast<T>()), order_);
+        },
+        x);
   }
 
  private:

@@ -133,6 +133,35 @@ struct SE3 : LieGroupBase<SE3> {
     quarter << w * pi.dot(w) - v.cross(gamma.cross(w)), Eigen::Matrix<T, 3, 1>::Zero();
     return mu - adDual(x, mu) * T(0.5) + quarter * T(0.25);
   }
+  /// The matrix of (dcay^{-1}_x)*, from the line above (linear in μ = (π, γ)):
+  ///   [[I + W/2 + ω ωᵀ/4, V/2 + V W/4], [0, I + W/2]], W, V the hats of ω, v.
+  static Eigen::Matrix<double, 6, 6> dcayInvDualMatrix(const Algebra<double>& x) {
+    const Eigen::Vector3d w = x.head<3>();
+    const Eigen::Matrix3d W = SO3::hat<double>(w), V = SO3::hat<double>(x.tail<3>());
+    const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+    Eigen::Matrix<double, 6, 6> D;
+    D.topLeftCorner<3, 3>() = I + 0.5 * W + 0.25 * w * w.transpose();
+    D.topRightCorner<3, 3>() = 0.5 * V + 0.25 * V * W;
+    D.bottomLeftCorner<3, 3>().setZero();
+    D.bottomRightCorner<3, 3>() = I + 0.5 * W;
+    return D;
+  }
+  /// ∂/∂x [(dcay^{-1}_x)* mu], differentiating the line above in ω and v:
+  ///   [[-Π/2 + ((π·ω) I + ω πᵀ - V Γ)/4,  -Γ/2 + hat(γ × ω)/4], [-Γ/2, 0]],
+  /// with Π, Γ, V the hats of π, γ, v.
+  static Eigen::Matrix<double, 6, 6> dcayInvDualJacobian(const Algebra<double>& x,
+                                                         const Dual<double>& mu) {
+    const Eigen::Vector3d w = x.head<3>(), v = x.tail<3>();
+    const Eigen::Vector3d pi = mu.head<3>(), gamma = mu.tail<3>();
+    const Eigen::Matrix3d Pi = SO3::hat<double>(pi), Gamma = SO3::hat<double>(gamma);
+    Eigen::Matrix<double, 6, 6> J;
+    J.topLeftCorner<3, 3>() = -0.5 * Pi + 0.25 * (pi.dot(w) * Eigen::Matrix3d::Identity() +
+                                                  w * pi.transpose() - SO3::hat<double>(v) * Gamma);
+    J.topRightCorner<3, 3>() = -0.5 * Gamma + 0.25 * SO3::hat<double>(gamma.cross(w));
+    J.bottomLeftCorner<3, 3>() = -0.5 * Gamma;
+    J.bottomRightCorner<3, 3>().setZero();
+    return J;
+  }
 
   /// exp(ω, v) = [[exp ω̂, V v], [0, 1]], V v = dexp_ω(v) of SO(3).
   template <class T>

@@ -153,6 +153,15 @@ struct SO3 : LieGroupBase<SO3> {
   static Dual<T> dcayInvDual(const Algebra<T>& x, const Dual<T>& mu) {
     return mu + x.cross(mu) * T(0.5) + x * (x.dot(mu) * T(0.25));
   }
+  /// The matrix of (dcay^{-1}_x)*: I + X/2 + x xᵀ/4.
+  static Eigen::Matrix3d dcayInvDualMatrix(const Eigen::Vector3d& x) {
+    return Eigen::Matrix3d::Identity() + 0.5 * hat<double>(x) + 0.25 * x * x.transpose();
+  }
+  /// ∂/∂x [(dcay^{-1}_x)* mu] = -M/2 + (x·mu)/4 I + x muᵀ/4, M = hat(mu).
+  static Eigen::Matrix3d dcayInvDualJacobian(const Eigen::Vector3d& x, const Eigen::Vector3d& mu) {
+    return hat<double>(mu) * -0.5 + Eigen::Matrix3d::Identity() * (0.25 * x.dot(mu)) +
+           x * (0.25 * mu.transpose());
+  }
 
   /// Closed form dexp_x = I + (1 - cos θ)/θ² X + (θ - sin θ)/θ³ X².
   template <class T>
@@ -185,6 +194,19 @@ struct SO3 : LieGroupBase<SO3> {
     const Algebra<T> xm = x.cross(mu);
     return mu + xm * T(0.5) + x.cross(xm) * dexpInvCoefficient(x);
   }
+  /// The matrix of (dexp^{-1}_x)*: I + X/2 + c X².
+  static Eigen::Matrix3d dexpInvDualMatrix(const Eigen::Vector3d& x) {
+    const Eigen::Matrix3d X = hat<double>(x);
+    return Eigen::Matrix3d::Identity() + 0.5 * X + dexpInvCoefficient(x) * X * X;
+  }
+  /// ∂/∂x [(dexp^{-1}_x)* mu] = -M/2 - c (hat(x × mu) + X M) + 2 c'(θ²) (x × (x × mu)) xᵀ,
+  /// X = hat(x), M = hat(mu), c as in dexpInv as a function of θ² (differentiating the line above).
+  static Eigen::Matrix3d dexpInvDualJacobian(const Eigen::Vector3d& x, const Eigen::Vector3d& mu) {
+    const Eigen::Vector3d xm = x.cross(mu);
+    const Eigen::Matrix3d M = hat<double>(mu);
+    return M * -0.5 - (hat<double>(xm) + hat<double>(x) * M) * dexpInvCoefficient(x) +
+           x.cross(xm) * (2.0 * dexpInvCoefficientSlope(x.squaredNorm()) * x.transpose());
+  }
 
  private:
   // c(θ) = (1 - (θ/2) cot(θ/2))/θ² with its Taylor branch 1/12 + θ²/720 + θ⁴/30240 near 0.
@@ -197,6 +219,18 @@ struct SO3 : LieGroupBase<SO3> {
     const T theta = sqrt(theta2);
     const T half = theta / T(2);
     return (T(1) - half * cos(half) / sin(half)) / theta2;
+  }
+  // dc/d(θ²) = f'/(2θ³) - f/θ⁴ with f = 1 - (θ/2) cot(θ/2), f' = -cot(θ/2)/2 + θ/(4 sin²(θ/2)).
+  // Both terms are ~1/(12θ²), so below θ² = 1e-2 the series 1/720 + θ²/15120 + θ⁴/403200 +
+  // θ⁶/11975040 (from the Bernoulli numbers; next term < 3e-17) replaces them.
+  static double dexpInvCoefficientSlope(double theta2) {
+    if (theta2 < 1e-2) {
+      return 1.0 / 720 + theta2 * (1.0 / 15120 + theta2 * (1.0 / 403200 + theta2 / 11975040));
+    }
+    const double theta = std::sqrt(theta2), half = 0.5 * theta;
+    const double s = std::sin(half), cot = std::cos(half) / s;
+    const double f = 1.0 - half * cot, slope_f = -0.5 * cot + 0.25 * theta / (s * s);
+    return slope_f / (2.0 * theta2 * theta) - f / (theta2 * theta2);
   }
 };
 

@@ -1,28 +1,27 @@
-// The discrete Legendre transform of a DDB step (paper, Section 4.1):
+// The solver of the discrete Legendre transform of a DDB step for small fixed-size groups
+// (paper, Section 4.1):
 //   (dτ^{-1}_{hξ})* p = target(ξ, p),  p = ∂l/∂ξ(ξ)  (Lagrangian form, unknown ξ)
 //                                      ξ = ∂H/∂μ(p)  (Hamiltonian form, unknown p)
-// solved by Ceres TinySolver, warm-started from the previous solution. DDB's target
-// is the momentum M_k; the symmetric variants' targets depend on the unknown too.
+// DDB's target is the momentum M_k; the symmetric variants' targets depend on the unknown.
+// Two stages (docs/conventions.md §4):
+//   predictor: p = near + c, the correction c = p − near extrapolated linearly from the last
+//     two solves at the same h, then up to kMaxSweeps fixed-point sweeps p ← p − r(p); they
+//     stop as soon as one contracts by less than ½ (the step is then too large for them);
+//   corrector: ceres::TinySolver on LegendreEquation's analytic Jacobian, to the relative
+//     tolerance: first with the Jacobian of the predicted guess kept (FrozenJacobian: one
+//     Jacobian per solve), then, if that has not converged within kChordIterations, with a
+//     fresh Jacobian per iterate; the typed SolveFailure when the tolerance is not reached.
 #pragma once
 
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/core/tiny_solver.h>
+#include <ddb/integrators/legendre_equation.h>
+#include <ddb/integrators/legendre_stats.h>
 
 #include <Eigen/Core>
+#include <cmath>
 
 namespace ddb {
-
-enum class LegendreForm { kLagrangian, kHamiltonian };
-
-/// The target of DDB's Legendre equation: a fixed momentum.
-template <class G>
-struct FixedMomentum {
-  const typename G::template Dual<double>& momentum;
-  template <class A, class D>
-  D operator()(const A&, const D&) const {
-    return momentum.template cast<typename D::Scalar>();
-  }
-};
 
 template <class R>
 class DiscreteLegendreSolver {
@@ -32,6 +31,11 @@ class DiscreteLegendreSolver {
   using Algebra = typename G::template Algebra<double>;
   using Dual = typename G::template Dual<double>;
   using Vector = Eigen::Matrix<double, kDim, 1>;
+  /// Sweeps of the predictor at most: each gains a factor ~h‖ad_ξ‖; three bring a warm
+  /// start within one Newton step of the tolerance on the paper's scenarios (docs/design.md).
+  static constexpr int kMaxSweeps = 3;
+  /// Iterations with the Jacobian of the predicted guess before fresh Jacobians take over.
+  static constexpr int kChordIterations = 4;
 
   DiscreteLegendreSolver(const LiePoissonSystem<G>& system, const R& retraction, LegendreForm form,
                          SolverOptions options)
@@ -42,26 +46,43 @@ class DiscreteLegendreSolver {
     }
   }
 
-  void reset() { has_guess_ = false; }
+  /// Forgets the corrections of earlier solves (a new trajectory).
+  void reset() { history_ = 0; }
   LegendreForm form() const { return form_; }
+  /// Sweeps, Newton iterations and final residual of the last solve.
+  const LegendreStats& stats() const { return stats_; }
 
   /// Solves (dτ^{-1}_{hξ})* p = target(ξ, p); returns ξ and sets p. `near` is a momentum
-  /// close to the solution (the first guess when there is no warm start); `scale` the
-  /// size of the equation's data for the relative tolerance.
+  /// close to the solution (the target at the start of the step), whose norm scales the
+  /// relative tolerance.
   template <class Target>
   Algebra solve(const Target& target, const Dual& near, double t, double h, Dual& p) {
-    if (!has_guess_) {
-      unknown_ = form_ == LegendreForm::kLagrangian ? Vector(system_.velocity(near)) : near;
+    const LegendreEquation<R, Target> equation{system_, retraction_, target, h, form_};
+    if (h != h_) history_ = 0;  // corrections scale with h: only same-h ones extrapolate
+    h_ = h;
+    Dual guess = near;
+    if (history_ == 1) guess += correction_;
+    if (history_ == 2) guess += 2.0 * correction_ - previous_correction_;
+    stats_ = LegendreStats{};
+    stats_.fixed_point = sweep(equation, near.norm(), guess);
+    unknown_ = form_ == LegendreForm::kLagrangian ? Vector(system_.velocity(guess)) : guess;
+    const double scale = near.norm();
+    TinySolveStats solved =
+        runTinySolver(FrozenJacobian<LegendreEquation<R, Target>>(equation), unknown_,
+                      options_.relative_tolerance * scale, kChordIterations);
+    stats_.newton = solved.iterations;
+    if (!solved.converged) {  // from where the chord iterations left it, with fresh Jacobians
+      solved =
+          solveTinyWith(equation, unknown_, scale, options_, "discrete Legendre equation", t, h);
+      stats_.newton += solved.iterations;
     }
-    const Equation<Target> equation{system_, retraction_, target, h, form_};
-    solveTiny<kDim>(equation, unknown_, near.norm(), options_, "discrete Legendre equation", t, h);
-    has_guess_ = true;
-    if (form_ == LegendreForm::kLagrangian) {
-      p = system_.lagrangian()->gradient(unknown_);
-      return unknown_;
-    }
-    p = unknown_;
-    return system_.velocity(p);
+    stats_.residual = solved.residual;
+    Algebra xi;
+    equation.unpack(unknown_.data(), xi, p);
+    previous_correction_ = correction_;
+    correction_ = p - near;
+    history_ = history_ < 2 ? history_ + 1 : 2;
+    return xi;
   }
 
   /// DDB's equation M = (dτ^{-1}_{hξ})* ∂l/∂ξ(ξ).
@@ -70,38 +91,32 @@ class DiscreteLegendreSolver {
   }
 
  private:
-  template <class Target>
-  struct Equation {
-    const LiePoissonSystem<G>& system;
-    const R& retraction;
-    const Target& target;
-    double h;
-    LegendreForm form;
-    template <class T>
-    bool operator()(const T* x, T* r) const {
-      using A = typename G::template Algebra<T>;
-      using D = typename G::template Dual<T>;
-      A xi;
-      D p;
-      if (form == LegendreForm::kLagrangian) {
-        xi = Eigen::Map<const A>(x);
-        p = liftGradient(*system.lagrangian(), xi);
-      } else {
-        p = Eigen::Map<const D>(x);
-        xi = system.velocity(p);
-      }
-      const A hxi = xi * T(h);
-      Eigen::Map<D> out(r);
-      out = retraction.dTauInverseDual(hxi, p) - target(xi, p);
-      return true;
+  // Fixed-point sweeps p ← p − r(p) from `p`; returns how many were kept. A sweep whose
+  // update is more than half the previous one ends them; one that even grew is not applied.
+  template <class Equation>
+  int sweep(const Equation& equation, double scale, Dual& p) const {
+    // Within √tolerance one (chord) Newton iteration squares the error to the tolerance.
+    const double close_enough = std::sqrt(options_.relative_tolerance) * scale;
+    double last = INFINITY;
+    for (int k = 0; k < kMaxSweeps; ++k) {
+      const Dual update = equation.residualAtMomentum(p);
+      const double size = update.norm();
+      if (!(size <= last)) return k;  // diverging (or non-finite): keep p as it is
+      p -= update;
+      if (size <= close_enough || size > 0.5 * last) return k + 1;
+      last = size;
     }
-  };
+    return kMaxSweeps;
+  }
 
   const LiePoissonSystem<G>& system_;
   const R& retraction_;
   LegendreForm form_;
   SolverOptions options_;
-  bool has_guess_ = false;
+  LegendreStats stats_;
+  int history_ = 0;  // corrections remembered (0, 1 or 2)
+  double h_ = 0.0;
+  Dual correction_ = Dual::Zero(), previous_correction_ = Dual::Zero();
   Vector unknown_ = Vector::Zero();
 };
 

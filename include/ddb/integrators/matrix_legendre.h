@@ -25,7 +25,8 @@
 #include <ddb/core/matrix_free_gmres.h>
 #include <ddb/core/tiny_solver.h>
 #include <ddb/groups/cayley.h>
-#include <ddb/integrators/legendre.h>
+#include <ddb/integrators/legendre_equation.h>
+#include <ddb/integrators/legendre_stats.h>
 
 #include <algorithm>
 #include <cmath>
@@ -38,14 +39,6 @@ namespace ddb {
 /// How the matrix-free solver proceeds: kAuto is the fixed point with Newton–Krylov as
 /// the fallback; the others force one path (for tests and comparisons).
 enum class MatrixLegendreStrategy { kAuto, kFixedPoint, kNewtonKrylov, kCeres };
-
-/// Iteration counts of the last solve.
-struct MatrixLegendreStats {
-  int fixed_point = 0;  // fixed-point sweeps
-  int newton = 0;       // Newton steps
-  int krylov = 0;       // Jacobian–vector products inside GMRES
-  double residual = 0;  // final ‖r‖
-};
 
 template <class R>
 class MatrixLegendreSolver {
@@ -76,7 +69,7 @@ class MatrixLegendreSolver {
 
   void reset() { guesses_ = 0; }
   LegendreForm form() const { return form_; }
-  const MatrixLegendreStats& stats() const { return stats_; }
+  const LegendreStats& stats() const { return stats_; }
   void setStrategy(MatrixLegendreStrategy strategy) { strategy_ = strategy; }
 
   /// Solves (I + hξ(p)/2) p (I − hξ(p)/2) = target(ξ, p); returns ξ and sets p.
@@ -98,7 +91,7 @@ class MatrixLegendreSolver {
   void solveInPlace(const Target& target, const Dual& near, double t, double h) {
     constexpr bool kFixed = std::is_same_v<Target, FixedMomentum<G>>;
     allocate(near);
-    stats_ = MatrixLegendreStats{};
+    stats_ = LegendreStats{};
     const auto targetValue = [&]() -> const Dual& {
       if constexpr (kFixed) {
         return target.momentum;
@@ -337,7 +330,7 @@ class MatrixLegendreSolver {
   SolverOptions options_;
   int guesses_ = 0;  // previous solutions the predictor may use
   MatrixLegendreStrategy strategy_ = MatrixLegendreStrategy::kAuto;
-  MatrixLegendreStats stats_;
+  LegendreStats stats_;
   Dual p_, next_, xi_, a_, ap_, apa_, residual_, delta_, delta_a_, t1_, t2_, correction_,
       previous_correction_, target_;
   MatrixFreeGmres<Dual> gmres_;

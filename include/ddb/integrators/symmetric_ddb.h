@@ -17,6 +17,7 @@
 // μ_k = Ad*_{τ(-hφ(ξ_k)/2)} M_k; it is second order and still exactly on the orbit.
 #pragma once
 
+#include <ddb/core/jet_jacobian.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/integrators/legendre_method.h>
 
@@ -38,6 +39,12 @@ struct HalfForceTarget {
     using T = typename D::Scalar;
     const A half = system.dissipation(xi, p) * T(0.5 * h);
     return G::AdDual(retraction.tau(half), D(mu.template cast<T>()));
+  }
+  /// d/du of the target through ξ(u), p(u) (LegendreEquation), by Jets.
+  template <class Xi, class P>
+  Xi jacobian(const typename G::template Algebra<double>& xi,
+              const typename G::template Dual<double>& p, const Xi& dxi, const P& dp) const {
+    return jacobianByJets<G::kDim>(*this, xi, dxi, p, dp);
   }
 };
 
@@ -130,6 +137,10 @@ class PaperSymmetricDdb : public LegendreMethod<R> {
         force_step = (phi_k + system.dissipation(xi, p)) * T(0.5 * h);
       }
       return G::AdDual(retraction.tau(force_step), D(pushed.template cast<T>()));
+    }
+    template <class Xi, class P>
+    Xi jacobian(const Algebra& xi, const Dual& p, const Xi& dxi, const P& dp) const {
+      return jacobianByJets<G::kDim>(*this, xi, dxi, p, dp);
     }
   };
 

@@ -12,6 +12,14 @@
 
 namespace ddb {
 
+/// 𝕀⁻¹ of principal moments that must be finite and > 0, with 1/𝕀 finite too (a moment
+/// below ~1e-308 would make it inf).
+inline Eigen::Vector3d invertInertia(const Eigen::Vector3d& inertia) {
+  const Eigen::Vector3d inverse = requirePositive("inertia", inertia).cwiseInverse();
+  if (!inverse.allFinite()) throwInvalid("inertia", formatValue(inertia), "1/inertia overflows");
+  return inverse;
+}
+
 class RigidBodyLagrangian : public AutoDiffLagrangian<RigidBodyLagrangian, SO3> {
  public:
   explicit RigidBodyLagrangian(const Eigen::Vector3d& inertia)
@@ -38,23 +46,24 @@ class RigidBodyLagrangian : public AutoDiffLagrangian<RigidBodyLagrangian, SO3> 
 class RigidBodyHamiltonian : public AutoDiffHamiltonian<RigidBodyHamiltonian, SO3> {
  public:
   explicit RigidBodyHamiltonian(const Eigen::Vector3d& inertia)
-      : inertia_(requirePositive("inertia", inertia)) {}
+      : inverse_inertia_(invertInertia(inertia)) {}
 
   template <class T>
   T evaluate(const Eigen::Matrix<T, 3, 1>& m) const {
     T sum = constant<T>(0.0);
-    for (int i = 0; i < 3; ++i) sum += m(i) * m(i) / constant<T>(inertia_(i));
+    for (int i = 0; i < 3; ++i) sum += m(i) * m(i) * constant<T>(inverse_inertia_(i));
     return constant<T>(0.5) * sum;
   }
+  // 𝕀⁻¹ is stored: a product, not a division, in every vector-field evaluation.
   Eigen::Vector3d gradient(const Eigen::Vector3d& m) const override {
-    return m.cwiseQuotient(inertia_);
+    return inverse_inertia_.cwiseProduct(m);
   }
   Eigen::Vector3d hessianTimes(const Eigen::Vector3d&, const Eigen::Vector3d& v) const override {
-    return v.cwiseQuotient(inertia_);
+    return inverse_inertia_.cwiseProduct(v);
   }
 
  private:
-  Eigen::Vector3d inertia_;
+  Eigen::Vector3d inverse_inertia_;
 };
 
 /// The rigid body of principal moments `inertia` (all > 0) and damping `alpha`.

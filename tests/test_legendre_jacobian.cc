@@ -1,0 +1,169 @@
+// The analytic Jacobian of the small Legendre equation (integrators/legendre_equation.h)
+// and its parts, each against central differences and against Jets through the
+// scalar-generic formula it differentiates:
+//   ∂_x[(dτ^{-1}_x)* mu] of every fixed-size retraction, the SO(3) and SE(3) closed forms
+//   against LieGroupBase's Jet versions; the assembled ∂r/∂u in both forms, for DDB's
+//   fixed target and the symmetric method's half-force target, on the rigid body, the
+//   heavy top, the Kirchhoff body and a user system given by its Lagrangian alone.
+#include <ddb/core/autodiff.h>
+#include <ddb/core/legendre_hamiltonian.h>
+#include <ddb/integrators/legendre_equation.h>
+#include <ddb/integrators/symmetric_ddb.h>
+#include <ddb/systems/paper_scenarios.h>
+
+#include "test_support.h"
+
+namespace ddb::test {
+namespace {
+
+// Central differences of a map R^n → R^n at x, step eps·(1 + |x|).
+template <int N, class Map>
+Eigen::Matrix<double, N, N> centralDifferences(const Map& f, const Eigen::Matrix<double, N, 1>& x) {
+  const double eps = 1e-6 * (1.0 + x.norm());
+  Eigen::Matrix<double, N, N> jacobian;
+  for (int j = 0; j < N; ++j) {
+    Eigen::Matrix<double, N, 1> step = Eigen::Matrix<double, N, 1>::Zero();
+    step(j) = eps;
+    const Eigen::Matrix<double, N, 1> plus = x + step, minus = x - step;
+    jacobian.col(j) = (f(plus) - f(minus)) / (2 * eps);
+  }
+  return jacobian;
+}
+
+template <class R>
+class RetractionJacobianTest : public ::testing::Test {};
+using FixedRetractions = ::testing::Types<Cayley<SO3>, Exponential<SO3>, TruncatedExponential<SO3>,
+                                          Cayley<SE3>, Exponential<SE3>, TruncatedExponential<SE3>>;
+TYPED_TEST_SUITE(RetractionJacobianTest, FixedRetractions);
+
+TYPED_TEST(RetractionJacobianTest, MatchesCentralDifferences) {
+  using G = typename TypeParam::Group;
+  using V = Eigen::Matrix<double, G::kDim, 1>;
+  const TypeParam retraction;
+  Sampler s;
+  // Small (the series branches), O(1), and up to |ω| = 3 (exp's poles are at 2π).
+  for (double size : {1e-4, 0.09, 0.11, 0.5, 1.0, 2.0, 3.0}) {
+    const V x = size * s.vector<V>().normalized(), mu = s.vector<V>();
+    const auto analytic = retraction.dTauInverseDualJacobian(x, mu);
+    const auto numeric = centralDifferences<G::kDim>(
+        [&](const V& y) { return V(retraction.dTauInverseDual(y, mu)); }, x);
+    EXPECT_LT((analytic - numeric).norm(), 1e-8 * (1 + x.squaredNorm()) * mu.norm())
+        << "|x| = " << size;
+  }
+}
+
+// (dτ^{-1}_x)* as a matrix against the map it represents, for every retraction.
+TYPED_TEST(RetractionJacobianTest, MatrixRepresentsTheDual) {
+  using G = typename TypeParam::Group;
+  using V = Eigen::Matrix<double, G::kDim, 1>;
+  const TypeParam retraction;
+  Sampler s;
+  for (double size : {1e-4, 0.5, 3.0}) {
+    const V x = size * s.vector<V>().normalized(), mu = s.vector<V>();
+    EXPECT_LT((retraction.dTauInverseDualMatrix(x) * mu - retraction.dTauInverseDual(x, mu)).norm(),
+              1e-14 * (1 + x.squaredNorm()) * mu.norm())
+        << "|x| = " << size;
+  }
+}
+
+// The closed forms against Jets through the formula they differentiate (the base's versions).
+TEST(RetractionJacobian, ClosedFormsMatchJets) {
+  Sampler s;
+  for (double size : {1e-4, 0.09, 0.11, 0.5, 1.0, 2.0, 3.0}) {
+    const Eigen::Vector3d x = size * s.vector<Eigen::Vector3d>().normalized();
+    const Eigen::Vector3d mu = s.vector<Eigen::Vector3d>();
+    EXPECT_LT(
+        (SO3::dcayInvDualJacobian(x, mu) - LieGroupBase<SO3>::dcayInvDualJacobian(x, mu)).norm(),
+        1e-14 * (1 + x.squaredNorm()) * mu.norm());
+    // c(θ) of dexp^{-1} loses ~1e-16/θ² to cancellation in either evaluation.
+    EXPECT_LT(
+        (SO3::dexpInvDualJacobian(x, mu) - LieGroupBase<SO3>::dexpInvDualJacobian(x, mu)).norm(),
+        1e-12 * (1 + x.squaredNorm()) * mu.norm())
+        << "|x| = " << size;
+    using V6 = Eigen::Matrix<double, 6, 1>;
+    const V6 x6 = size * s.vector<V6>().normalized(), mu6 = s.vector<V6>();
+    EXPECT_LT((SE3::dcayInvDualJacobian(x6, mu6) - LieGroupBase<SE3>::dcayInvDualJacobian(x6, mu6))
+                  .norm(),
+              1e-14 * (1 + x6.squaredNorm()) * mu6.norm());
+  }
+}
+
+// l(Ω) = ½Ω·𝕀Ω + β/4 |Ω|⁴: a user system written as l alone (H by the Legendre transform).
+class QuarticLagrangian : public AutoDiffLagrangian<QuarticLagrangian, SO3> {
+ public:
+  template <class T>
+  T evaluate(const Eigen::Matrix<T, 3, 1>& w) const {
+    const T square = w(0) * w(0) + w(1) * w(1) + w(2) * w(2);  // nested Jets: no squaredNorm
+    return constant<T>(0.5) * (constant<T>(1.0) * w(0) * w(0) + constant<T>(1.3) * w(1) * w(1) +
+                               constant<T>(0.5) * w(2) * w(2)) +
+           constant<T>(0.25 * 0.3) * square * square;
+  }
+};
+
+// The assembled Jacobian at random unknowns against the residual differentiated by Jets
+// and by central differences.
+template <class R, class Target>
+void expectJacobianMatches(const LiePoissonSystem<typename R::Group>& system, const Target& target,
+                           LegendreForm form, double h, const std::string& what) {
+  using G = typename R::Group;
+  constexpr int n = G::kDim;
+  using V = Eigen::Matrix<double, n, 1>;
+  const R retraction;
+  const LegendreEquation<R, Target> equation{system, retraction, target, h, form};
+  const auto residual = [&](const auto& u) {
+    Eigen::Matrix<typename std::decay_t<decltype(u)>::Scalar, n, 1> r;
+    equation.residual(u.data(), r.data());
+    return r;
+  };
+  Sampler s;
+  for (int i = 0; i < 5; ++i) {
+    const V u = s.vector<V>();
+    V r;
+    Eigen::Matrix<double, n, n> analytic;
+    equation(u.data(), r.data(), analytic.data());
+    const V expected_r = residual(u);
+    EXPECT_LT((r - expected_r).norm(), 1e-15 * (1 + u.norm())) << what;
+    const auto jets = jacobianByJets<n>(residual, u);
+    const auto numeric = centralDifferences<n>(residual, u);
+    const double scale = 1 + analytic.norm();
+    EXPECT_LT((analytic - jets).norm(), 1e-13 * scale) << what << " against Jets";
+    EXPECT_LT((analytic - numeric).norm(), 1e-7 * scale) << what << " against differences";
+  }
+}
+
+template <class R>
+void expectBothTargets(std::shared_ptr<const LiePoissonSystem<typename R::Group>> system,
+                       const typename R::Group::template Dual<double>& mu,
+                       const std::string& name) {
+  const R retraction;
+  const FixedMomentum<typename R::Group> fixed{mu};
+  const HalfForceTarget<R> half{*system, retraction, mu, 0.3};
+  std::vector<LegendreForm> forms{LegendreForm::kHamiltonian};
+  if (system->lagrangian() != nullptr) forms.push_back(LegendreForm::kLagrangian);
+  for (const LegendreForm form : forms) {
+    const std::string what = name + "/" + R::kName +
+                             (form == LegendreForm::kLagrangian ? "/lagrangian" : "/hamiltonian");
+    expectJacobianMatches<R>(*system, fixed, form, 0.3, what + "/ddb");
+    expectJacobianMatches<R>(*system, half, form, 0.3, what + "/sddb");
+  }
+}
+
+TEST(LegendreJacobian, MatchesJetsAndDifferences) {
+  const auto& a = rigidBodyScenario("A");
+  const auto body = a.system();
+  expectBothTargets<Cayley<SO3>>(body, a.mu0(), "rigid-body");
+  expectBothTargets<Exponential<SO3>>(body, a.mu0(), "rigid-body");
+  expectBothTargets<TruncatedExponential<SO3>>(body, a.mu0(), "rigid-body");
+  const HeavyTopSetup top;
+  expectBothTargets<Cayley<SE3>>(top.system(), top.mu0, "heavy-top");
+  expectBothTargets<Exponential<SE3>>(top.system(), top.mu0, "heavy-top");
+  const KirchhoffSetup kirchhoff;
+  expectBothTargets<Cayley<SE3>>(kirchhoff.system(), kirchhoff.mu0, "kirchhoff");
+  const auto user =
+      makeSystemFromLagrangian<SO3>("quartic", std::make_shared<const QuarticLagrangian>(),
+                                    std::make_shared<const ScaledIdentityMetric<SO3>>(0.5));
+  expectBothTargets<Cayley<SO3>>(user, a.mu0(), "quartic");
+}
+
+}  // namespace
+}  // namespace ddb::test
