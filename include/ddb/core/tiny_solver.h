@@ -39,6 +39,7 @@ double solveTiny(const Residual& residual, Eigen::Matrix<double, N, 1>& x, doubl
   Eigen::Matrix<double, N, 1> r;
   residual(x.data(), r.data());
   const double norm = r.norm();
+  if (!std::isfinite(norm)) throw NonFiniteState(what, -1, t, h, r, "residual");
   if (!(norm <= target)) throw SolveFailure(what, -1, t, h, norm, target);
   return norm;
 }

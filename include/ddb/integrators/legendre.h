@@ -7,6 +7,7 @@
 
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/core/tiny_solver.h>
+#include <ddb/integrators/injectivity_guard.h>
 
 #include <Eigen/Core>
 
@@ -53,15 +54,20 @@ class DiscreteLegendreSolver {
     if (!has_guess_) {
       unknown_ = form_ == LegendreForm::kLagrangian ? Vector(system_.velocity(near)) : near;
     }
+    InjectivityGuard<R>::beforeSolve(system_, near, t, h);
     const Equation<Target> equation{system_, retraction_, target, h, form_};
     solveTiny<kDim>(equation, unknown_, near.norm(), options_, "discrete Legendre equation", t, h);
     has_guess_ = true;
+    Algebra xi;
     if (form_ == LegendreForm::kLagrangian) {
       p = system_.lagrangian()->gradient(unknown_);
-      return unknown_;
+      xi = unknown_;
+    } else {
+      p = unknown_;
+      xi = system_.velocity(p);
     }
-    p = unknown_;
-    return system_.velocity(p);
+    InjectivityGuard<R>::afterSolve(system_, near, xi, t, h);
+    return xi;
   }
 
   /// DDB's equation M = (dτ^{-1}_{hξ})* ∂l/∂ξ(ξ).

@@ -64,11 +64,23 @@ class ReferenceSolver : public OneStepMethod<G> {
   using Dual = typename G::template Dual<double>;
   using State = typename OdeintSystem<G>::State;
 
+  /// Sub-steps one call of step() may take (docs/reliability.md: about 2 s for the rigid
+  /// body; Scenario B's 250 time units take about 5000).
+  static constexpr long kDefaultMaxSubsteps = 1'000'000;
+  /// A sub-step below this fraction of max(|t|, h) advances t by round-off only: the
+  /// field is too stiff (|α| = 1e308) or too fast for the tolerance, and the controller
+  /// would shrink it forever.
+  static constexpr double kSmallestRelativeSubstep = 1e-12;
+
   explicit ReferenceSolver(std::shared_ptr<const LiePoissonSystem<G>> system,
-                           double tolerance = 1e-13)
+                           double tolerance = 1e-13, long max_substeps = kDefaultMaxSubsteps)
       : system_(std::move(system)),
         tolerance_(requirePositive("tolerance", tolerance)),
-        stepper_(typename Controlled::error_checker_type(tolerance_, tolerance_)) {}
+        max_substeps_(max_substeps),
+        stepper_(typename Controlled::error_checker_type(tolerance_, tolerance_)) {
+    if (max_substeps < 1)
+      throwInvalid("max_substeps", std::to_string(max_substeps), "must be >= 1");
+  }
 
   std::string name() const override { return "reference"; }
   void reset() override { dt_ = 0.0; }
@@ -85,7 +97,19 @@ class ReferenceSolver : public OneStepMethod<G> {
     // and so accepted, when a trial step overflows), never more than h.
     double dt = dt_ > 0.0 ? dt_ : firstStep(mu, h);
     int rejected = 0;
+    long substeps = 0;
+    const double smallest = kSmallestRelativeSubstep * std::max(std::abs(end), h);
     while (end - time > 1e-14 * std::abs(end)) {
+      if (++substeps > max_substeps_ || dt < smallest) {
+        throw BudgetExhausted(
+            "reference solver (adaptive Runge-Kutta-Fehlberg 7(8))",
+            (dt < smallest ? "sub-step " + formatValue(dt) + " below " + formatValue(smallest)
+                           : std::to_string(max_substeps_) + " sub-steps") +
+                " at t = " + formatValue(time) + " of [" + formatValue(t) + ", " +
+                formatValue(end) + "] (the field is too stiff or too fast for tolerance " +
+                formatValue(tolerance_) + ")",
+            -1, t, h);
+      }
       const bool last = time + dt >= end;
       double trial = last ? end - time : dt;
       const double before = trial;
@@ -124,6 +148,7 @@ class ReferenceSolver : public OneStepMethod<G> {
 
   std::shared_ptr<const LiePoissonSystem<G>> system_;
   double tolerance_;
+  long max_substeps_;
   Controlled stepper_;
   double dt_ = 0.0;
 };
