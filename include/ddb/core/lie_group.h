@@ -102,6 +102,13 @@ struct LieGroupBase {
     return matrix<A>((I - half).partialPivLu().solve(I + half));
   }
 
+  /// Ad*_{cay(a) cay(b)} mu, the DDB update (paper, eq. (4.12)) with τ = cay; SO3 shadows it
+  /// with an unbiased vector form (docs/long-run.md).
+  template <class A, class D>
+  static D cayTransport(const A& a, const A& b, const D& mu) {
+    return Derived::AdDual(Derived::compose(Derived::cay(a), Derived::cay(b)), mu);
+  }
+
   /// cay^{-1}(g) = 2 (g - I)(g + I)^{-1} (g and its generator commute).
   template <class M>
   static auto cayInverse(const M& g) {
