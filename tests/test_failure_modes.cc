@@ -52,6 +52,22 @@ TEST(ReferenceBudget, SubstepBudgetIsEnforcedAndNamed) {
     EXPECT_THAT(e.what(), HasSubstr("step 0 (t = 0, h = 30)"));
     EXPECT_EQ(e.step(), 0);
   }
+  // The budget is per trajectory: 300 steps of 0.1 take at least 300 sub-steps, so a
+  // budget of 50 runs out after some good steps, at the same one on every run.
+  ReferenceSolver<SO3> per_trajectory(kA.system(), 1e-13, 50);
+  long failed = -1;
+  for (int run = 0; run < 2; ++run) {
+    try {
+      integrate(per_trajectory, kA.mu0(), 0.0, 0.1, 300,
+                [](long, double, const Eigen::Vector3d&) {});
+      FAIL() << "no error";
+    } catch (const BudgetExhausted& e) {
+      EXPECT_THAT(e.what(), HasSubstr("50 sub-steps in this trajectory"));
+      EXPECT_GT(e.step(), 0);
+      if (run == 1) EXPECT_EQ(e.step(), failed);
+      failed = e.step();
+    }
+  }
   ReferenceSolver<SO3> unlimited(kA.system());
   EXPECT_NO_THROW(unlimited.step(kA.mu0(), 0.0, 30.0));
   EXPECT_THROW(ReferenceSolver<SO3>(kA.system(), 1e-13, 0), InvalidArgument);

@@ -64,8 +64,8 @@ class ReferenceSolver : public OneStepMethod<G> {
   using Dual = typename G::template Dual<double>;
   using State = typename OdeintSystem<G>::State;
 
-  /// Sub-steps one call of step() may take (docs/reliability.md: about 2 s for the rigid
-  /// body; Scenario B's 250 time units take about 5000).
+  /// Sub-steps one trajectory may take, from reset() on (docs/reliability.md §1: about
+  /// 2 s for the rigid body, whose Scenario B over 250 time units needs a few thousand).
   static constexpr long kDefaultMaxSubsteps = 1'000'000;
   /// A sub-step below this fraction of max(|t|, h) advances t by round-off only: the
   /// field is too stiff (|α| = 1e308) or too fast for the tolerance, and the controller
@@ -83,7 +83,10 @@ class ReferenceSolver : public OneStepMethod<G> {
   }
 
   std::string name() const override { return "reference"; }
-  void reset() override { dt_ = 0.0; }
+  void reset() override {
+    dt_ = 0.0;
+    substeps_ = 0;
+  }
 
   Dual step(const Dual& mu, double t, double h) override {
     namespace odeint = boost::numeric::odeint;
@@ -97,14 +100,13 @@ class ReferenceSolver : public OneStepMethod<G> {
     // and so accepted, when a trial step overflows), never more than h.
     double dt = dt_ > 0.0 ? dt_ : firstStep(mu, h);
     int rejected = 0;
-    long substeps = 0;
     const double smallest = kSmallestRelativeSubstep * std::max(std::abs(end), h);
     while (end - time > 1e-14 * std::abs(end)) {
-      if (++substeps > max_substeps_ || dt < smallest) {
+      if (++substeps_ > max_substeps_ || dt < smallest) {
         throw BudgetExhausted(
             "reference solver (adaptive Runge-Kutta-Fehlberg 7(8))",
             (dt < smallest ? "sub-step " + formatValue(dt) + " below " + formatValue(smallest)
-                           : std::to_string(max_substeps_) + " sub-steps") +
+                           : std::to_string(max_substeps_) + " sub-steps in this trajectory") +
                 " at t = " + formatValue(time) + " of [" + formatValue(t) + ", " +
                 formatValue(end) + "] (the field is too stiff or too fast for tolerance " +
                 formatValue(tolerance_) + ")",
@@ -151,6 +153,7 @@ class ReferenceSolver : public OneStepMethod<G> {
   long max_substeps_;
   Controlled stepper_;
   double dt_ = 0.0;
+  long substeps_ = 0;
 };
 
 #pragma GCC diagnostic pop
