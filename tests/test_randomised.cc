@@ -24,6 +24,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ddb::test {
@@ -201,45 +202,43 @@ double spectrumDrift(const Eigen::VectorXd& spectrum0,
 
 const std::vector<std::string> kMatrixMethods{"ddb-cay", "sddb-cay", "ddb4-cay"};
 
-TEST(Randomised, ManakovBody) {
-  Draw draw(13);
+/// 1000 sets at N = 3, 4, 5; make(draw, n, alpha) returns the system and μ₀.
+template <class G, class Make>
+void runMatrixGroup(const std::string& system_name, std::uint64_t seed, const Make& make) {
+  using Dual = typename G::template Dual<double>;
+  Draw draw(seed);
   Outcomes outcomes;
   for (int i = 0; i < 1000; ++i) {
     const Eigen::Index n = 3 + i % 3;
-    Eigen::VectorXd J(n);
-    for (Eigen::Index j = 0; j < n; ++j) J(j) = draw.logUniform(-2, 2);
     const double alpha = draw.signedLog(-3, 2);
     const double h = draw.logUniform(-3, 0);
-    const Eigen::MatrixXd a = draw.vector<Eigen::VectorXd>(n * n).reshaped(n, n);
-    const Eigen::MatrixXd mu0 = (a - a.transpose()) * draw.logUniform(-1, 1);
+    const auto [system, mu0] = make(draw, n, alpha);
     const std::string& name = draw.pick(kMatrixMethods);
-    auto method = makeMethod<SON>(name, makeManakovBody(J, alpha));
-    const Eigen::VectorXd spectrum0 = SON::casimirs(mu0);
-    runOne<SON>(
-        *method, mu0, h,
-        [&](const Eigen::MatrixXd& mu) { return spectrumDrift<SON>(spectrum0, mu); },
+    auto method = makeMethod<G>(name, system);
+    const Eigen::VectorXd spectrum0 = G::casimirs(mu0);
+    runOne<G>(
+        *method, mu0, h, [&](const Dual& mu) { return spectrumDrift<G>(spectrum0, mu); },
         describe(name, alpha, h, i) + ", N " + std::to_string(n), outcomes);
   }
-  outcomes.report("manakov-body");
+  outcomes.report(system_name);
+}
+
+TEST(Randomised, ManakovBody) {
+  runMatrixGroup<SON>("manakov-body", 13, [](Draw& draw, Eigen::Index n, double alpha) {
+    Eigen::VectorXd J(n);
+    for (Eigen::Index j = 0; j < n; ++j) J(j) = draw.logUniform(-2, 2);
+    const Eigen::MatrixXd a = draw.vector<Eigen::VectorXd>(n * n).reshaped(n, n);
+    return std::make_pair(makeManakovBody(J, alpha),
+                          Eigen::MatrixXd((a - a.transpose()) * draw.logUniform(-1, 1)));
+  });
 }
 
 TEST(Randomised, ZeitlinFluid) {
-  Draw draw(14);
-  Outcomes outcomes;
-  for (int i = 0; i < 1000; ++i) {
-    const Eigen::Index n = 3 + i % 3;
-    const double alpha = draw.signedLog(-3, 2);
-    const double h = draw.logUniform(-3, 0);
-    const Eigen::MatrixXcd W0 = randomVorticity(n, draw.seed()) * draw.logUniform(-1, 1);
-    const std::string& name = draw.pick(kMatrixMethods);
-    auto method = makeMethod<SUN>(name, makeZeitlinFluid(n, alpha));
-    const Eigen::VectorXd spectrum0 = SUN::casimirs(W0);
-    runOne<SUN>(
-        *method, W0, h,
-        [&](const Eigen::MatrixXcd& mu) { return spectrumDrift<SUN>(spectrum0, mu); },
-        describe(name, alpha, h, i) + ", N " + std::to_string(n), outcomes);
-  }
-  outcomes.report("zeitlin-fluid");
+  runMatrixGroup<SUN>("zeitlin-fluid", 14, [](Draw& draw, Eigen::Index n, double alpha) {
+    return std::make_pair(
+        makeZeitlinFluid(n, alpha),
+        Eigen::MatrixXcd(randomVorticity(n, draw.seed()) * draw.logUniform(-1, 1)));
+  });
 }
 
 }  // namespace
