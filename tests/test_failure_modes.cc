@@ -64,7 +64,9 @@ TEST(ReferenceBudget, SubstepBudgetIsEnforcedAndNamed) {
     } catch (const BudgetExhausted& e) {
       EXPECT_THAT(e.what(), HasSubstr("50 sub-steps in this trajectory"));
       EXPECT_GT(e.step(), 0);
-      if (run == 1) EXPECT_EQ(e.step(), failed);
+      if (run == 1) {
+        EXPECT_EQ(e.step(), failed);
+      }
       failed = e.step();
     }
   }
