@@ -113,19 +113,34 @@ TEST(DdbCompare, SE3SystemsWriteTwoCasimirColumns) {
 }
 
 TEST(DdbCompare, FailedSolveKeepsThePrefixAndExitsOne) {
-  // ddb-exp-exact cannot solve its Legendre equation at h = 10 after 14 steps (see
-  // Ddb.TooLargeStepThrowsTypedErrorAndKeepsPrefix): the valid prefix is written.
+  // Energy ascent (α = −0.5) from Ω₀ near the slow axis: |Ω| grows until an exp step of
+  // h = 4 passes the injectivity limit h|ξ| = π (docs/reliability.md §2) after some good
+  // steps; the valid prefix is written. Independent expectation: the step at which the
+  // library's own integrate() fails.
+  const Eigen::Vector3d inertia(1.0, 1.3, 0.5), omega0(0.05, 0.4, 0.1);
+  auto exact = ddb::makeMethod<ddb::SO3>("ddb-exp-exact", ddb::makeRigidBody(inertia, -0.5));
+  long failed_step = -1;
+  try {
+    ddb::integrate(*exact, inertia.cwiseProduct(omega0), 0.0, 4.0, 40,
+                   [](long, double, const Eigen::Vector3d&) {});
+  } catch (const ddb::InjectivityLimit& failure) {
+    failed_step = failure.step();
+  }
+  ASSERT_GT(failed_step, 0);
   const fs::path out = freshFolder("failure");
-  ASSERT_EQ(runApp("--method ddb-exp-exact --h 10 --t-end 400 --repeat 1 --out " + out.string()),
+  ASSERT_EQ(runApp("--method ddb-exp-exact --alpha -0.5 --omega0 0.05,0.4,0.1 --h 4 --t-end 160 "
+                   "--repeat 1 --out " +
+                   out.string()),
             1);
   std::string header;
   const auto rows = readCsv(out / "ddb-exp-exact.csv", &header);
-  EXPECT_EQ(rows.size(), 15u);
+  EXPECT_EQ(rows.size(), static_cast<std::size_t>(failed_step + 1));
   for (const auto& row : rows)
     for (double v : row) EXPECT_TRUE(std::isfinite(v));
   const std::string summary = readFile(out / "summary.json");
-  EXPECT_THAT(summary, ::testing::HasSubstr("\"failure\": \"discrete Legendre equation did not "
-                                            "converge at step 14"));
+  EXPECT_THAT(summary, ::testing::HasSubstr("\"failure\": \"DDB with the exp retraction step " +
+                                            std::to_string(failed_step)));
+  EXPECT_THAT(summary, ::testing::HasSubstr("injectivity limit"));
   EXPECT_THAT(summary, ::testing::HasSubstr("\"err_final\": null"));
 }
 
@@ -349,9 +364,10 @@ TEST(DdbCompare, FailedMethodsAreMarkedFailedEverywhere) {
   EXPECT_EQ(jsonValue(methodEntry(summary, "ddb-cay"), "status"), "\"ok\"");
 }
 
-TEST(DdbCompare, StepErrorsThatAreNotSolveFailuresAreRunFailuresNotBadInput) {
-  // dexp⁻¹ of the heavy top diverges for |hξ| > 2π: the rk4 file is written, so the exit
-  // status must be 1 (a run failed), not 2 (bad input, nothing written).
+TEST(DdbCompare, ExpStepPastItsLimitIsARunFailureNotBadInput) {
+  // The heavy top's exp method cannot take h = 2 (|hξ| reaches π, or its dexp⁻¹ series
+  // runs out of terms): the rk4 file is written, so the exit status must be 1 (a run
+  // failed), not 2 (bad input, nothing written).
   const fs::path out = freshFolder("dexp");
   const AppResult r =
       run("--system heavy-top --method rk4,ddb-exp-exact --h 2 --repeat 1 --out " + out.string());

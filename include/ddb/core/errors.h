@@ -31,11 +31,19 @@ class SolveFailure : public std::runtime_error {
         residual_(residual),
         tolerance_(tolerance) {}
 
+  virtual ~SolveFailure() = default;
+
   SolveFailure atStep(long step, double time, double h) const {
     return SolveFailure(what_failed_, step, std::isnan(time_) ? time : time_,
                         std::isnan(h_) ? h : h_, residual_, tolerance_);
   }
+  /// Throws this failure, keeping its type, with the step (and t, h where unknown) filled
+  /// in: integrate() knows where a step failed, the thrower inside the step does not.
+  [[noreturn]] virtual void rethrowAtStep(long step, double time, double h) const {
+    throw atStep(step, time, h);
+  }
 
+  const std::string& whatFailed() const { return what_failed_; }
   long step() const { return step_; }
   double time() const { return time_; }
   double h() const { return h_; }
@@ -64,23 +72,93 @@ std::string formatValue(const Eigen::DenseBase<Derived>& v);
 /// A state that overflowed or became NaN inside a step. It is what it says, not a
 /// solver that missed its tolerance: the message names the step, t, h and the offending
 /// entry (docs/conventions.md §4). A SolveFailure, so the valid prefix is kept alike.
+/// `quantity` names what became non-finite when it is not the state itself (the residual
+/// of an implicit equation whose data overflowed).
 class NonFiniteState : public SolveFailure {
  public:
   template <class State>
-  NonFiniteState(const std::string& method, long step, double time, double h, const State& state)
-      : SolveFailure(method + " step", step, time, h, INFINITY, 0),
-        message_(describe(method, step, time, h, formatValue(state))) {}
+  NonFiniteState(const std::string& method, long step, double time, double h, const State& state,
+                 const std::string& quantity = "state")
+      : NonFiniteState(method, step, time, h, quantity, formatValue(state)) {}
   const char* what() const noexcept override { return message_.c_str(); }
+  [[noreturn]] void rethrowAtStep(long step, double time, double h) const override {
+    throw NonFiniteState(method_, step, std::isnan(this->time()) ? time : this->time(),
+                         std::isnan(this->h()) ? h : this->h(), quantity_, value_);
+  }
 
  private:
+  NonFiniteState(const std::string& method, long step, double time, double h,
+                 const std::string& quantity, const std::string& value)
+      : SolveFailure(method + " step", step, time, h, INFINITY, 0),
+        method_(method),
+        quantity_(quantity),
+        value_(value),
+        message_(describe(method, step, time, h, quantity, value)) {}
+
   static std::string describe(const std::string& method, long step, double time, double h,
-                              const std::string& state) {
+                              const std::string& quantity, const std::string& value) {
     std::ostringstream os;
     os.precision(17);
-    os << method << " step " << step << " (t = " << time << ", h = " << h
-       << ") made the state non-finite (overflow or NaN): state = " << state;
+    os << method << " step " << step << " (t = " << time << ", h = " << h << ") made the "
+       << quantity << " non-finite (overflow or NaN): " << quantity << " = " << value;
     return os.str();
   }
+  std::string method_, quantity_, value_, message_;
+};
+
+/// An iterative loop that used up its budget (sub-steps, iterations, series terms)
+/// before it converged: every loop has one, so no input runs without bound
+/// (docs/reliability.md). `what` names the loop, `budget` what ran out.
+class BudgetExhausted : public SolveFailure {
+ public:
+  BudgetExhausted(const std::string& what, const std::string& budget, long step, double time,
+                  double h)
+      : SolveFailure(what, step, time, h, INFINITY, 0),
+        budget_(budget),
+        message_(what + " ran out of its budget at step " + std::to_string(step) +
+                 " (t = " + formatValue(time) + ", h = " + formatValue(h) + "): " + budget) {}
+  const char* what() const noexcept override { return message_.c_str(); }
+  [[noreturn]] void rethrowAtStep(long step, double time, double h) const override {
+    throw BudgetExhausted(whatFailed(), budget_, step,
+                          std::isnan(this->time()) ? time : this->time(),
+                          std::isnan(this->h()) ? h : this->h());
+  }
+
+ private:
+  std::string budget_, message_;
+};
+
+/// A step of an exponential-map method with |hξ| at or beyond the injectivity limit of
+/// exp (π on SO(3), docs/reliability.md §2): past it the Legendre equation has solutions
+/// on other branches and the method would converge to one of them without a word.
+/// `largest_h` is the largest admissible h at this state, limit/|ξ|.
+class InjectivityLimit : public SolveFailure {
+ public:
+  InjectivityLimit(const std::string& method, double step_norm, double limit, double largest_h,
+                   long step, double time, double h)
+      : SolveFailure(method + " step", step, time, h, step_norm, limit),
+        method_(method),
+        step_norm_(step_norm),
+        limit_(limit),
+        largest_h_(largest_h),
+        message_(method + " step " + std::to_string(step) + " (t = " + formatValue(time) +
+                 ", h = " + formatValue(h) + "): |h xi| = " + formatValue(step_norm) +
+                 " is at or beyond the injectivity limit " + formatValue(limit) +
+                 " of the exponential map (the step would land on another branch); the "
+                 "largest admissible h at this state is about " +
+                 formatValue(largest_h)) {}
+  const char* what() const noexcept override { return message_.c_str(); }
+  [[noreturn]] void rethrowAtStep(long step, double time, double h) const override {
+    throw InjectivityLimit(method_, step_norm_, limit_, largest_h_, step,
+                           std::isnan(this->time()) ? time : this->time(),
+                           std::isnan(this->h()) ? h : this->h());
+  }
+  double limit() const { return limit_; }
+  double largestH() const { return largest_h_; }
+
+ private:
+  std::string method_;
+  double step_norm_, limit_, largest_h_;
   std::string message_;
 };
 

@@ -103,6 +103,13 @@ struct LieGroupBase {
     return matrix<A>((I - half).partialPivLu().solve(I + half));
   }
 
+  /// Ad*_{cay(a) cay(b)} mu, the DDB update (paper, eq. (4.12)) with τ = cay; SO3 shadows it
+  /// with an unbiased vector form (docs/long-run.md).
+  template <class A, class D>
+  static D cayTransport(const A& a, const A& b, const D& mu) {
+    return Derived::AdDual(Derived::compose(Derived::cay(a), Derived::cay(b)), mu);
+  }
+
   /// cay^{-1}(g) = 2 (g - I)(g + I)^{-1} (g and its generator commute).
   template <class M>
   static auto cayInverse(const M& g) {
@@ -231,7 +238,7 @@ struct LieGroupBase {
  private:
   // Σ_{j=0}^{max_order} c(j) A^j v. With to_round_off, stops once two consecutive
   // terms are below round-off relative to the sum (odd Bernoulli terms vanish);
-  // throws if that does not happen by max_order (|x| beyond the radius 2π).
+  // throws BudgetExhausted if that does not happen by max_order (|x| beyond the radius 2π).
   template <class V, class Operator, class Coefficient>
   static V sumSeries(const V& v, const Operator& apply, const Coefficient& c, int max_order,
                      bool to_round_off = true) {
@@ -248,7 +255,13 @@ struct LieGroupBase {
       if (small_terms >= 2 || scalarNorm(power) == 0.0) return sum;
     }
     if (to_round_off) {
-      throw InvalidArgument("dexp series did not converge: |x| is beyond its radius 2π");
+      // A step size too large for this state, not bad input: a solve failure that ends
+      // the run and keeps its prefix (docs/reliability.md).
+      throw BudgetExhausted("dexp series",
+                            std::to_string(max_order) +
+                                " terms did not reach round-off (|x| is beyond "
+                                "the radius of convergence 2π)",
+                            -1, NAN, NAN);
     }
     return sum;
   }

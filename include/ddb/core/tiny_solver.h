@@ -79,6 +79,11 @@ TinySolveStats solveTinyWith(const Function& function, Eigen::Matrix<double, N, 
                              const SolverOptions& options, const char* what, double t, double h) {
   const double target = options.relative_tolerance * scale;
   const TinySolveStats stats = runTinySolver(function, x, target, options.max_iterations);
+  if (!std::isfinite(stats.residual)) {  // overflow, named as such (docs/reliability.md)
+    Eigen::Matrix<double, N, 1> r;
+    function(x.data(), r.data(), nullptr);
+    throw NonFiniteState(what, -1, t, h, r, "residual");
+  }
   if (!stats.converged) throw SolveFailure(what, -1, t, h, stats.residual, target);
   return stats;
 }

@@ -40,6 +40,12 @@ class Cayley : public Retraction<Cayley<G>, G> {
   auto dTauInverseDualJacobian(const A& x, const D& mu) const {
     return G::dcayInvDualJacobian(x, mu);
   }
+  /// Ad*_{cay(a) cay(b)} mu through the group, which may apply it without forming the
+  /// product (SO3: docs/long-run.md); shadows Retraction::transport.
+  template <class A, class D>
+  D transport(const A& a, const A& b, const D& mu) const {
+    return G::cayTransport(a, b, mu);
+  }
 };
 
 }  // namespace ddb

@@ -97,6 +97,9 @@ struct SE3 : LieGroupBase<SE3> {
   }
 
   /// (|γ|², π·γ).
+  /// The spectral radius of ad_(ω,v): ±i|ω| (twice) and 0, from the rotation part alone.
+  static double adRadius(const Algebra<double>& x) { return x.head<3>().norm(); }
+
   template <class T>
   static Casimirs<T> casimirs(const Dual<T>& mu) {
     return Casimirs<T>(mu.template tail<3>().squaredNorm(),

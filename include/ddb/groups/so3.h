@@ -72,6 +72,10 @@ struct SO3 : LieGroupBase<SO3> {
     return R.transpose();
   }
 
+  /// The spectral radius of ad_x (its eigenvalues are 0, ±i|x|): exp is one-to-one for
+  /// adRadius < π and dexp^{-1} has its poles at 2π (docs/reliability.md §2).
+  static double adRadius(const Algebra<double>& x) { return x.norm(); }
+
   /// Casimir |mu|.
   template <class T>
   static Casimirs<T> casimirs(const Dual<T>& mu) {
@@ -137,6 +141,20 @@ struct SO3 : LieGroupBase<SO3> {
     const Matrix<T> X = hat(x);
     const T c = T(4) / (T(4) + x.squaredNorm());
     return Matrix<T>::Identity() + (X + X * X * T(0.5)) * c;
+  }
+  /// Ad*_{cay(x)} mu = cay(x)ᵀ mu = mu + c (−x × mu + ½ x × (x × mu)), c = 4/(4 + |x|²),
+  /// as vector operations: forming cay(x) rounds its diagonal 1 − O(|x|²) the same way at
+  /// every step of a steady rotation, and that bias adds up linearly in |M|
+  /// (docs/long-run.md); here the only rounding of order ulp(mu) is the final sum.
+  template <class T>
+  static Dual<T> cayAdDual(const Algebra<T>& x, const Dual<T>& mu) {
+    const Algebra<T> xm = x.cross(mu);
+    return mu + (x.cross(xm) * T(0.5) - xm) * (T(4) / (T(4) + x.squaredNorm()));
+  }
+  /// Ad*_{cay(a) cay(b)} mu = Ad*_{cay(b)} Ad*_{cay(a)} mu, the DDB update (paper, eq. (4.12)).
+  template <class T>
+  static Dual<T> cayTransport(const Algebra<T>& a, const Algebra<T>& b, const Dual<T>& mu) {
+    return cayAdDual(b, cayAdDual(a, mu));
   }
   /// dcay_x = 4/(4 + |x|²) (I + X/2) (paper, Section 4.1).
   template <class T>

@@ -15,6 +15,7 @@
 
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/core/tiny_solver.h>
+#include <ddb/integrators/injectivity_guard.h>
 #include <ddb/integrators/legendre_equation.h>
 #include <ddb/integrators/legendre_stats.h>
 
@@ -57,6 +58,7 @@ class DiscreteLegendreSolver {
   /// relative tolerance.
   template <class Target>
   Algebra solve(const Target& target, const Dual& near, double t, double h, Dual& p) {
+    InjectivityGuard<R>::beforeSolve(system_, near, t, h);
     const LegendreEquation<R, Target> equation{system_, retraction_, target, h, form_};
     if (h != h_) history_ = 0;  // corrections scale with h: only same-h ones extrapolate
     h_ = h;
@@ -79,6 +81,7 @@ class DiscreteLegendreSolver {
     stats_.residual = solved.residual;
     Algebra xi;
     equation.unpack(unknown_.data(), xi, p);
+    InjectivityGuard<R>::afterSolve(system_, near, xi, t, h);
     previous_correction_ = correction_;
     correction_ = p - near;
     history_ = history_ < 2 ? history_ + 1 : 2;

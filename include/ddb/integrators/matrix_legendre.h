@@ -124,7 +124,10 @@ class MatrixLegendreSolver {
       const double update = (next_ - p_).norm();
       p_.swap(next_);
       ++stats_.fixed_point;
-      if (!std::isfinite(update)) break;
+      if (!std::isfinite(update)) {
+        stats_.residual = update;
+        break;
+      }
       // The accepted iterate is p_new: for a contraction of rate ρ its error is at most
       // ρ/(1 − ρ)·update, with ρ measured from the last two updates (the first sweep has
       // no estimate and is judged by its update).
@@ -152,6 +155,10 @@ class MatrixLegendreSolver {
     } else if (strategy_ != MatrixLegendreStrategy::kAuto && !forced) {
       throw InvalidArgument(
           "strategy is invalid: only the fixed point solves a target that depends on p");
+    }
+    if (!converged && !std::isfinite(stats_.residual)) {
+      // Overflow (e.g. |α| or h near the double range) is not a missed tolerance.
+      throw NonFiniteState("discrete Legendre equation (matrix-free)", -1, t, h, p_, "iterate");
     }
     if (!converged) {
       throw SolveFailure(std::string("discrete Legendre equation (matrix-free, ") +

@@ -45,7 +45,7 @@ void integrate(OneStepMethod<G>& method, const typename G::template Dual<double>
     try {
       method.advance(mu, t, h);
     } catch (const SolveFailure& failure) {
-      throw failure.atStep(k, t, h);
+      failure.rethrowAtStep(k, t, h);
     }
     if (!mu.allFinite()) {
       throw NonFiniteState(method.name(), k, t, h, mu);

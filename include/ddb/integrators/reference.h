@@ -64,14 +64,29 @@ class ReferenceSolver : public OneStepMethod<G> {
   using Dual = typename G::template Dual<double>;
   using State = typename OdeintSystem<G>::State;
 
+  /// Sub-steps one trajectory may take, from reset() on (docs/reliability.md §1: about
+  /// 2 s for the rigid body, whose Scenario B over 250 time units needs a few thousand).
+  static constexpr long kDefaultMaxSubsteps = 1'000'000;
+  /// A sub-step below this fraction of max(|t|, h) advances t by round-off only: the
+  /// field is too stiff (|α| = 1e308) or too fast for the tolerance, and the controller
+  /// would shrink it forever.
+  static constexpr double kSmallestRelativeSubstep = 1e-12;
+
   explicit ReferenceSolver(std::shared_ptr<const LiePoissonSystem<G>> system,
-                           double tolerance = 1e-13)
+                           double tolerance = 1e-13, long max_substeps = kDefaultMaxSubsteps)
       : system_(std::move(system)),
         tolerance_(requirePositive("tolerance", tolerance)),
-        stepper_(typename Controlled::error_checker_type(tolerance_, tolerance_)) {}
+        max_substeps_(max_substeps),
+        stepper_(typename Controlled::error_checker_type(tolerance_, tolerance_)) {
+    if (max_substeps < 1)
+      throwInvalid("max_substeps", std::to_string(max_substeps), "must be >= 1");
+  }
 
   std::string name() const override { return "reference"; }
-  void reset() override { dt_ = 0.0; }
+  void reset() override {
+    dt_ = 0.0;
+    substeps_ = 0;
+  }
 
   Dual step(const Dual& mu, double t, double h) override {
     namespace odeint = boost::numeric::odeint;
@@ -85,7 +100,18 @@ class ReferenceSolver : public OneStepMethod<G> {
     // and so accepted, when a trial step overflows), never more than h.
     double dt = dt_ > 0.0 ? dt_ : firstStep(mu, h);
     int rejected = 0;
+    const double smallest = kSmallestRelativeSubstep * std::max(std::abs(end), h);
     while (end - time > 1e-14 * std::abs(end)) {
+      if (++substeps_ > max_substeps_ || dt < smallest) {
+        throw BudgetExhausted(
+            "reference solver (adaptive Runge-Kutta-Fehlberg 7(8))",
+            (dt < smallest ? "sub-step " + formatValue(dt) + " below " + formatValue(smallest)
+                           : std::to_string(max_substeps_) + " sub-steps in this trajectory") +
+                " at t = " + formatValue(time) + " of [" + formatValue(t) + ", " +
+                formatValue(end) + "] (the field is too stiff or too fast for tolerance " +
+                formatValue(tolerance_) + ")",
+            -1, t, h);
+      }
       const bool last = time + dt >= end;
       double trial = last ? end - time : dt;
       const double before = trial;
@@ -124,8 +150,10 @@ class ReferenceSolver : public OneStepMethod<G> {
 
   std::shared_ptr<const LiePoissonSystem<G>> system_;
   double tolerance_;
+  long max_substeps_;
   Controlled stepper_;
   double dt_ = 0.0;
+  long substeps_ = 0;
 };
 
 #pragma GCC diagnostic pop

@@ -105,9 +105,10 @@ struct RunOptions {
 };
 
 /// Integrates `steps` steps of size h from (0, mu0) with `method`, showing `sink(k, t, mu)`
-/// the states chosen by options.every. A SolveFailure, or an InvalidArgument raised inside
-/// a step (e.g. a dexp⁻¹ series that does not converge at this h), ends the run and is
-/// recorded in the result; bad arguments to runMethod itself still throw InvalidArgument.
+/// the states chosen by options.every. A SolveFailure raised inside a step (a solver or a
+/// series out of its budget, a non-finite state, an exp step past its injectivity limit:
+/// docs/reliability.md) ends the run and is recorded in the result; bad arguments to
+/// runMethod itself throw InvalidArgument.
 template <class G, class Sink>
 RunResult<G> runMethod(OneStepMethod<G>& method, const LiePoissonSystem<G>& system,
                        const typename G::template Dual<double>& mu0, double h, long steps,
@@ -136,12 +137,6 @@ RunResult<G> runMethod(OneStepMethod<G>& method, const LiePoissonSystem<G>& syst
   } catch (const SolveFailure& failure) {
     result.failure = failure.what();
     result.failed_step = failure.step();
-  } catch (const InvalidArgument& error) {
-    // Not a SolveFailure, so integrate() could not add where it happened: say it here.
-    result.failed_step = result.steps;
-    result.failure = method.name() + " step " + std::to_string(result.steps) +
-                     " (t = " + formatValue(result.t_final) + ", h = " + formatValue(h) +
-                     ") failed: " + error.what();
   }
   thinned.finish();
   result.runtime_s =
