@@ -30,13 +30,13 @@ for build_type in Debug ""; do
         -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON -DCMAKE_DISABLE_FIND_PACKAGE_benchmark=ON \
         -DCMAKE_DISABLE_FIND_PACKAGE_spdlog=ON -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON
 done
-# The library's failure-mode, randomised, integrator and matrix-group tests again under
-# AddressSanitizer and UndefinedBehaviorSanitizer (docs/reliability.md §4): -O1 -g with
-# Eigen's own assertions on (no NDEBUG). Only these five: a sanitized file takes about 3×
-# its Release compile time, and the whole suite would take .ci/run past 30 minutes.
-# Any finding stops the run.
+# The library's failure-mode, randomised, integrator, Legendre-Jacobian and matrix-group
+# tests again under AddressSanitizer and UndefinedBehaviorSanitizer (docs/reliability.md
+# §4): -O1 -g with Eigen's own assertions on (no NDEBUG). Only these six: a sanitized file
+# takes about 3× its Release compile time, and the whole suite would take .ci/run past 30
+# minutes. Any finding stops the run.
 echo "== tests under ASan and UBSan"
-sanitized="test_failure_modes test_randomised test_integrators test_matrix_groups test_zeitlin"
+sanitized="test_failure_modes test_randomised test_integrators test_legendre_jacobian test_matrix_groups test_zeitlin"
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDDB_BUILD_APPS=OFF \
       -DDDB_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
       -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" \
