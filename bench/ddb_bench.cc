@@ -26,13 +26,15 @@ using namespace ddb;
 constexpr double kH = 0.1;
 constexpr int kScenarioSteps = 300;  // Scenario A: t in [0, 30]
 
-// Steps along a real trajectory from mu0, restarting every 300 steps, so that the
-// warm starts and states are those of a run; counts heap allocations per step and, when
-// `newton` reports the Newton iterations of the last step, their mean.
+// Steps along a real trajectory from mu0, restarting every 300 steps (calling `restart`,
+// as a new run would), so that the warm starts and states are those of a run; counts heap
+// allocations per step and, when `newton` reports the Newton iterations of the last step,
+// their mean.
 template <class Dual>
 void runSteps(benchmark::State& state, const Dual& mu0,
               const std::function<Dual(const Dual&, double)>& step,
-              const std::function<int()>& newton = nullptr) {
+              const std::function<int()>& newton = nullptr,
+              const std::function<void()>& restart = nullptr) {
   Dual mu = mu0;
   int k = 0;
   long steps = 0, iterations = 0;
@@ -44,6 +46,7 @@ void runSteps(benchmark::State& state, const Dual& mu0,
     if (++k == kScenarioSteps) {
       k = 0;
       mu = mu0;
+      if (restart) restart();
     }
     ++steps;
   }
@@ -79,7 +82,7 @@ void registerMethods(const std::string& prefix, std::shared_ptr<const LiePoisson
       method->reset();
       runSteps<Dual>(
           state, mu0, [&](const Dual& mu, double t) { return method->step(mu, t, kH); },
-          newtonCounter(*method));
+          newtonCounter(*method), [&] { method->reset(); });
     });
   }
 }
