@@ -30,10 +30,10 @@ for build_type in Debug ""; do
         -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON -DCMAKE_DISABLE_FIND_PACKAGE_benchmark=ON \
         -DCMAKE_DISABLE_FIND_PACKAGE_spdlog=ON -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON
 done
-# The library's failure-mode, randomised (every system and DDB method, the matrix groups'
-# OpenBLAS products included), integrator and Legendre-Jacobian tests again under
+# The library's failure-mode and randomised tests (every system and DDB method, the small
+# and the matrix-free Legendre solvers, the matrix groups' OpenBLAS products) again under
 # AddressSanitizer and UndefinedBehaviorSanitizer (docs/reliability.md §4): -O1 -g with
-# Eigen's own assertions on (no NDEBUG). Only these four: a sanitized file takes about 3×
+# Eigen's own assertions on (no NDEBUG). Only these two: a sanitized file takes about 3×
 # its Release compile time, and more would take .ci/run past 30 minutes. Any finding stops
 # the run.
 echo "== tests under ASan and UBSan"
@@ -41,7 +41,7 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDDB_BUILD_APPS=
       -DDDB_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
       -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" \
       -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined"
-cmake --build build-sanitize -j2 --target sanitizer_tests  # the four, tests/CMakeLists.txt
+cmake --build build-sanitize -j2 --target sanitizer_tests  # the two, tests/CMakeLists.txt
 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 ASAN_OPTIONS=detect_leaks=1 \
   ctest --test-dir build-sanitize --output-on-failure -j2 -E _NOT_BUILT
 echo "== all checks passed"
