@@ -7,6 +7,10 @@
 // apply and solve cost O(N²): the solve is one Thomas (LDLᵀ) sweep per diagonal on
 // factors computed once here; the blocks are negative definite except m = 0, which is
 // solved on the traceless part with one unknown pinned and the mean removed afterwards.
+// Entry (i, j) follows (i−1, j−1) on its diagonal, so the factors are stored as N×N
+// matrices laid out like P and all diagonals are swept at once, column after column:
+// contiguous memory instead of a stride of N + 1 (the solve runs in every sweep of the
+// fluid's Legendre solver; docs/design.md, "Measured, and what it decided").
 #pragma once
 
 #include <ddb/core/errors.h>
@@ -22,6 +26,8 @@ class HoppeYauLaplacian {
  public:
   explicit HoppeYauLaplacian(Eigen::Index n) : n_(n), blocks_(static_cast<std::size_t>(n)) {
     if (n < 2) throwInvalid("N", std::to_string(n), "must be >= 2");
+    lower_.setZero(n, n);
+    inverse_pivot_.setZero(n, n);
     for (Eigen::Index m = 0; m < n; ++m) {
       Block& b = blocks_[static_cast<std::size_t>(m)];
       const Eigen::Index length = n - m;
@@ -32,7 +38,7 @@ class HoppeYauLaplacian {
         b.diagonal(k) = -((N - 1) * (i + j + 1) - 2 * i * j);
         b.off(k) = k == 0 ? 0.0 : std::sqrt(i * (N - i) * j * (N - j));
       }
-      factor(b, m == 0 ? 1 : 0);
+      factor(b, m);
     }
   }
 
@@ -71,41 +77,49 @@ class HoppeYauLaplacian {
     const auto mean = W.trace() / typename X::Scalar(double(n_));
     if (&out != &W) out = W;
     out.diagonal().array() -= mean;
-    for (Eigen::Index m = -(n_ - 1); m < n_; ++m) {
-      const Block& b = block(m);
-      const Eigen::Index length = n_ - std::abs(m);
-      const Eigen::Index first = m == 0 ? 1 : 0;  // m = 0: x_0 pinned to 0
-      // Forward sweep L y = b, then back substitution D Lᵀ x = y.
-      for (Eigen::Index k = first + 1; k < length; ++k) {
-        at(out, m, k) -= b.lower(k) * at(out, m, k - 1);
-      }
-      at(out, m, length - 1) *= b.inverse_pivot(length - 1);
-      for (Eigen::Index k = length - 2; k >= first; --k) {
-        at(out, m, k) = at(out, m, k) * b.inverse_pivot(k) - b.lower(k + 1) * at(out, m, k + 1);
-      }
-      if (m == 0) {
-        at(out, 0, 0) = 0.0;
-        out.diagonal().array() -= out.diagonal().mean();
-      }
+    const Eigen::Index n = n_;
+    // Forward sweep L y = b on every diagonal: y(i, j) −= lower(i, j) y(i − 1, j − 1).
+    for (Eigen::Index j = 1; j < n; ++j) {
+      auto* y = &out(0, j);
+      const auto* previous = &out(0, j - 1);
+      const double* lower = &lower_(0, j);
+      for (Eigen::Index i = 1; i < n; ++i) y[i] -= lower[i] * previous[i - 1];
     }
+    // Back substitution D Lᵀ x = y: x(i, j) = y(i, j)/w(i, j) − lower(i + 1, j + 1) x(i + 1, j +
+    // 1). The pinned unknown of m = 0 has 1/w = 0 and lower(1, 1) = 0, so it comes out 0.
+    for (Eigen::Index j = n - 1; j >= 0; --j) {
+      auto* x = &out(0, j);
+      const double* inverse_pivot = &inverse_pivot_(0, j);
+      if (j + 1 == n) {
+        for (Eigen::Index i = 0; i < n; ++i) x[i] *= inverse_pivot[i];
+        continue;
+      }
+      const auto* next = &out(0, j + 1);
+      const double* lower = &lower_(0, j + 1);
+      for (Eigen::Index i = 0; i + 1 < n; ++i) {
+        x[i] = x[i] * inverse_pivot[i] - lower[i + 1] * next[i + 1];
+      }
+      x[n - 1] *= inverse_pivot[n - 1];
+    }
+    out.diagonal().array() -= out.diagonal().mean();
   }
 
  private:
   struct Block {
-    Eigen::VectorXd diagonal, off, lower, inverse_pivot;
+    Eigen::VectorXd diagonal, off;
   };
 
-  // LDLᵀ of the tridiagonal block restricted to indices first..end: lower(k) = off(k)/w_{k−1},
-  // w_k = d_k − lower(k) off(k); stored as inverse_pivot = 1/w.
-  static void factor(Block& b, Eigen::Index first) {
-    const Eigen::Index length = b.diagonal.size();
-    b.lower = Eigen::VectorXd::Zero(length);
-    b.inverse_pivot = Eigen::VectorXd::Zero(length);
+  // LDLᵀ of block m restricted to indices first..end (first = 1 for m = 0, else 0):
+  // lower(k) = off(k)/w_{k−1}, w_k = d_k − lower(k) off(k), stored with 1/w_k at the entry
+  // k of diagonals m and −m (entries before `first` keep lower = 1/w = 0).
+  void factor(const Block& b, Eigen::Index m) {
+    const Eigen::Index length = b.diagonal.size(), first = m == 0 ? 1 : 0;
     double w = 0.0;
     for (Eigen::Index k = first; k < length; ++k) {
-      if (k > first) b.lower(k) = b.off(k) / w;
-      w = b.diagonal(k) - (k > first ? b.lower(k) * b.off(k) : 0.0);
-      b.inverse_pivot(k) = 1.0 / w;
+      const double lower = k > first ? b.off(k) / w : 0.0;
+      w = b.diagonal(k) - lower * b.off(k);
+      lower_(k, k + m) = lower_(k + m, k) = lower;
+      inverse_pivot_(k, k + m) = inverse_pivot_(k + m, k) = 1.0 / w;
     }
   }
 
@@ -134,6 +148,8 @@ class HoppeYauLaplacian {
 
   Eigen::Index n_;
   std::vector<Block> blocks_;
+  // lower(k) and 1/w_k of entry k of diagonal m, stored at that entry's (i, j).
+  Eigen::MatrixXd lower_, inverse_pivot_;
 };
 
 }  // namespace ddb
