@@ -205,12 +205,6 @@ Matrix initialVorticity(const CLI::App& cli, const Options& o, std::string& init
   return zonalVorticity(o.n, o.seed);
 }
 
-/// ‖A‖₂ of a skew-Hermitian A: the largest |eigenvalue| of −iA.
-double spectralNorm(const Matrix& A) {
-  const auto spectrum = SUN::casimirs(A);
-  return std::max(std::abs(spectrum(0)), std::abs(spectrum(spectrum.size() - 1)));
-}
-
 /// Bad input if the first step would overflow: the DDB step squares its dissipative part
 /// h|α|‖P₀‖₂‖W₀‖₂/ħ, which past √(largest double) ≈ 1e154 becomes inf and then NaN
 /// (measured without this check at N = 8 and 32 with the default h: α = 1e155 ran, and
@@ -221,8 +215,8 @@ double spectralNorm(const Matrix& A) {
 constexpr double kMaxDissipativeStep = 1e150;
 void requireRepresentableStep(const CLI::App& cli, const Options& o, const Settings& s) {
   const ZeitlinHamiltonian hamiltonian(s.W0.rows());
-  const double scale =
-      spectralNorm(hamiltonian.streamMatrix(s.W0)) * spectralNorm(s.W0) / hamiltonian.hbar() * s.h;
+  const double scale = SUN::spectralNorm(hamiltonian.streamMatrix(s.W0)) * SUN::spectralNorm(s.W0) /
+                       hamiltonian.hbar() * s.h;
   // NaN (0 · inf) fails too.
   const auto fits = [&](double alpha) { return std::abs(alpha) * scale <= kMaxDissipativeStep; };
   if (fits(s.alpha)) return;
@@ -261,7 +255,7 @@ Settings settings(const CLI::App& cli, const Options& o) {
   s.default_h = o.h.empty();
   if (s.default_h) {
     const ZeitlinHamiltonian hamiltonian(s.W0.rows());
-    s.h = kStepFactor * hamiltonian.hbar() / spectralNorm(hamiltonian.streamMatrix(s.W0));
+    s.h = kStepFactor * hamiltonian.hbar() / SUN::spectralNorm(hamiltonian.streamMatrix(s.W0));
   } else {
     s.h = app::parseNumber("--h", o.h, o.h);
     if (!(s.h > 0)) app::usageError("--h", o.h, "must be > 0");

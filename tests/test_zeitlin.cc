@@ -2,6 +2,9 @@
 // library did not use to compute it: Eigen's eigensolver on the dense Laplacian, the
 // defining orthonormality of T_lm, central differences along the flow, the isospectral
 // midpoint rule written here from its own formula, the adaptive reference solver.
+#include <ddb/core/dense_inverse.h>
+#include <ddb/integrators/correction_predictor.h>
+#include <ddb/integrators/ddb.h>
 #include <ddb/integrators/method_registry.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
@@ -11,6 +14,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <vector>
 
@@ -261,6 +265,96 @@ TEST(MatrixLegendreSolver, NewtonKrylovTakesOverWhereTheFixedPointStalls) {
   const Matrix next = method.step(W, 0.0, stepSize(W, 1.5));
   EXPECT_GT(method.legendreSolver().stats().newton, 0);
   EXPECT_LT((SUN::casimirs(next) - SUN::casimirs(W)).norm(), 1e-13 * W.norm());
+}
+
+// Any sequence obeying a linear recurrence of order <= 6 (polynomials of degree <= 5 in k,
+// geometric sequences and their sums) is continued exactly by the linear prediction; the
+// closed form of the next term is the reference.
+TEST(CorrectionPredictor, ContinuesSequencesThatObeyALinearRecurrence) {
+  const int n = 9;
+  const Matrix A = randomVorticity(n, 31), B = randomVorticity(n, 32), C = randomVorticity(n, 33);
+  const Matrix near = randomVorticity(n, 34);
+  const std::vector<std::function<Matrix(int)>> sequences = {
+      [&](int k) { return Matrix(A + k * B + 0.5 * k * k * C); },  // degree 2
+      [&](int k) { return Matrix(1e-3 * std::pow(k, 5) * A + std::pow(k, 3) * B - C); },
+      [&](int k) { return Matrix(A + std::pow(0.5, k) * B + std::pow(-0.3, k) * C); },
+      [&](int k) { return Matrix(std::pow(0.9, k) * A + k * std::pow(0.9, k) * B + C); },
+  };
+  for (std::size_t i = 0; i < sequences.size(); ++i) {
+    CorrectionPredictor<Matrix> predictor;
+    Matrix guess(n, n);
+    for (int k = 0; k < 9; ++k) predictor.remember(near + sequences[i](k), near);
+    EXPECT_EQ(predictor.order(), 6);
+    for (int k = 9; k < 14; ++k) {
+      predictor.predict(near, guess);
+      const Matrix expected = near + sequences[i](k);
+      EXPECT_LT((guess - expected).norm(), 1e-9 * expected.norm())
+          << "sequence " << i << " k " << k;
+      predictor.remember(expected, near);
+    }
+  }
+}
+
+// A state that does not continue the remembered corrections (no reset() between two
+// trajectories) gets at most the newest correction, never an amplified extrapolation.
+TEST(CorrectionPredictor, AStateOffTheRememberedTrajectoryGetsTheNewestCorrection) {
+  const int n = 6;
+  const Matrix near = randomVorticity(n, 41), step = randomVorticity(n, 42);
+  CorrectionPredictor<Matrix> predictor;
+  // Corrections alternating in sign fit c_{k+1} = −c_k... then the next one jumps.
+  for (int k = 0; k < 9; ++k) predictor.remember(near + std::pow(-1.0, k) * step, near);
+  predictor.remember(near + 50.0 * step, near);
+  Matrix guess(n, n);
+  predictor.predict(near, guess);
+  EXPECT_LE((guess - near).norm(), 2.0 * 50.0 * step.norm() + 1e-12);
+  EXPECT_EQ(predictor.order(), 6);
+}
+
+// The LAPACK (or Eigen LU) inverse against Eigen's own inverse(), real and complex.
+TEST(DenseInverse, AgreesWithEigensInverseAndReportsASingularMatrix) {
+  for (int n : {1, 2, 7, 40}) {
+    Matrix A = Matrix::Random(n, n);
+    A.diagonal().array() += 3.0;
+    Matrix inverse = A;
+    DenseInverse<Matrix> complex_inverse;
+    ASSERT_TRUE(complex_inverse.invert(inverse));
+    EXPECT_LT((inverse - A.inverse()).norm(), 1e-13 * A.inverse().norm()) << n;
+    Eigen::MatrixXd R = Eigen::MatrixXd::Random(n, n) + 3.0 * Eigen::MatrixXd::Identity(n, n);
+    Eigen::MatrixXd real_inverse = R;
+    DenseInverse<Eigen::MatrixXd> real;
+    ASSERT_TRUE(real.invert(real_inverse));
+    EXPECT_LT((real_inverse - R.inverse()).norm(), 1e-13 * R.inverse().norm()) << n;
+  }
+  Matrix singular = Matrix::Zero(3, 3);
+  DenseInverse<Matrix> inverse;
+  EXPECT_FALSE(inverse.invert(singular));
+}
+
+// One DDB Cayley step equals Uᴴ M U with U = cay(2a) cay(2b), a = hξ(p)/2 and
+// b = α[p, a], formed here with Eigen's inverse: the one-product update through the
+// certified frozen solution (M − 2[a, p̃]) is that conjugation to rounding.
+TEST(MatrixCayleyTransport, TheCertifiedOneProductUpdateIsTheCayleyConjugation) {
+  const int n = 24;
+  for (double alpha : {0.0, 0.5}) {
+    const auto fluid = makeZeitlinFluid(n, alpha);
+    Matrix W = randomVorticity(n, 51);
+    const double h = stepSize(W, 0.05);
+    Ddb<Cayley<SUN>> method(fluid, Cayley<SUN>(), LegendreForm::kHamiltonian);
+    int certified = 0;
+    for (int k = 0; k < 20; ++k) {
+      const Matrix M = W;
+      method.advance(W, k * h, h);
+      const auto& solver = method.legendreSolver();
+      if (solver.frozenSolution() != nullptr) ++certified;
+      const Matrix& a = solver.halfStep();
+      const Matrix& p = solver.solution();
+      const Matrix I = Matrix::Identity(n, n);
+      const Matrix b = alpha * (p * a - a * p);
+      const Matrix U = (I - a).inverse() * (I + a) * (I - b).inverse() * (I + b);
+      EXPECT_LT((W - U.adjoint() * M * U).norm(), 1e-14 * M.norm()) << alpha << " step " << k;
+    }
+    EXPECT_GE(certified, 15) << alpha;  // the cheap update is the common case
+  }
 }
 
 // Orders against the adaptive reference, N = 8, t in [0, 1] (docs/conventions.md §2).

@@ -87,6 +87,13 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
     return eigen.eigenvalues();  // ascending
   }
 
+  /// ‖μ‖₂ of a skew-Hermitian μ: the largest |eigenvalue| of −iμ (its spectrum, a Casimir).
+  template <class X>
+  static double spectralNorm(const X& mu) {
+    const Casimirs<double> spectrum = Derived::casimirs(mu);
+    return std::max(std::abs(spectrum(0)), std::abs(spectrum(spectrum.size() - 1)));
+  }
+
   // ---- Closed forms shadowing the deduced API ----
   template <class X>
   static X inverse(const X& g) {

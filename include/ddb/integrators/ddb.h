@@ -48,8 +48,9 @@ class Ddb : public LegendreMethod<R> {
   void advance(Dual& mu, double t, double h) override {
     if constexpr (isDynamicGroup<G>) {
       this->legendre_.solveInPlace(FixedMomentum<G>{mu}, mu, t, h);
-      transport_.apply(this->system_->metric(), this->legendre_.solution(),
-                       this->legendre_.halfStep(), mu);
+      const auto& solver = this->legendre_;
+      transport_.apply(this->system_->metric(), solver.halfStep(), solver.halfStepTimesSolution(),
+                       solver.frozenSolution(), mu);
     } else {
       mu = step(mu, t, h);
     }

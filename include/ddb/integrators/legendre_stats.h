@@ -8,6 +8,7 @@ struct LegendreStats {
   int fixed_point = 0;  // fixed-point sweeps (the predictor's, for small systems)
   int newton = 0;       // Newton steps
   int krylov = 0;       // Jacobian–vector products inside GMRES (matrix-free solver only)
+  int refinements = 0;  // frozen sweeps for an exact one-product update (matrix-free only)
   double residual = 0;  // final ‖r‖
 };
 

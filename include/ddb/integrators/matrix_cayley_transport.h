@@ -1,18 +1,24 @@
 // The update of a DDB Cayley step on a matrix group, in place (docs/conventions.md §2):
 //   M_{k+1} = Ad*_U M_k = Uᴴ M_k U,  U = cay(hξ) cay(hφ),  cay(2x) = (I − x)⁻¹(I + x),
-// with a = hξ/2 from the Legendre solution p and hφ/2 = k♯(ad*_{hξ/2} p) = k♯([p, a]).
+// with a = hξ/2 from the Legendre solution p and b = hφ/2 = k♯(ad*_{hξ/2} p) = k♯([p, a]).
 // M_{k+1} is formed by conjugating M_k, not read out as (I − a) p (I + a): the read-out is
 // isospectral to p, whose solver residual would enter the spectrum at every step and add
-// up; the conjugation keeps the spectrum of M_k to round-off whatever the tolerance.
-// Cost: one LU solve for cay(hξ), with dissipation one product for [p, a], one LU solve
-// for cay(hφ) and one product for U, then two products for Uᴴ M U. The workspaces and
-// the LU are allocated when the size first appears, then reused.
+// up; the conjugation keeps the spectrum of M_k to rounding whatever the tolerance.
+//
+// The first factor: with p̃ = (I + a)⁻¹ M (I − a)⁻¹, the solution of the frozen-a equation
+// (I + a) p̃ (I − a) = M, Ad*_{cay(2a)} M = (I − a) p̃ (I + a) = M − 2[a, p̃]: one product
+// when the solver certified p̃ to rounding (MatrixLegendreSolver::frozenSolution), else
+// cay(2a) = 2(I − a)⁻¹ − I by one inverse and Uᴴ M U by two products. The second, with
+// dissipation: [p, a] = (ap)ᴴ − ap from the solver's a p, one inverse for cay(2b) and two
+// products. The workspaces are allocated when the size first appears, then reused.
 #pragma once
 
+#include <ddb/core/dense_inverse.h>
 #include <ddb/core/dissipation_metric.h>
+#include <ddb/core/errors.h>
 
 #include <Eigen/Core>
-#include <Eigen/LU>
+#include <cmath>
 
 namespace ddb {
 
@@ -21,44 +27,52 @@ class MatrixCayleyTransport {
  public:
   using Dual = typename G::template Dual<double>;
 
-  /// mu ← Uᴴ mu U with U = cay(2a) cay(2 k♯([p, a])).
-  void apply(const DissipationMetric<G>& metric, const Dual& p, const Dual& a, Dual& mu) {
-    allocate(p);
-    cayleyOfTwice(a, rotation_);  // cay(hξ)
-    product_.noalias() = p * a;
-    commutator_ = product_ - product_.adjoint();  // [p, a] = pa − ap, ap = (pa)ᴴ
-    metric.sharpInto(commutator_, half_);         // hφ/2
-    const Dual* U = &rotation_;
-    if (!half_.isZero(0.0)) {
-      cayleyOfTwice(half_, kick_);  // cay(hφ)
-      total_.noalias() = rotation_ * kick_;
-      U = &total_;
+  /// mu ← Uᴴ mu U with U = cay(2a) cay(2 k♯([p, a])), given a, the product a p and, when
+  /// certified, the frozen solution p̃ (else nullptr).
+  void apply(const DissipationMetric<G>& metric, const Dual& a, const Dual& ap, const Dual* frozen,
+             Dual& mu) {
+    allocate(a);
+    commutator_ = ap.adjoint() - ap;       // [p, a] = pa − ap, pa = (ap)ᴴ
+    metric.sharpInto(commutator_, half_);  // hφ/2
+    if (frozen != nullptr) {
+      product_.noalias() = a * (*frozen);
+      mu -= 2.0 * (product_ - product_.adjoint());  // mu − 2[a, p̃]
+    } else {
+      cayleyOfTwice(a, rotation_);  // cay(hξ)
+      conjugate(rotation_, mu);
     }
-    product_.noalias() = mu * (*U);
-    mu.noalias() = U->adjoint() * product_;
+    if (!half_.isZero(0.0)) {
+      cayleyOfTwice(half_, rotation_);  // cay(hφ)
+      conjugate(rotation_, mu);
+    }
   }
 
  private:
-  // out = cay(2x) = (I − x)⁻¹(I + x).
+  // out = cay(2x) = (I − x)⁻¹(I + x) = 2(I − x)⁻¹ − I.
   void cayleyOfTwice(const Dual& x, Dual& out) {
-    lhs_ = identity_ - x;
-    lu_.compute(lhs_);
-    rhs_ = identity_ + x;
-    out.noalias() = lu_.solve(rhs_);
+    out = -x;
+    out.diagonal().array() += 1.0;
+    if (!inverse_.invert(out)) {
+      throw NonFiniteState("Cayley transport", -1, NAN, NAN, x, "Cayley argument (I - x singular)");
+    }
+    out *= 2.0;
+    out.diagonal().array() -= 1.0;
+  }
+
+  // mu ← Uᴴ mu U.
+  void conjugate(const Dual& U, Dual& mu) {
+    product_.noalias() = mu * U;
+    mu.noalias() = U.adjoint() * product_;
   }
 
   void allocate(const Dual& like) {
-    if (identity_.rows() == like.rows()) return;
-    const auto n = like.rows();
-    for (Dual* m : {&rotation_, &kick_, &total_, &product_, &commutator_, &half_, &lhs_, &rhs_}) {
-      m->setZero(n, n);
-    }
-    identity_ = Dual::Identity(n, n);
-    lu_ = Eigen::PartialPivLU<Dual>(n);
+    if (product_.rows() == like.rows()) return;
+    for (Dual* m : {&rotation_, &product_, &commutator_, &half_})
+      m->setZero(like.rows(), like.cols());
   }
 
-  Dual rotation_, kick_, total_, product_, commutator_, half_, lhs_, rhs_, identity_;
-  Eigen::PartialPivLU<Dual> lu_;
+  Dual rotation_, product_, commutator_, half_;
+  DenseInverse<Dual> inverse_;
 };
 
 }  // namespace ddb
