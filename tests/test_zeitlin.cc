@@ -283,9 +283,10 @@ TEST(CorrectionPredictor, ContinuesSequencesThatObeyALinearRecurrence) {
   for (std::size_t i = 0; i < sequences.size(); ++i) {
     CorrectionPredictor<Matrix> predictor;
     Matrix guess(n, n);
-    for (int k = 0; k < 9; ++k) predictor.remember(near + sequences[i](k), near);
-    EXPECT_EQ(predictor.order(), 6);
-    for (int k = 9; k < 14; ++k) {
+    const int warm = CorrectionPredictor<Matrix>::kOrder + 3;  // the full order from here on
+    for (int k = 0; k < warm; ++k) predictor.remember(near + sequences[i](k), near);
+    EXPECT_EQ(predictor.order(), CorrectionPredictor<Matrix>::kOrder);
+    for (int k = warm; k < warm + 5; ++k) {
       predictor.predict(near, guess);
       const Matrix expected = near + sequences[i](k);
       EXPECT_LT((guess - expected).norm(), 1e-9 * expected.norm())
@@ -295,19 +296,21 @@ TEST(CorrectionPredictor, ContinuesSequencesThatObeyALinearRecurrence) {
   }
 }
 
-// A state that does not continue the remembered corrections (no reset() between two
-// trajectories) gets at most the newest correction, never an amplified extrapolation.
-TEST(CorrectionPredictor, AStateOffTheRememberedTrajectoryGetsTheNewestCorrection) {
+// A predicted correction more than twice the largest remembered one is not trusted (a
+// state off the remembered trajectory, a caller that skipped reset()): the guess is then
+// the newest correction. Corrections tripling at each step predict a tripled one.
+TEST(CorrectionPredictor, APredictionBeyondTwiceTheRememberedCorrectionsFallsBackToTheNewest) {
   const int n = 6;
   const Matrix near = randomVorticity(n, 41), step = randomVorticity(n, 42);
   CorrectionPredictor<Matrix> predictor;
-  // Corrections alternating in sign fit c_{k+1} = −c_k... then the next one jumps.
-  for (int k = 0; k < 9; ++k) predictor.remember(near + std::pow(-1.0, k) * step, near);
-  predictor.remember(near + 50.0 * step, near);
+  Matrix newest;
+  for (int k = 0; k < 12; ++k) {
+    newest = std::pow(3.0, k) * step;
+    predictor.remember(near + newest, near);
+  }
   Matrix guess(n, n);
   predictor.predict(near, guess);
-  EXPECT_LE((guess - near).norm(), 2.0 * 50.0 * step.norm() + 1e-12);
-  EXPECT_EQ(predictor.order(), 6);
+  EXPECT_LT((guess - (near + newest)).norm(), 1e-12 * newest.norm());
 }
 
 // The LAPACK (or Eigen LU) inverse against Eigen's own inverse(), real and complex.

@@ -200,7 +200,8 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
   }
 
   /// The largest N accepted for a state: one 4096×4096 complex matrix is 256 MiB and a
-  /// DDB step keeps about ten of them.
+  /// DDB Cayley step keeps about 25 of them (solver workspaces, the predictor's 8
+  /// corrections, the transport's), 31 more once Newton–Krylov is needed (GMRES's basis).
   static constexpr Eigen::Index kMaxN = 4096;
 
  private:

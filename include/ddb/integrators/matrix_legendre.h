@@ -90,9 +90,9 @@ class MatrixLegendreSolver {
     return solve(FixedMomentum<G>{momentum}, momentum, t, h, p);
   }
 
-  /// Solves without copying out: the solution is solution(), ξ = velocity(),
-  /// a = hξ/2 = halfStep() and the product a p = halfStepTimesSolution(), valid until the
-  /// next solve. For DDB's target (the momentum M) the solve also certifies, when it can,
+  /// Solves without copying out: the solution is solution(), ξ = velocity() and
+  /// a = hξ/2 = halfStep(), valid until the next solve. For DDB's target (the momentum M)
+  /// it also leaves the product a p = halfStepTimesSolution() and certifies, when it can,
   /// frozenSolution(): p̃ = (I + a)⁻¹ M (I − a)⁻¹ for this a to rounding, with which the
   /// update Ad*_{cay(2a)} M = M − 2[a, p̃] costs one product (matrix_cayley_transport.h).
   template <class Target>
@@ -185,13 +185,15 @@ class MatrixLegendreSolver {
                              (stats_.newton > 0 ? "Newton" : "fixed point") + ")",
                          -1, t, h, stats_.residual, tolerance);
     }
-    if constexpr (!kFixed) ap_.noalias() = a_ * p_;
-    predictor_.remember(kFixed ? next_ : p_, near);
+    // The most accurate solution at hand: p̃ when certified (it solves the frozen-a equation
+    // to rounding), else the next iterate.
+    predictor_.remember(!kFixed ? p_ : frozen_exact_ ? frozen_ : next_, near);
   }
 
   const Dual& solution() const { return p_; }
   const Algebra& velocity() const { return xi_; }
   const Algebra& halfStep() const { return a_; }
+  /// a p, after a solve of DDB's target.
   const Dual& halfStepTimesSolution() const { return ap_; }
   /// p̃ with (I + a) p̃ (I − a) = M to rounding (see solveInPlace), or nullptr when the
   /// last solve could not certify it (the update then forms cay(2a)).
@@ -207,7 +209,6 @@ class MatrixLegendreSolver {
                     &t1_, &t2_, &target_}) {
       m->setZero(like.rows(), like.cols());
     }
-    gmres_.resize(like.rows(), like.cols());
     predictor_.reset();
   }
 
@@ -230,7 +231,7 @@ class MatrixLegendreSolver {
     frozen_exact_ = false;
     if (!(lambda < 1.0)) return false;
     if (4.0 * norm_a * lambda / (1.0 - lambda) * update <= rounding) {
-      frozen_ = next_;
+      frozen_.swap(next_);
       return frozen_exact_ = true;
     }
     const double refined =
@@ -250,6 +251,7 @@ class MatrixLegendreSolver {
 
   // Newton on r(p) = (I + a)p(I − a) − W with GMRES on J δ = −r.
   bool newtonKrylov(const Dual& W, double h, double tolerance) {
+    gmres_.resize(W.rows(), W.cols());  // its basis only when Newton–Krylov is needed
     for (int k = 0; k < kMaxNewton; ++k) {
       updateVelocity(h);
       G::cayleyFixedPoint(W, a_, p_, ap_, apa_, next_);
