@@ -58,7 +58,7 @@ def main():
                     continue
                 ms = b["real_time"] * {"us": 1e-3, "ms": 1.0, "ns": 1e-6, "s": 1e3}[b["time_unit"]]
                 gms = gemm["real_time"] * {"us": 1e-3, "ms": 1.0, "ns": 1e-6, "s": 1e3}[gemm["time_unit"]]
-                iterations = b.get("iterations_per_step")
+                iterations = None if "rk4" in name else b.get("iterations_per_step")
                 row += f" {ms:.3g} | {ms / gms:.1f} | {'' if iterations is None else f'{iterations:.2f}'} |"
             print(row)
     print()
