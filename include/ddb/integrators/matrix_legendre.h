@@ -3,19 +3,22 @@
 //   target = (I + a) p (I − a),  a = h ξ(p)/2,  ξ = ∂H/∂μ(p),
 // for p in u(N) (so(N)), not projected to su(N). First the fixed point
 //   p ← target − [a, p] + a p a                                  (two products)
-// from a predictor; when it contracts too slowly (h‖ξ‖ near 1), Newton–Krylov: GMRES
-// on the exact Jacobian–vector products (four products each). Workspaces are allocated
-// on the first solve of a size and reused: no iteration allocates.
+// from the guess of a CorrectionPredictor (linear prediction from the last corrections);
+// when it contracts too slowly (h‖ξ‖ near 1), Newton–Krylov: GMRES on the exact
+// Jacobian–vector products (four products each). Workspaces are allocated on the first
+// solve of a size and reused: no iteration allocates.
 //
 // Ceres (ceres::Problem, dense QR, the Jacobian assembled from the same exact
 // Jacobian–vector products, one per coordinate) solves the same equation in real
 // coordinates of u(N) when asked, for small N only (at most kMaxCeresDimension unknowns):
 // an independent check of the matrix-free iterations.
 //
-// Convergence: the error bound of the accepted fixed-point iterate, ρ/(1 − ρ) times the
-// last update (the update equals the residual r(p)), with ρ the measured rate, or the
-// Newton residual, below relative_tolerance·‖target‖; otherwise a SolveFailure with the last
-// residual, and the caller keeps every state before it.
+// Convergence: an error bound of the accepted fixed-point iterate below
+// relative_tolerance·‖target‖, with ρ the measured rate and the update equal to the
+// residual r(p): update/(1 − ρ) for DDB's target, whose accepted iterate is the one whose
+// a the update uses, ρ/(1 − ρ)·update for the others, whose accepted iterate is the next;
+// or the Newton residual. Otherwise a SolveFailure with the last residual, and the caller
+// keeps every state before it.
 #pragma once
 
 #include <ceres/ceres.h>
@@ -212,11 +215,6 @@ class MatrixLegendreSolver {
     predictor_.reset();
   }
 
-  // Predictor: the correction c = p − near varies smoothly along the trajectory (c = O(h)),
-  // so the polynomial through the last q + 1 corrections (q < kHistory), extrapolated one
-  // step, Σ_j (−1)^j C(q+1, j+1) c_{k−j}, is O(h^{q+1}) from the next one. On the
-  // benchmark's fluid (h = 0.02 ħ/‖P‖₂) each degree gains a factor ~35: 1.6e-4 relative
-  // for the last correction alone, 3e-12 for degree 5 (docs/design.md).
   // With a = a(p) frozen, (I + a) p̃ (I − a) = M is linear in p̃, next = M − [a, p] + a p a
   // is its fixed-point map, of rate λ ≤ 2‖a‖₂ + ‖a‖₂², and Ad*_{cay(2a)} M = M − 2[a, p̃]
   // exactly. M − 2[a, q] misses it by 2‖[a, p̃ − q]‖ ≤ 4‖a‖₂‖p̃ − q‖, which must stay below
