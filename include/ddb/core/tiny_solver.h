@@ -73,6 +73,36 @@ TinySolveStats runTinySolver(const Function& function, Eigen::Matrix<double, N, 
   return {summary.iterations, norm, norm <= target};
 }
 
+/// Up to `max_steps` TinySolver steps on r(x) = 0 from x, each a Solve() of one LM step,
+/// stopping as soon as ‖r‖ <= target (no throw). One Solve per step because TinySolver,
+/// after an accepted step, re-evaluates the point with its Jacobian and forms JᵀJ, Jᵀr and
+/// the scaling again before it looks at the cost; with function_tolerance = ∞ it returns
+/// right after the step (COST_CHANGE_TOO_SMALL) with the cost at the new point, which is
+/// all a predicted guess needs (`FrozenJacobian` keeps the Jacobian across the Solves).
+/// A step that does not lower ‖r‖ ends the loop.
+template <class Function, int N = Function::NUM_PARAMETERS>
+TinySolveStats runTinySteps(const Function& function, Eigen::Matrix<double, N, 1>& x, double target,
+                            int max_steps) {
+  ceres::TinySolver<Function, NormalEquationSolver<N>> solver;
+  solver.options.max_num_iterations = 2;  // iterations 1 .. max − 1: one step
+  solver.options.gradient_tolerance = 0.0;
+  solver.options.function_tolerance = INFINITY;
+  solver.options.parameter_tolerance = 1e-16;
+  solver.options.cost_threshold = 0.5 * target * target;
+  solver.options.initial_trust_region_radius = 1e12;
+  TinySolveStats stats;
+  double previous = INFINITY;
+  for (int k = 0; k < max_steps; ++k) {
+    const auto& summary = solver.Solve(function, &x);
+    stats.iterations += summary.iterations;
+    stats.residual = std::sqrt(2.0 * summary.final_cost);
+    stats.converged = stats.residual <= target;
+    if (stats.converged || !(stats.residual < previous)) break;
+    previous = stats.residual;
+  }
+  return stats;
+}
+
 /// Solves r(x) = 0 to ‖r‖ <= relative_tolerance · scale or throws SolveFailure.
 template <class Function, int N = Function::NUM_PARAMETERS>
 TinySolveStats solveTinyWith(const Function& function, Eigen::Matrix<double, N, 1>& x, double scale,

@@ -70,8 +70,8 @@ class DiscreteLegendreSolver {
     unknown_ = form_ == LegendreForm::kLagrangian ? Vector(system_.velocity(guess)) : guess;
     const double scale = near.norm();
     TinySolveStats solved =
-        runTinySolver(FrozenJacobian<LegendreEquation<R, Target>>(equation), unknown_,
-                      options_.relative_tolerance * scale, kChordIterations);
+        runTinySteps(FrozenJacobian<LegendreEquation<R, Target>>(equation), unknown_,
+                     options_.relative_tolerance * scale, kChordIterations);
     stats_.newton = solved.iterations;
     if (!solved.converged) {  // from where the chord iterations left it, with fresh Jacobians
       solved =
