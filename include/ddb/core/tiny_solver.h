@@ -10,7 +10,6 @@
 #include <ceres/tiny_solver_autodiff_function.h>
 #include <ddb/core/errors.h>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <cmath>
@@ -32,10 +31,10 @@ struct TinySolveStats {
   bool converged = false;
 };
 
-/// TinySolver's linear solver for its normal equations JᵀJ δ = Jᵀr (SPD): for n ≤ 4 the
-/// inverse by Eigen's closed form (cofactors, no pivoting loop: the 3 × 3 of SO(3) costs a
-/// few dozen flops), LLT above (the 6 × 6 of SE(3)). Its rounding only slows Newton's
-/// convergence, not what it converges to: the residual is always the true one.
+/// TinySolver's linear solvers for its normal equations JᵀJ δ = Jᵀr (SPD). Their rounding only
+/// slows Newton's convergence, not what it converges to: the residual is always the true one.
+/// For n ≤ 4 the inverse by Eigen's closed form (cofactors, no pivoting loop: the 3 × 3 of SO(3)
+/// costs a few dozen flops).
 template <int N>
 struct SmallInverseSolver {
   Eigen::Matrix<double, N, N> inverse;
@@ -48,9 +47,46 @@ struct SmallInverseSolver {
     return inverse * b;
   }
 };
+/// Above (the 6 × 6 of SE(3)), Cholesky a = L Lᵀ with loops of compile-time length that the
+/// compiler unrolls: Eigen's LLT runs its blocked, run-time-sized kernel out of line, and it
+/// took 12% of a heavy-top DDB step (perf, docs/design.md). The reciprocals of L's diagonal
+/// are kept, so that the two triangular solves only multiply. No pivoting: a is SPD.
+template <int N>
+struct SmallCholeskySolver {
+  Eigen::Matrix<double, N, N> lower;  // L below the diagonal; the diagonal is unused
+  Eigen::Matrix<double, N, 1> inverse_diagonal;
+  template <class Matrix>
+  void compute(const Matrix& a) {
+    for (int j = 0; j < N; ++j) {
+      double diagonal = a(j, j);
+      for (int k = 0; k < j; ++k) diagonal -= lower(j, k) * lower(j, k);
+      inverse_diagonal(j) = 1.0 / std::sqrt(diagonal);
+      for (int i = j + 1; i < N; ++i) {
+        double sum = a(i, j);
+        for (int k = 0; k < j; ++k) sum -= lower(i, k) * lower(j, k);
+        lower(i, j) = sum * inverse_diagonal(j);
+      }
+    }
+  }
+  template <class Vector>
+  Eigen::Matrix<double, N, 1> solve(const Vector& b) const {
+    Eigen::Matrix<double, N, 1> x;
+    for (int i = 0; i < N; ++i) {  // L y = b
+      double sum = b(i);
+      for (int k = 0; k < i; ++k) sum -= lower(i, k) * x(k);
+      x(i) = sum * inverse_diagonal(i);
+    }
+    for (int i = N - 1; i >= 0; --i) {  // Lᵀ x = y
+      double sum = x(i);
+      for (int k = i + 1; k < N; ++k) sum -= lower(k, i) * x(k);
+      x(i) = sum * inverse_diagonal(i);
+    }
+    return x;
+  }
+};
 template <int N>
 using NormalEquationSolver =
-    std::conditional_t<(N <= 4), SmallInverseSolver<N>, Eigen::LLT<Eigen::Matrix<double, N, N>>>;
+    std::conditional_t<(N <= 4), SmallInverseSolver<N>, SmallCholeskySolver<N>>;
 
 /// Runs TinySolver on r(x) = 0 in place from the initial guess x, at most `max_iterations`
 /// iterations, and reports (no throw). `Function` is a TinySolver function (NUM_RESIDUALS =
@@ -131,6 +167,38 @@ class FrozenJacobian {
   mutable Square jacobian_;
   mutable Vector last_point_, last_residual_;
 };
+
+/// Chord iterations on r(x) = 0 with the Jacobian of the initial guess (FrozenJacobian below),
+/// at most `max_iterations`, until ‖r‖ < target/4 as runTinySolver; reports (no throw). Each
+/// iteration is one TinySolver Solve of a single LM iteration: function_tolerance = ∞ ends the
+/// Solve right after its step is taken (or rejected), with the new point's cost and without
+/// TinySolver's second residual-and-Jacobian pass (scaling, JᵀJ, Jᵀr) at it; the next Solve's
+/// first pass does that work only if the point has not converged, which is checked here. A step
+/// that is rejected or that does not move x ends the chord (the caller goes on with fresh
+/// Jacobians): a restarted Solve would only repeat it.
+template <class Function, int N = Function::NUM_PARAMETERS>
+TinySolveStats runChordIterations(const Function& function, Eigen::Matrix<double, N, 1>& x,
+                                  double target, int max_iterations) {
+  const FrozenJacobian<Function> frozen(function);
+  ceres::TinySolver<FrozenJacobian<Function>, NormalEquationSolver<N>> solver;
+  solver.options.max_num_iterations = 2;  // iterations 1..max − 1: one LM iteration
+  solver.options.gradient_tolerance = 0.0;
+  solver.options.function_tolerance = INFINITY;
+  solver.options.parameter_tolerance = 1e-16;
+  solver.options.cost_threshold = 0.5 * (0.25 * target) * (0.25 * target);
+  solver.options.initial_trust_region_radius = 1e12;
+  TinySolveStats stats;
+  for (;;) {
+    const Eigen::Matrix<double, N, 1> before = x;
+    // final_cost = ½‖r(x)‖² at the returned x, as in runTinySolver.
+    const double cost = solver.Solve(frozen, &x).final_cost;
+    stats.residual = std::sqrt(2.0 * cost);
+    if (x == before) break;  // converged at x already, or the step was rejected or negligible
+    if (++stats.iterations == max_iterations || cost < solver.options.cost_threshold) break;
+  }
+  stats.converged = stats.residual <= target;
+  return stats;
+}
 
 /// The same with the Jacobian by Jet autodiff. `Residual` has
 /// `template <class T> bool operator()(const T* x, T* r) const`.

@@ -8,7 +8,7 @@
 //     two solves at the same h, then up to kMaxSweeps fixed-point sweeps p ← p − r(p); they
 //     stop as soon as one contracts by less than ½ (the step is then too large for them);
 //   corrector: ceres::TinySolver on LegendreEquation's analytic Jacobian, to the relative
-//     tolerance: first with the Jacobian of the predicted guess kept (FrozenJacobian: one
+//     tolerance: first with the Jacobian of the predicted guess kept (runChordIterations: one
 //     Jacobian per solve), then, if that has not converged within kChordIterations, with a
 //     fresh Jacobian per iterate; the typed SolveFailure when the tolerance is not reached.
 #pragma once
@@ -36,7 +36,7 @@ class DiscreteLegendreSolver {
   /// start within one Newton step of the tolerance on the paper's scenarios (docs/design.md).
   static constexpr int kMaxSweeps = 3;
   /// Iterations with the Jacobian of the predicted guess before fresh Jacobians take over.
-  static constexpr int kChordIterations = 4;
+  static constexpr int kChordIterations = 3;
 
   DiscreteLegendreSolver(const LiePoissonSystem<G>& system, const R& retraction, LegendreForm form,
                          SolverOptions options)
@@ -69,9 +69,8 @@ class DiscreteLegendreSolver {
     stats_.fixed_point = sweep(equation, near.norm(), guess);
     unknown_ = form_ == LegendreForm::kLagrangian ? Vector(system_.velocity(guess)) : guess;
     const double scale = near.norm();
-    TinySolveStats solved =
-        runTinySolver(FrozenJacobian<LegendreEquation<R, Target>>(equation), unknown_,
-                      options_.relative_tolerance * scale, kChordIterations);
+    TinySolveStats solved = runChordIterations(
+        equation, unknown_, options_.relative_tolerance * scale, kChordIterations);
     stats_.newton = solved.iterations;
     if (!solved.converged) {  // from where the chord iterations left it, with fresh Jacobians
       solved =
