@@ -47,10 +47,40 @@ struct SmallInverseSolver {
     return inverse * b;
   }
 };
-/// Above (the 6 × 6 of SE(3)), Cholesky a = L Lᵀ with loops of compile-time length that the
-/// compiler unrolls: Eigen's LLT runs its blocked, run-time-sized kernel out of line, and it
-/// took 12% of a heavy-top DDB step (perf, docs/design.md). The reciprocals of L's diagonal
-/// are kept, so that the two triangular solves only multiply. No pivoting: a is SPD.
+/// For even n ≤ 8 (the 6 × 6 of SE(3)), block elimination on a = [[A, B], [Bᵀ, C]] with the
+/// closed-form inverses of A and of the Schur complement S = C − Bᵀ A⁻¹ B (both SPD as a is):
+/// two divisions and independent multiply-adds. A Cholesky factorisation chains six square
+/// roots and divisions with its substitutions, and took 17% of a heavy-top DDB step (perf,
+/// docs/design.md); Eigen's LLT, out of line at run-time block sizes, 14%.
+template <int N>
+struct SchurComplementSolver {
+  static constexpr int kHalf = N / 2;
+  static_assert(N % 2 == 0 && kHalf <= 4, "halves with Eigen's closed-form inverse");
+  using Half = Eigen::Matrix<double, kHalf, kHalf>;
+  using HalfVector = Eigen::Matrix<double, kHalf, 1>;
+  Half a_inverse, a_inverse_b, s_inverse;
+  template <class Matrix>
+  void compute(const Matrix& a) {
+    a_inverse = a.template topLeftCorner<kHalf, kHalf>().inverse();
+    a_inverse_b.noalias() = a_inverse * a.template topRightCorner<kHalf, kHalf>();
+    Half schur = a.template bottomRightCorner<kHalf, kHalf>();
+    schur.noalias() -= a.template bottomLeftCorner<kHalf, kHalf>() * a_inverse_b;
+    s_inverse = schur.inverse();
+  }
+  template <class Vector>
+  Eigen::Matrix<double, N, 1> solve(const Vector& b) const {
+    const HalfVector top = a_inverse * b.template head<kHalf>();
+    // A⁻¹ is symmetric, so Bᵀ A⁻¹ b₁ = (A⁻¹B)ᵀ b₁ needs no second product.
+    const HalfVector bottom =
+        s_inverse * (b.template tail<kHalf>() - a_inverse_b.transpose() * b.template head<kHalf>());
+    Eigen::Matrix<double, N, 1> x;
+    x << top - a_inverse_b * bottom, bottom;
+    return x;
+  }
+};
+/// Above, Cholesky a = L Lᵀ with loops of compile-time length that the compiler unrolls (the
+/// implicit Runge–Kutta stages); the reciprocals of L's diagonal are kept, so that the two
+/// triangular solves only multiply. No pivoting: a is SPD.
 template <int N>
 struct SmallCholeskySolver {
   Eigen::Matrix<double, N, N> lower;  // L below the diagonal; the diagonal is unused
@@ -85,8 +115,9 @@ struct SmallCholeskySolver {
   }
 };
 template <int N>
-using NormalEquationSolver =
-    std::conditional_t<(N <= 4), SmallInverseSolver<N>, SmallCholeskySolver<N>>;
+using NormalEquationSolver = std::conditional_t<
+    (N <= 4), SmallInverseSolver<N>,
+    std::conditional_t<(N % 2 == 0 && N <= 8), SchurComplementSolver<N>, SmallCholeskySolver<N>>>;
 
 /// Runs TinySolver on r(x) = 0 in place from the initial guess x, at most `max_iterations`
 /// iterations, and reports (no throw). `Function` is a TinySolver function (NUM_RESIDUALS =
