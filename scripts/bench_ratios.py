@@ -2,6 +2,7 @@
 """Ratios of per-step times within one ddb-bench run.
 
 Usage: ddb-bench --benchmark_format=json > bench.json; bench_ratios.py bench.json
+(with --benchmark_repetitions=K the medians are used).
 Prints each benchmark's time relative to rigid_body/rk4 (and heavy_top/rk4), with its
 allocations and Newton iterations per step, and the targets: rigid_body ddb-cay / rk4 <= 2.5,
 rk4 / rk4-handwritten <= 1.3, heavy_top ddb-cay / rk4 <= 3.
@@ -12,9 +13,16 @@ import sys
 
 def main():
     data = json.load(open(sys.argv[1]))
-    times = {b["name"]: b["cpu_time"] for b in data["benchmarks"] if b.get("run_type") != "aggregate"}
-    allocs = {b["name"]: b.get("allocs_per_step", float("nan")) for b in data["benchmarks"]}
-    newton = {b["name"]: b.get("newton_per_step") for b in data["benchmarks"]}
+    # With --benchmark_repetitions, the medians (named <benchmark>_median; with
+    # --benchmark_report_aggregates_only they are all there is); otherwise the single runs.
+    runs = [b for b in data["benchmarks"] if b.get("aggregate_name") == "median"]
+    for b in runs:
+        b["name"] = b["run_name"]
+    if not runs:
+        runs = [b for b in data["benchmarks"] if b.get("run_type") != "aggregate"]
+    times = {b["name"]: b["cpu_time"] for b in runs}
+    allocs = {b["name"]: b.get("allocs_per_step", float("nan")) for b in runs}
+    newton = {b["name"]: b.get("newton_per_step") for b in runs}
     for prefix in ("rigid_body", "heavy_top"):
         base = times.get(prefix + "/rk4")
         if not base:

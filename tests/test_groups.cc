@@ -120,6 +120,7 @@ TYPED_TEST(GroupTest, ClosedFormsAgreeWithGenericBase) {
     EXPECT_LT((G::dcay(x, y) - Base::dcay(x, y)).norm(), tol);
     EXPECT_LT((G::dcayInv(x, y) - Base::dcayInv(x, y)).norm(), tol);
     EXPECT_LT((G::dcayInvDual(x, mu) - Base::dcayInvDual(x, mu)).norm(), tol);
+    EXPECT_LT((G::cayTransport(x, y, mu) - Base::cayTransport(x, y, mu)).norm(), tol);
     if (x.norm() < 3.0) {  // the series converge for |x| < 2π; near π they need ~100 terms
       EXPECT_LT((G::dexp(x, y) - Base::dexp(x, y)).norm(), 1e-12);
       EXPECT_LT((G::dexpInv(x, y) - Base::dexpInv(x, y)).norm(), 1e-12);

@@ -107,6 +107,13 @@ TEST(RigidBody, AnalyticDerivativesMatchAutodiff) {
     EXPECT_LT((l.hessianTimes(x, v) - l.LBase::hessianTimes(x, v)).norm(), 1e-15);
     EXPECT_LT((H.gradient(x) - H.HBase::gradient(x)).norm(), 1e-15);
     EXPECT_LT((H.hessianTimes(x, v) - H.HBase::hessianTimes(x, v)).norm(), 1e-15);
+    Eigen::Matrix3d l_columns, H_columns;  // the whole Hessians, column by column by Jets
+    for (int j = 0; j < 3; ++j) {
+      l_columns.col(j) = l.LBase::hessianTimes(x, Eigen::Vector3d::Unit(j));
+      H_columns.col(j) = H.HBase::hessianTimes(x, Eigen::Vector3d::Unit(j));
+    }
+    EXPECT_LT((l.hessian(x) - l_columns).norm(), 1e-15);
+    EXPECT_LT((H.hessian(x) - H_columns).norm(), 1e-15);
   }
 }
 

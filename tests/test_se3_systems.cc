@@ -128,6 +128,15 @@ TEST(SE3Systems, AnalyticDerivativesMatchAutodiff) {
     EXPECT_LT((H.hessianTimes(x, v) - H.HBase::hessianTimes(x, v)).norm(), 1e-15);
     EXPECT_LT((l.gradient(x) - l.LBase::gradient(x)).norm(), 1e-15);
     EXPECT_LT((l.hessianTimes(x, v) - l.LBase::hessianTimes(x, v)).norm(), 1e-15);
+    Eigen::Matrix<double, 6, 6> top_columns, H_columns, l_columns;  // column by column by Jets
+    for (int j = 0; j < 6; ++j) {
+      top_columns.col(j) = top.TopBase::hessianTimes(x, Vector6::Unit(j));
+      H_columns.col(j) = H.HBase::hessianTimes(x, Vector6::Unit(j));
+      l_columns.col(j) = l.LBase::hessianTimes(x, Vector6::Unit(j));
+    }
+    EXPECT_LT((top.hessian(x) - top_columns).norm(), 1e-15);
+    EXPECT_LT((H.hessian(x) - H_columns).norm(), 1e-15);
+    EXPECT_LT((l.hessian(x) - l_columns).norm(), 1e-15);
   }
 }
 

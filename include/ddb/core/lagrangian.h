@@ -7,15 +7,15 @@
 namespace ddb {
 
 template <class G>
-class Lagrangian : public SmoothFunction<typename G::template Algebra<double>,
-                                         typename G::template Dual<double>> {
+class Lagrangian : public SmoothFunctionFor<typename G::template Algebra<double>,
+                                            typename G::template Dual<double>> {
  public:
   using Group = G;
 };
 
 template <class G>
-class Hamiltonian : public SmoothFunction<typename G::template Dual<double>,
-                                          typename G::template Algebra<double>> {
+class Hamiltonian : public SmoothFunctionFor<typename G::template Dual<double>,
+                                             typename G::template Algebra<double>> {
  public:
   using Group = G;
 };

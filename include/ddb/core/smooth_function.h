@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <type_traits>
 
 namespace ddb {
 
@@ -29,16 +30,38 @@ class SmoothFunction {
   }
 };
 
-/// The Hessian of f at x as a matrix, column j = hessianTimes(x, e_j): fixed-size
-/// domains only (the small implicit solvers' Jacobians and the Legendre transform).
+/// A SmoothFunction on a fixed-size (vector) domain, which can also give its Hessian whole:
+/// the small implicit solvers assemble their Jacobians from it (docs/conventions.md §4). The
+/// default asks hessianTimes for each column (n virtual calls, each a Jet evaluation inside
+/// AutoDiff); a system with an analytic Hessian returns it in one call, which for the heavy
+/// top removes six virtual calls from each Jacobian.
 template <class Domain, class Codomain>
-Eigen::Matrix<double, Domain::RowsAtCompileTime, Domain::RowsAtCompileTime> hessianMatrix(
-    const SmoothFunction<Domain, Codomain>& f, const Domain& x) {
-  constexpr int n = Domain::RowsAtCompileTime;
-  static_assert(n != Eigen::Dynamic, "hessianMatrix needs a fixed-size domain");
-  Eigen::Matrix<double, n, n> hessian;
-  for (int j = 0; j < n; ++j) hessian.col(j) = f.hessianTimes(x, Domain::Unit(j));
-  return hessian;
+class SmallSmoothFunction : public SmoothFunction<Domain, Codomain> {
+ public:
+  static constexpr int kDim = Domain::RowsAtCompileTime;
+  static_assert(kDim != Eigen::Dynamic, "SmallSmoothFunction needs a fixed-size domain");
+  using HessianMatrix = Eigen::Matrix<double, kDim, kDim>;
+
+  /// D²f(x), column j = hessianTimes(x, e_j).
+  virtual HessianMatrix hessian(const Domain& x) const {
+    HessianMatrix out;
+    for (int j = 0; j < kDim; ++j) out.col(j) = this->hessianTimes(x, Domain::Unit(j));
+    return out;
+  }
+};
+
+/// SmallSmoothFunction for fixed-size domains, SmoothFunction for the matrix algebras.
+template <class Domain, class Codomain>
+using SmoothFunctionFor =
+    std::conditional_t<Domain::SizeAtCompileTime == Eigen::Dynamic,
+                       SmoothFunction<Domain, Codomain>, SmallSmoothFunction<Domain, Codomain>>;
+
+/// The Hessian of f at x as a matrix: fixed-size domains only (the small implicit solvers'
+/// Jacobians and the Legendre transform).
+template <class Domain, class Codomain>
+typename SmallSmoothFunction<Domain, Codomain>::HessianMatrix hessianMatrix(
+    const SmallSmoothFunction<Domain, Codomain>& f, const Domain& x) {
+  return f.hessian(x);
 }
 
 }  // namespace ddb

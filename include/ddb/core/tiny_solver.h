@@ -10,7 +10,6 @@
 #include <ceres/tiny_solver_autodiff_function.h>
 #include <ddb/core/errors.h>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <cmath>
@@ -32,10 +31,10 @@ struct TinySolveStats {
   bool converged = false;
 };
 
-/// TinySolver's linear solver for its normal equations JᵀJ δ = Jᵀr (SPD): for n ≤ 4 the
-/// inverse by Eigen's closed form (cofactors, no pivoting loop: the 3 × 3 of SO(3) costs a
-/// few dozen flops), LLT above (the 6 × 6 of SE(3)). Its rounding only slows Newton's
-/// convergence, not what it converges to: the residual is always the true one.
+/// TinySolver's linear solvers for its normal equations JᵀJ δ = Jᵀr (SPD). Their rounding only
+/// slows Newton's convergence, not what it converges to: the residual is always the true one.
+/// For n ≤ 4 the inverse by Eigen's closed form (cofactors, no pivoting loop: the 3 × 3 of SO(3)
+/// costs a few dozen flops).
 template <int N>
 struct SmallInverseSolver {
   Eigen::Matrix<double, N, N> inverse;
@@ -48,9 +47,77 @@ struct SmallInverseSolver {
     return inverse * b;
   }
 };
+/// For even n ≤ 8 (the 6 × 6 of SE(3)), block elimination on a = [[A, B], [Bᵀ, C]] with the
+/// closed-form inverses of A and of the Schur complement S = C − Bᵀ A⁻¹ B (both SPD as a is):
+/// two divisions and independent multiply-adds. A Cholesky factorisation chains six square
+/// roots and divisions with its substitutions, and took 17% of a heavy-top DDB step (perf,
+/// docs/design.md); Eigen's LLT, out of line at run-time block sizes, 14%.
 template <int N>
-using NormalEquationSolver =
-    std::conditional_t<(N <= 4), SmallInverseSolver<N>, Eigen::LLT<Eigen::Matrix<double, N, N>>>;
+struct SchurComplementSolver {
+  static constexpr int kHalf = N / 2;
+  static_assert(N % 2 == 0 && kHalf <= 4, "halves with Eigen's closed-form inverse");
+  using Half = Eigen::Matrix<double, kHalf, kHalf>;
+  using HalfVector = Eigen::Matrix<double, kHalf, 1>;
+  Half a_inverse, a_inverse_b, s_inverse;
+  template <class Matrix>
+  void compute(const Matrix& a) {
+    a_inverse = a.template topLeftCorner<kHalf, kHalf>().inverse();
+    a_inverse_b.noalias() = a_inverse * a.template topRightCorner<kHalf, kHalf>();
+    Half schur = a.template bottomRightCorner<kHalf, kHalf>();
+    schur.noalias() -= a.template bottomLeftCorner<kHalf, kHalf>() * a_inverse_b;
+    s_inverse = schur.inverse();
+  }
+  template <class Vector>
+  Eigen::Matrix<double, N, 1> solve(const Vector& b) const {
+    const HalfVector top = a_inverse * b.template head<kHalf>();
+    // A⁻¹ is symmetric, so Bᵀ A⁻¹ b₁ = (A⁻¹B)ᵀ b₁ needs no second product.
+    const HalfVector bottom =
+        s_inverse * (b.template tail<kHalf>() - a_inverse_b.transpose() * b.template head<kHalf>());
+    Eigen::Matrix<double, N, 1> x;
+    x << top - a_inverse_b * bottom, bottom;
+    return x;
+  }
+};
+/// Above, Cholesky a = L Lᵀ with loops of compile-time length that the compiler unrolls (the
+/// implicit Runge–Kutta stages); the reciprocals of L's diagonal are kept, so that the two
+/// triangular solves only multiply. No pivoting: a is SPD.
+template <int N>
+struct SmallCholeskySolver {
+  Eigen::Matrix<double, N, N> lower;  // L below the diagonal; the diagonal is unused
+  Eigen::Matrix<double, N, 1> inverse_diagonal;
+  template <class Matrix>
+  void compute(const Matrix& a) {
+    for (int j = 0; j < N; ++j) {
+      double diagonal = a(j, j);
+      for (int k = 0; k < j; ++k) diagonal -= lower(j, k) * lower(j, k);
+      inverse_diagonal(j) = 1.0 / std::sqrt(diagonal);
+      for (int i = j + 1; i < N; ++i) {
+        double sum = a(i, j);
+        for (int k = 0; k < j; ++k) sum -= lower(i, k) * lower(j, k);
+        lower(i, j) = sum * inverse_diagonal(j);
+      }
+    }
+  }
+  template <class Vector>
+  Eigen::Matrix<double, N, 1> solve(const Vector& b) const {
+    Eigen::Matrix<double, N, 1> x;
+    for (int i = 0; i < N; ++i) {  // L y = b
+      double sum = b(i);
+      for (int k = 0; k < i; ++k) sum -= lower(i, k) * x(k);
+      x(i) = sum * inverse_diagonal(i);
+    }
+    for (int i = N - 1; i >= 0; --i) {  // Lᵀ x = y
+      double sum = x(i);
+      for (int k = i + 1; k < N; ++k) sum -= lower(k, i) * x(k);
+      x(i) = sum * inverse_diagonal(i);
+    }
+    return x;
+  }
+};
+template <int N>
+using NormalEquationSolver = std::conditional_t<
+    (N <= 4), SmallInverseSolver<N>,
+    std::conditional_t<(N % 2 == 0 && N <= 8), SchurComplementSolver<N>, SmallCholeskySolver<N>>>;
 
 /// Runs TinySolver on r(x) = 0 in place from the initial guess x, at most `max_iterations`
 /// iterations, and reports (no throw). `Function` is a TinySolver function (NUM_RESIDUALS =
@@ -71,36 +138,6 @@ TinySolveStats runTinySolver(const Function& function, Eigen::Matrix<double, N, 
   // and a rejected one leaves x and the cost as they were.
   const double norm = std::sqrt(2.0 * summary.final_cost);
   return {summary.iterations, norm, norm <= target};
-}
-
-/// Up to `max_steps` TinySolver steps on r(x) = 0 from x, each a Solve() of one LM step,
-/// stopping as soon as ‖r‖ <= target (no throw). One Solve per step because TinySolver,
-/// after an accepted step, re-evaluates the point with its Jacobian and forms JᵀJ, Jᵀr and
-/// the scaling again before it looks at the cost; with function_tolerance = ∞ it returns
-/// right after the step (COST_CHANGE_TOO_SMALL) with the cost at the new point, which is
-/// all a predicted guess needs (`FrozenJacobian` keeps the Jacobian across the Solves).
-/// A step that does not lower ‖r‖ ends the loop.
-template <class Function, int N = Function::NUM_PARAMETERS>
-TinySolveStats runTinySteps(const Function& function, Eigen::Matrix<double, N, 1>& x, double target,
-                            int max_steps) {
-  ceres::TinySolver<Function, NormalEquationSolver<N>> solver;
-  solver.options.max_num_iterations = 2;  // iterations 1 .. max − 1: one step
-  solver.options.gradient_tolerance = 0.0;
-  solver.options.function_tolerance = INFINITY;
-  solver.options.parameter_tolerance = 1e-16;
-  solver.options.cost_threshold = 0.5 * target * target;
-  solver.options.initial_trust_region_radius = 1e12;
-  TinySolveStats stats;
-  double previous = INFINITY;
-  for (int k = 0; k < max_steps; ++k) {
-    const auto& summary = solver.Solve(function, &x);
-    stats.iterations += summary.iterations;
-    stats.residual = std::sqrt(2.0 * summary.final_cost);
-    stats.converged = stats.residual <= target;
-    if (stats.converged || !(stats.residual < previous)) break;
-    previous = stats.residual;
-  }
-  return stats;
 }
 
 /// Solves r(x) = 0 to ‖r‖ <= relative_tolerance · scale or throws SolveFailure.
@@ -161,6 +198,38 @@ class FrozenJacobian {
   mutable Square jacobian_;
   mutable Vector last_point_, last_residual_;
 };
+
+/// Chord iterations on r(x) = 0 with the Jacobian of the initial guess (FrozenJacobian below),
+/// at most `max_iterations`, until ‖r‖ < target/4 as runTinySolver; reports (no throw). Each
+/// iteration is one TinySolver Solve of a single LM iteration: function_tolerance = ∞ ends the
+/// Solve right after its step is taken (or rejected), with the new point's cost and without
+/// TinySolver's second residual-and-Jacobian pass (scaling, JᵀJ, Jᵀr) at it; the next Solve's
+/// first pass does that work only if the point has not converged, which is checked here. A step
+/// that is rejected or that does not move x ends the chord (the caller goes on with fresh
+/// Jacobians): a restarted Solve would only repeat it.
+template <class Function, int N = Function::NUM_PARAMETERS>
+TinySolveStats runChordIterations(const Function& function, Eigen::Matrix<double, N, 1>& x,
+                                  double target, int max_iterations) {
+  const FrozenJacobian<Function> frozen(function);
+  ceres::TinySolver<FrozenJacobian<Function>, NormalEquationSolver<N>> solver;
+  solver.options.max_num_iterations = 2;  // iterations 1..max − 1: one LM iteration
+  solver.options.gradient_tolerance = 0.0;
+  solver.options.function_tolerance = INFINITY;
+  solver.options.parameter_tolerance = 1e-16;
+  solver.options.cost_threshold = 0.5 * (0.25 * target) * (0.25 * target);
+  solver.options.initial_trust_region_radius = 1e12;
+  TinySolveStats stats;
+  for (;;) {
+    const Eigen::Matrix<double, N, 1> before = x;
+    // final_cost = ½‖r(x)‖² at the returned x, as in runTinySolver.
+    const double cost = solver.Solve(frozen, &x).final_cost;
+    stats.residual = std::sqrt(2.0 * cost);
+    if (x == before) break;  // converged at x already, or the step was rejected or negligible
+    if (++stats.iterations == max_iterations || cost < solver.options.cost_threshold) break;
+  }
+  stats.converged = stats.residual <= target;
+  return stats;
+}
 
 /// The same with the Jacobian by Jet autodiff. `Residual` has
 /// `template <class T> bool operator()(const T* x, T* r) const`.

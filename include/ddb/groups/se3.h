@@ -128,15 +128,41 @@ struct SE3 : LieGroupBase<SE3> {
     return eta - bracket(x, eta) * T(0.5) + quarter * T(0.25);
   }
   /// (dcay^{-1}_x)* μ = μ − ad*_x μ/2 + ¼((π·ω) ω − v × (γ × ω), 0), the transpose of dcayInv.
+  /// Written on the 3-vector halves (the same operations in the same order as the formula):
+  /// it is the residual of every SE(3) Legendre solve, and the 6-vector form through adDual and
+  /// comma initialisers took 15% of a heavy-top DDB step (perf, docs/design.md).
   template <class T>
   static Dual<T> dcayInvDual(const Algebra<T>& x, const Dual<T>& mu) {
     const Eigen::Matrix<T, 3, 1> w = x.template head<3>(), v = x.template tail<3>();
     const Eigen::Matrix<T, 3, 1> pi = mu.template head<3>(), gamma = mu.template tail<3>();
-    Dual<T> quarter;
-    quarter << w * pi.dot(w) - v.cross(gamma.cross(w)), Eigen::Matrix<T, 3, 1>::Zero();
-    return mu - adDual(x, mu) * T(0.5) + quarter * T(0.25);
+    const Eigen::Matrix<T, 3, 1> gw = gamma.cross(w);
+    Dual<T> out;
+    out.template head<3>() =
+        pi - (pi.cross(w) + gamma.cross(v)) * T(0.5) + (w * pi.dot(w) - v.cross(gw)) * T(0.25);
+    out.template tail<3>() = gamma - gw * T(0.5);
+    return out;
   }
-  /// The matrix of (dcay^{-1}_x)*, from the line above (linear in μ = (π, γ)):
+  /// Ad*_{cay(x)} mu = (Rᵀ(π + γ × r), Rᵀγ) with R = cay(ω), r = (I − ω̂/2)^{-1} v (cay above),
+  /// Rᵀ applied as SO3::cayAdDual does, without forming R (docs/long-run.md).
+  template <class T>
+  static Dual<T> cayAdDual(const Algebra<T>& x, const Dual<T>& mu) {
+    const Eigen::Matrix<T, 3, 1> w = x.template head<3>(), v = x.template tail<3>();
+    const Eigen::Matrix<T, 3, 1> gamma = mu.template tail<3>();
+    const Eigen::Matrix<T, 3, 1> r =
+        (v + w.cross(v) * T(0.5) + w * (w.dot(v) * T(0.25))) * (T(4) / (T(4) + w.squaredNorm()));
+    Dual<T> out;
+    out.template head<3>() =
+        SO3::cayAdDual<T>(w, Eigen::Matrix<T, 3, 1>(mu.template head<3>() + gamma.cross(r)));
+    out.template tail<3>() = SO3::cayAdDual<T>(w, gamma);
+    return out;
+  }
+  /// Ad*_{cay(a) cay(b)} mu = Ad*_{cay(b)} Ad*_{cay(a)} mu, the DDB update (paper, eq. (4.12)),
+  /// without the two 4×4 Cayley matrices and their product (12% of a heavy-top DDB step).
+  template <class T>
+  static Dual<T> cayTransport(const Algebra<T>& a, const Algebra<T>& b, const Dual<T>& mu) {
+    return cayAdDual(b, cayAdDual(a, mu));
+  }
+  /// The matrix of (dcay^{-1}_x)*, from dcayInvDual (linear in μ = (π, γ)):
   ///   [[I + W/2 + ω ωᵀ/4, V/2 + V W/4], [0, I + W/2]], W, V the hats of ω, v.
   static Eigen::Matrix<double, 6, 6> dcayInvDualMatrix(const Algebra<double>& x) {
     const Eigen::Vector3d w = x.head<3>();
@@ -149,7 +175,7 @@ struct SE3 : LieGroupBase<SE3> {
     D.bottomRightCorner<3, 3>() = I + 0.5 * W;
     return D;
   }
-  /// ∂/∂x [(dcay^{-1}_x)* mu], differentiating the line above in ω and v:
+  /// ∂/∂x [(dcay^{-1}_x)* mu], differentiating dcayInvDual in ω and v:
   ///   [[-Π/2 + ((π·ω) I + ω πᵀ - V Γ)/4,  -Γ/2 + hat(γ × ω)/4], [-Γ/2, 0]],
   /// with Π, Γ, V the hats of π, γ, v.
   static Eigen::Matrix<double, 6, 6> dcayInvDualJacobian(const Algebra<double>& x,

@@ -4,11 +4,13 @@
 //                                      ξ = ∂H/∂μ(p)  (Hamiltonian form, unknown p)
 // DDB's target is the momentum M_k; the symmetric variants' targets depend on the unknown.
 // Two stages (docs/conventions.md §4):
-//   predictor: p = near + c, the correction c = p − near extrapolated linearly from the last
-//     two solves at the same h, then up to kMaxSweeps fixed-point sweeps p ← p − r(p); they
-//     stop as soon as one contracts by less than ½ (the step is then too large for them);
+//   predictor: p = near + c, the correction c = p − near extrapolated from the last solves at
+//     the same h (quadratically once there are three: 2.8 → 2.0 sweeps per step on Scenario A,
+//     1.02 → 1.00 Newton iterations on the heavy top, docs/design.md), then up to kMaxSweeps
+//     fixed-point sweeps p ← p − r(p); they stop as soon as one contracts by less than ½ (the
+//     step is then too large for them);
 //   corrector: ceres::TinySolver on LegendreEquation's analytic Jacobian, to the relative
-//     tolerance: first with the Jacobian of the predicted guess kept (FrozenJacobian: one
+//     tolerance: first with the Jacobian of the predicted guess kept (runChordIterations: one
 //     Jacobian per solve), then, if that has not converged within kChordIterations, with a
 //     fresh Jacobian per iterate; the typed SolveFailure when the tolerance is not reached.
 #pragma once
@@ -36,7 +38,7 @@ class DiscreteLegendreSolver {
   /// start within one Newton step of the tolerance on the paper's scenarios (docs/design.md).
   static constexpr int kMaxSweeps = 3;
   /// Iterations with the Jacobian of the predicted guess before fresh Jacobians take over.
-  static constexpr int kChordIterations = 4;
+  static constexpr int kChordIterations = 3;
 
   DiscreteLegendreSolver(const LiePoissonSystem<G>& system, const R& retraction, LegendreForm form,
                          SolverOptions options)
@@ -65,13 +67,13 @@ class DiscreteLegendreSolver {
     Dual guess = near;
     if (history_ == 1) guess += correction_;
     if (history_ == 2) guess += 2.0 * correction_ - previous_correction_;
+    if (history_ == 3) guess += 3.0 * (correction_ - previous_correction_) + oldest_correction_;
     stats_ = LegendreStats{};
     stats_.fixed_point = sweep(equation, near.norm(), guess);
     unknown_ = form_ == LegendreForm::kLagrangian ? Vector(system_.velocity(guess)) : guess;
     const double scale = near.norm();
-    TinySolveStats solved =
-        runTinySteps(FrozenJacobian<LegendreEquation<R, Target>>(equation), unknown_,
-                     options_.relative_tolerance * scale, kChordIterations);
+    TinySolveStats solved = runChordIterations(
+        equation, unknown_, options_.relative_tolerance * scale, kChordIterations);
     stats_.newton = solved.iterations;
     if (!solved.converged) {  // from where the chord iterations left it, with fresh Jacobians
       solved =
@@ -82,9 +84,10 @@ class DiscreteLegendreSolver {
     Algebra xi;
     equation.unpack(unknown_.data(), xi, p);
     InjectivityGuard<R>::afterSolve(system_, near, xi, t, h);
+    oldest_correction_ = previous_correction_;
     previous_correction_ = correction_;
     correction_ = p - near;
-    history_ = history_ < 2 ? history_ + 1 : 2;
+    history_ = history_ < 3 ? history_ + 1 : 3;
     return xi;
   }
 
@@ -117,9 +120,10 @@ class DiscreteLegendreSolver {
   LegendreForm form_;
   SolverOptions options_;
   LegendreStats stats_;
-  int history_ = 0;  // corrections remembered (0, 1 or 2)
+  int history_ = 0;  // corrections remembered (0 to 3)
   double h_ = 0.0;
-  Dual correction_ = Dual::Zero(), previous_correction_ = Dual::Zero();
+  Dual correction_ = Dual::Zero(), previous_correction_ = Dual::Zero(),
+       oldest_correction_ = Dual::Zero();
   Vector unknown_ = Vector::Zero();
 };
 

@@ -13,6 +13,7 @@
 #include <ddb/core/lie_poisson_system.h>
 
 #include <Eigen/Core>
+#include <type_traits>
 
 namespace ddb {
 
@@ -45,6 +46,8 @@ struct LegendreEquation {
   template <class T>
   using DualT = typename G::template Dual<T>;
   using Square = Eigen::Matrix<double, kDim, kDim>;
+  /// DDB's target M_k does not depend on u: its zero Jacobian is not subtracted.
+  static constexpr bool kFixedTarget = std::is_same_v<Target, FixedMomentum<G>>;
 
   const LiePoissonSystem<G>& system;
   const R& retraction;
@@ -91,18 +94,24 @@ struct LegendreEquation {
     Eigen::Map<DualT<double>> out(r);
     out = retraction.dTauInverseDual(hxi, p) - target(xi, p);
     if (jacobian == nullptr) return true;
-    Square dxi, dp;
-    if (form == LegendreForm::kLagrangian) {
-      dxi.setIdentity();
-      dp = hessianMatrix(*system.lagrangian(), xi);
-    } else {
-      dxi = hessianMatrix(system.hamiltonian(), p);
-      dp.setIdentity();
-    }
+    // One of ∂p/∂u, ∂ξ/∂u is the identity: its product is not formed (a 6×6 product is 216
+    // multiply-adds, the heavy top's Jacobian's largest part).
     Eigen::Map<Square> out_jacobian(jacobian);
-    out_jacobian = retraction.dTauInverseDualMatrix(hxi) * dp +
-                   h * retraction.dTauInverseDualJacobian(hxi, p) * dxi -
-                   target.jacobian(xi, p, dxi, dp);
+    Square hessian;
+    if (form == LegendreForm::kLagrangian) {
+      hessian = hessianMatrix(*system.lagrangian(), xi);
+      out_jacobian.noalias() = retraction.dTauInverseDualMatrix(hxi) * hessian;
+      out_jacobian += h * retraction.dTauInverseDualJacobian(hxi, p);
+    } else {
+      hessian = hessianMatrix(system.hamiltonian(), p);
+      out_jacobian = retraction.dTauInverseDualMatrix(hxi);
+      out_jacobian.noalias() += (h * retraction.dTauInverseDualJacobian(hxi, p)) * hessian;
+    }
+    if constexpr (!kFixedTarget) {
+      const Square identity = Square::Identity();
+      out_jacobian -= form == LegendreForm::kLagrangian ? target.jacobian(xi, p, identity, hessian)
+                                                        : target.jacobian(xi, p, hessian, identity);
+    }
     return true;
   }
 };

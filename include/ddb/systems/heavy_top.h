@@ -43,6 +43,11 @@ class HeavyTopHamiltonian : public AutoDiffHamiltonian<HeavyTopHamiltonian, SE3>
             Eigen::Vector3d::Zero())
         .finished();
   }
+  Eigen::Matrix<double, 6, 6> hessian(const Eigen::Matrix<double, 6, 1>&) const override {
+    Eigen::Matrix<double, 6, 6> out = Eigen::Matrix<double, 6, 6>::Zero();
+    out.topLeftCorner<3, 3>() = inverse_inertia_.asDiagonal();
+    return out;
+  }
 
  private:
   Eigen::Vector3d inverse_inertia_;

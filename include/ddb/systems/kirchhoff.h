@@ -46,6 +46,9 @@ class KirchhoffLagrangian : public AutoDiffLagrangian<KirchhoffLagrangian, SE3> 
                                            const Eigen::Matrix<double, 6, 1>& v) const override {
     return weights_.cwiseProduct(v);
   }
+  Eigen::Matrix<double, 6, 6> hessian(const Eigen::Matrix<double, 6, 1>&) const override {
+    return weights_.asDiagonal();
+  }
 
  private:
   Eigen::Matrix<double, 6, 1> weights_;
@@ -65,6 +68,9 @@ class KirchhoffHamiltonian : public AutoDiffHamiltonian<KirchhoffHamiltonian, SE
   Eigen::Matrix<double, 6, 1> hessianTimes(const Eigen::Matrix<double, 6, 1>&,
                                            const Eigen::Matrix<double, 6, 1>& v) const override {
     return inverse_weights_.cwiseProduct(v);
+  }
+  Eigen::Matrix<double, 6, 6> hessian(const Eigen::Matrix<double, 6, 1>&) const override {
+    return inverse_weights_.asDiagonal();
   }
 
  private:

@@ -38,6 +38,7 @@ class RigidBodyLagrangian : public AutoDiffLagrangian<RigidBodyLagrangian, SO3> 
   Eigen::Vector3d hessianTimes(const Eigen::Vector3d&, const Eigen::Vector3d& v) const override {
     return inertia_.cwiseProduct(v);
   }
+  Eigen::Matrix3d hessian(const Eigen::Vector3d&) const override { return inertia_.asDiagonal(); }
 
  private:
   Eigen::Vector3d inertia_;
@@ -60,6 +61,9 @@ class RigidBodyHamiltonian : public AutoDiffHamiltonian<RigidBodyHamiltonian, SO
   }
   Eigen::Vector3d hessianTimes(const Eigen::Vector3d&, const Eigen::Vector3d& v) const override {
     return inverse_inertia_.cwiseProduct(v);
+  }
+  Eigen::Matrix3d hessian(const Eigen::Vector3d&) const override {
+    return inverse_inertia_.asDiagonal();
   }
 
  private:
