@@ -28,6 +28,11 @@ def load(path):
     return runs
 
 
+def milliseconds(benchmark):
+    """A benchmark's wall time per iteration in ms, whatever its time unit."""
+    return benchmark["real_time"] * {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[benchmark["time_unit"]]
+
+
 def slope(sizes, times):
     xs = [math.log(n) for n in sizes]
     ys = [math.log(t) for t in times]
@@ -56,8 +61,7 @@ def main():
                 if b is None or gemm is None:
                     row += " | | |"
                     continue
-                ms = b["real_time"] * {"us": 1e-3, "ms": 1.0, "ns": 1e-6, "s": 1e3}[b["time_unit"]]
-                gms = gemm["real_time"] * {"us": 1e-3, "ms": 1.0, "ns": 1e-6, "s": 1e3}[gemm["time_unit"]]
+                ms, gms = milliseconds(b), milliseconds(gemm)
                 iterations = None if "rk4" in name else b.get("iterations_per_step")
                 row += f" {ms:.3g} | {ms / gms:.1f} | {'' if iterations is None else f'{iterations:.2f}'} |"
             print(row)
