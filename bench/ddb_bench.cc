@@ -28,21 +28,25 @@ constexpr int kScenarioSteps = 300;  // Scenario A: t in [0, 30]
 
 // Steps along a real trajectory from mu0, restarting every 300 steps (calling `restart`,
 // as a new run would), so that the warm starts and states are those of a run; counts heap
-// allocations per step and, when `newton` reports the Newton iterations of the last step,
-// their mean.
+// allocations per step and, when `stats` reports the Legendre solve of the last step, the
+// mean Newton iterations and predictor sweeps.
 template <class Dual>
 void runSteps(benchmark::State& state, const Dual& mu0,
               const std::function<Dual(const Dual&, double)>& step,
-              const std::function<int()>& newton = nullptr,
+              const std::function<const LegendreStats*()>& stats = nullptr,
               const std::function<void()>& restart = nullptr) {
   Dual mu = mu0;
   int k = 0;
-  long steps = 0, iterations = 0;
+  long steps = 0, iterations = 0, sweeps = 0;
   const long before = tools::mallocCount();
   for (auto _ : state) {
     mu = step(mu, k * kH);
     benchmark::DoNotOptimize(mu.data());
-    if (newton) iterations += newton();
+    if (stats) {
+      const LegendreStats* last = stats();
+      iterations += last->newton;
+      sweeps += last->fixed_point;
+    }
     if (++k == kScenarioSteps) {
       k = 0;
       mu = mu0;
@@ -52,22 +56,25 @@ void runSteps(benchmark::State& state, const Dual& mu0,
   }
   const double per_step = 1.0 / static_cast<double>(steps);
   state.counters["allocs_per_step"] = static_cast<double>(tools::mallocCount() - before) * per_step;
-  if (newton) state.counters["newton_per_step"] = static_cast<double>(iterations) * per_step;
+  if (stats) {
+    state.counters["newton_per_step"] = static_cast<double>(iterations) * per_step;
+    state.counters["sweeps_per_step"] = static_cast<double>(sweeps) * per_step;
+  }
 }
 
-// The Newton iterations of a DDB-family method's last Legendre solve (one solve per step),
-// or nullptr for the other methods (the compositions run several solves per step).
+// The statistics of a DDB-family method's last Legendre solve (one solve per step), or
+// nullptr for the other methods (the compositions run several solves per step).
 template <class G, class R>
-std::function<int()> newtonCounterFor(const OneStepMethod<G>& method) {
+std::function<const LegendreStats*()> statsReaderFor(const OneStepMethod<G>& method) {
   const auto* legendre = dynamic_cast<const LegendreMethod<R>*>(&method);
   if (legendre == nullptr) return nullptr;
-  return [legendre] { return legendre->legendreSolver().stats().newton; };
+  return [legendre] { return &legendre->legendreSolver().stats(); };
 }
 template <class G>
-std::function<int()> newtonCounter(const OneStepMethod<G>& method) {
-  if (auto counter = newtonCounterFor<G, Cayley<G>>(method)) return counter;
-  if (auto counter = newtonCounterFor<G, Exponential<G>>(method)) return counter;
-  return newtonCounterFor<G, TruncatedExponential<G>>(method);
+std::function<const LegendreStats*()> statsReader(const OneStepMethod<G>& method) {
+  if (auto reader = statsReaderFor<G, Cayley<G>>(method)) return reader;
+  if (auto reader = statsReaderFor<G, Exponential<G>>(method)) return reader;
+  return statsReaderFor<G, TruncatedExponential<G>>(method);
 }
 
 // One benchmark per applicable registry method, named <prefix>/<method>.
@@ -82,7 +89,7 @@ void registerMethods(const std::string& prefix, std::shared_ptr<const LiePoisson
       method->reset();
       runSteps<Dual>(
           state, mu0, [&](const Dual& mu, double t) { return method->step(mu, t, kH); },
-          newtonCounter(*method), [&] { method->reset(); });
+          statsReader(*method), [&] { method->reset(); });
     });
   }
 }

@@ -4,7 +4,7 @@
 Usage: ddb-bench --benchmark_format=json > bench.json; bench_ratios.py bench.json
 (with --benchmark_repetitions=K the medians are used).
 Prints each benchmark's time relative to rigid_body/rk4 (and heavy_top/rk4), with its
-allocations and Newton iterations per step, and the targets: rigid_body ddb-cay / rk4 <= 2.5,
+allocations, Newton iterations and predictor sweeps per step, and the targets: rigid_body ddb-cay / rk4 <= 2.5,
 rk4 / rk4-handwritten <= 1.3, heavy_top ddb-cay / rk4 <= 3.
 """
 import json
@@ -23,6 +23,7 @@ def main():
     times = {b["name"]: b["cpu_time"] for b in runs}
     allocs = {b["name"]: b.get("allocs_per_step", float("nan")) for b in runs}
     newton = {b["name"]: b.get("newton_per_step") for b in runs}
+    sweeps = {b["name"]: b.get("sweeps_per_step") for b in runs}
     for prefix in ("rigid_body", "heavy_top"):
         base = times.get(prefix + "/rk4")
         if not base:
@@ -30,7 +31,8 @@ def main():
         print(f"{prefix}: time per step relative to {prefix}/rk4 ({base:.1f} ns)")
         for name, t in times.items():
             if name.startswith(prefix + "/"):
-                iterations = "" if newton[name] is None else f"  newton/step {newton[name]:.2f}"
+                iterations = "" if newton[name] is None else (
+                    f"  newton/step {newton[name]:.2f}  sweeps/step {sweeps[name]:.2f}")
                 print(f"  {name:32s} {t:10.1f} ns  x{t / base:7.2f}  allocs/step {allocs[name]:.0f}"
                       f"{iterations}")
     targets = [("rigid_body/ddb-cay", "rigid_body/rk4", 2.5),

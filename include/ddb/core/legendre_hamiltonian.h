@@ -34,6 +34,7 @@ class LegendreHamiltonian : public Hamiltonian<G> {
     return G::pairing(mu, xi) - lagrangian_->value(xi);
   }
   Algebra gradient(const Dual& mu) const override { return velocity(mu); }
+  bool gradientIsASolve() const override { return true; }
   Algebra hessianTimes(const Dual& mu, const Dual& nu) const override {
     return hessianMatrix(*lagrangian_, velocity(mu)).partialPivLu().solve(nu);
   }

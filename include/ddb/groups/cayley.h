@@ -29,21 +29,21 @@ class Cayley : public Retraction<Cayley<G>, G> {
     return G::dcayInv(x, y);
   }
   template <class A, class D>
-  D dTauInverseDual(const A& x, const D& mu) const {
+  EIGEN_ALWAYS_INLINE D dTauInverseDual(const A& x, const D& mu) const {
     return G::dcayInvDual(x, mu);
   }
   template <class A>
-  auto dTauInverseDualMatrix(const A& x) const {
+  EIGEN_ALWAYS_INLINE auto dTauInverseDualMatrix(const A& x) const {
     return G::dcayInvDualMatrix(x);
   }
   template <class A, class D>
-  auto dTauInverseDualJacobian(const A& x, const D& mu) const {
+  EIGEN_ALWAYS_INLINE auto dTauInverseDualJacobian(const A& x, const D& mu) const {
     return G::dcayInvDualJacobian(x, mu);
   }
   /// Ad*_{cay(a) cay(b)} mu through the group, which may apply it without forming the
   /// product (SO3: docs/long-run.md); shadows Retraction::transport.
   template <class A, class D>
-  D transport(const A& a, const A& b, const D& mu) const {
+  EIGEN_ALWAYS_INLINE D transport(const A& a, const A& b, const D& mu) const {
     return G::cayTransport(a, b, mu);
   }
 };

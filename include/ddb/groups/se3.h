@@ -70,7 +70,7 @@ struct SE3 : LieGroupBase<SE3> {
   }
   /// ad*_ξ μ = (π×ω + γ×v, γ×ω).
   template <class T>
-  static Dual<T> adDual(const Algebra<T>& x, const Dual<T>& mu) {
+  EIGEN_ALWAYS_INLINE static Dual<T> adDual(const Algebra<T>& x, const Dual<T>& mu) {
     const auto w = x.template head<3>(), v = x.template tail<3>();
     const auto pi = mu.template head<3>(), gamma = mu.template tail<3>();
     Dual<T> out;
@@ -132,7 +132,7 @@ struct SE3 : LieGroupBase<SE3> {
   /// it is the residual of every SE(3) Legendre solve, and the 6-vector form through adDual and
   /// comma initialisers took 15% of a heavy-top DDB step (perf, docs/design.md).
   template <class T>
-  static Dual<T> dcayInvDual(const Algebra<T>& x, const Dual<T>& mu) {
+  EIGEN_ALWAYS_INLINE static Dual<T> dcayInvDual(const Algebra<T>& x, const Dual<T>& mu) {
     const Eigen::Matrix<T, 3, 1> w = x.template head<3>(), v = x.template tail<3>();
     const Eigen::Matrix<T, 3, 1> pi = mu.template head<3>(), gamma = mu.template tail<3>();
     const Eigen::Matrix<T, 3, 1> gw = gamma.cross(w);
@@ -145,7 +145,7 @@ struct SE3 : LieGroupBase<SE3> {
   /// Ad*_{cay(x)} mu = (Rᵀ(π + γ × r), Rᵀγ) with R = cay(ω), r = (I − ω̂/2)^{-1} v (cay above),
   /// Rᵀ applied as SO3::cayAdDual does, without forming R (docs/long-run.md).
   template <class T>
-  static Dual<T> cayAdDual(const Algebra<T>& x, const Dual<T>& mu) {
+  EIGEN_ALWAYS_INLINE static Dual<T> cayAdDual(const Algebra<T>& x, const Dual<T>& mu) {
     const Eigen::Matrix<T, 3, 1> w = x.template head<3>(), v = x.template tail<3>();
     const Eigen::Matrix<T, 3, 1> gamma = mu.template tail<3>();
     const Eigen::Matrix<T, 3, 1> r =
@@ -159,12 +159,14 @@ struct SE3 : LieGroupBase<SE3> {
   /// Ad*_{cay(a) cay(b)} mu = Ad*_{cay(b)} Ad*_{cay(a)} mu, the DDB update (paper, eq. (4.12)),
   /// without the two 4×4 Cayley matrices and their product (12% of a heavy-top DDB step).
   template <class T>
-  static Dual<T> cayTransport(const Algebra<T>& a, const Algebra<T>& b, const Dual<T>& mu) {
+  EIGEN_ALWAYS_INLINE static Dual<T> cayTransport(const Algebra<T>& a, const Algebra<T>& b,
+                                                  const Dual<T>& mu) {
     return cayAdDual(b, cayAdDual(a, mu));
   }
   /// The matrix of (dcay^{-1}_x)*, from dcayInvDual (linear in μ = (π, γ)):
   ///   [[I + W/2 + ω ωᵀ/4, V/2 + V W/4], [0, I + W/2]], W, V the hats of ω, v.
-  static Eigen::Matrix<double, 6, 6> dcayInvDualMatrix(const Algebra<double>& x) {
+  EIGEN_ALWAYS_INLINE static Eigen::Matrix<double, 6, 6> dcayInvDualMatrix(
+      const Algebra<double>& x) {
     const Eigen::Vector3d w = x.head<3>();
     const Eigen::Matrix3d W = SO3::hat<double>(w), V = SO3::hat<double>(x.tail<3>());
     const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
@@ -178,8 +180,8 @@ struct SE3 : LieGroupBase<SE3> {
   /// ∂/∂x [(dcay^{-1}_x)* mu], differentiating dcayInvDual in ω and v:
   ///   [[-Π/2 + ((π·ω) I + ω πᵀ - V Γ)/4,  -Γ/2 + hat(γ × ω)/4], [-Γ/2, 0]],
   /// with Π, Γ, V the hats of π, γ, v.
-  static Eigen::Matrix<double, 6, 6> dcayInvDualJacobian(const Algebra<double>& x,
-                                                         const Dual<double>& mu) {
+  EIGEN_ALWAYS_INLINE static Eigen::Matrix<double, 6, 6> dcayInvDualJacobian(
+      const Algebra<double>& x, const Dual<double>& mu) {
     const Eigen::Vector3d w = x.head<3>(), v = x.tail<3>();
     const Eigen::Vector3d pi = mu.head<3>(), gamma = mu.tail<3>();
     const Eigen::Matrix3d Pi = SO3::hat<double>(pi), Gamma = SO3::hat<double>(gamma);

@@ -25,7 +25,7 @@ struct SO3 : LieGroupBase<SO3> {
   using Casimirs = Eigen::Matrix<T, 1, 1>;
 
   template <class T>
-  static Matrix<T> hat(const Algebra<T>& x) {
+  EIGEN_ALWAYS_INLINE static Matrix<T> hat(const Algebra<T>& x) {
     Matrix<T> X;
     X << T(0), -x(2), x(1), x(2), T(0), -x(0), -x(1), x(0), T(0);
     return X;
@@ -55,7 +55,7 @@ struct SO3 : LieGroupBase<SO3> {
   }
   /// ad*_x mu = mu × x.
   template <class T>
-  static Dual<T> adDual(const Algebra<T>& x, const Dual<T>& mu) {
+  EIGEN_ALWAYS_INLINE static Dual<T> adDual(const Algebra<T>& x, const Dual<T>& mu) {
     return mu.cross(x);
   }
   template <class T>
@@ -147,13 +147,14 @@ struct SO3 : LieGroupBase<SO3> {
   /// every step of a steady rotation, and that bias adds up linearly in |M|
   /// (docs/long-run.md); here the only rounding of order ulp(mu) is the final sum.
   template <class T>
-  static Dual<T> cayAdDual(const Algebra<T>& x, const Dual<T>& mu) {
+  EIGEN_ALWAYS_INLINE static Dual<T> cayAdDual(const Algebra<T>& x, const Dual<T>& mu) {
     const Algebra<T> xm = x.cross(mu);
     return mu + (x.cross(xm) * T(0.5) - xm) * (T(4) / (T(4) + x.squaredNorm()));
   }
   /// Ad*_{cay(a) cay(b)} mu = Ad*_{cay(b)} Ad*_{cay(a)} mu, the DDB update (paper, eq. (4.12)).
   template <class T>
-  static Dual<T> cayTransport(const Algebra<T>& a, const Algebra<T>& b, const Dual<T>& mu) {
+  EIGEN_ALWAYS_INLINE static Dual<T> cayTransport(const Algebra<T>& a, const Algebra<T>& b,
+                                                  const Dual<T>& mu) {
     return cayAdDual(b, cayAdDual(a, mu));
   }
   /// dcay_x = 4/(4 + |x|²) (I + X/2) (paper, Section 4.1).
@@ -168,15 +169,16 @@ struct SO3 : LieGroupBase<SO3> {
   }
   /// (dcay^{-1}_x)* = I + X/2 + x xᵀ/4 (paper, Section 4.1).
   template <class T>
-  static Dual<T> dcayInvDual(const Algebra<T>& x, const Dual<T>& mu) {
+  EIGEN_ALWAYS_INLINE static Dual<T> dcayInvDual(const Algebra<T>& x, const Dual<T>& mu) {
     return mu + x.cross(mu) * T(0.5) + x * (x.dot(mu) * T(0.25));
   }
   /// The matrix of (dcay^{-1}_x)*: I + X/2 + x xᵀ/4.
-  static Eigen::Matrix3d dcayInvDualMatrix(const Eigen::Vector3d& x) {
+  EIGEN_ALWAYS_INLINE static Eigen::Matrix3d dcayInvDualMatrix(const Eigen::Vector3d& x) {
     return Eigen::Matrix3d::Identity() + 0.5 * hat<double>(x) + 0.25 * x * x.transpose();
   }
   /// ∂/∂x [(dcay^{-1}_x)* mu] = -M/2 + (x·mu)/4 I + x muᵀ/4, M = hat(mu).
-  static Eigen::Matrix3d dcayInvDualJacobian(const Eigen::Vector3d& x, const Eigen::Vector3d& mu) {
+  EIGEN_ALWAYS_INLINE static Eigen::Matrix3d dcayInvDualJacobian(const Eigen::Vector3d& x,
+                                                                 const Eigen::Vector3d& mu) {
     return hat<double>(mu) * -0.5 + Eigen::Matrix3d::Identity() * (0.25 * x.dot(mu)) +
            x * (0.25 * mu.transpose());
   }

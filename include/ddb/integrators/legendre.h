@@ -3,16 +3,19 @@
 //   (dτ^{-1}_{hξ})* p = target(ξ, p),  p = ∂l/∂ξ(ξ)  (Lagrangian form, unknown ξ)
 //                                      ξ = ∂H/∂μ(p)  (Hamiltonian form, unknown p)
 // DDB's target is the momentum M_k; the symmetric variants' targets depend on the unknown.
-// Two stages (docs/conventions.md §4):
+// Two stages (docs/conventions.md §4), as the matrix-free solver's (matrix_legendre.h):
 //   predictor: p = near + c, the correction c = p − near extrapolated from the last solves at
-//     the same h (quadratically once there are three: 2.8 → 2.0 sweeps per step on Scenario A,
-//     1.02 → 1.00 Newton iterations on the heavy top, docs/design.md), then up to kMaxSweeps
-//     fixed-point sweeps p ← p − r(p); they stop as soon as one contracts by less than ½ (the
-//     step is then too large for them);
-//   corrector: ceres::TinySolver on LegendreEquation's analytic Jacobian, to the relative
-//     tolerance: first with the Jacobian of the predicted guess kept (runChordIterations: one
-//     Jacobian per solve), then, if that has not converged within kChordIterations, with a
-//     fresh Jacobian per iterate; the typed SolveFailure when the tolerance is not reached.
+//     the same h (quadratically once there are three), then fixed-point sweeps
+//     p ← p − r(p), one residual evaluation each. Their rate ‖I − ∂r/∂p‖ is O(h) (0.02–0.03
+//     on Scenario A at h = 0.1): while it is at most kFastContraction they go on to the
+//     tolerance, cheaper than the one TinySolver iteration that would replace the last few
+//     (docs/design.md); slower, they stop within √tolerance, from where one Newton step
+//     squares the residual to the tolerance;
+//   corrector, when the sweeps have not converged: ceres::TinySolver on LegendreEquation's
+//     analytic Jacobian, to the relative tolerance: first with the Jacobian of the predicted
+//     guess kept (runChordIterations: one Jacobian per solve), then, if that has not
+//     converged within kChordIterations, with a fresh Jacobian per iterate; the typed
+//     SolveFailure when the tolerance is not reached.
 #pragma once
 
 #include <ddb/core/lie_poisson_system.h>
@@ -34,15 +37,20 @@ class DiscreteLegendreSolver {
   using Algebra = typename G::template Algebra<double>;
   using Dual = typename G::template Dual<double>;
   using Vector = Eigen::Matrix<double, kDim, 1>;
-  /// Sweeps of the predictor at most: each gains a factor ~h‖ad_ξ‖; three bring a warm
-  /// start within one Newton step of the tolerance on the paper's scenarios (docs/design.md).
-  static constexpr int kMaxSweeps = 3;
+  /// A measured rate at or below this is fast: the sweeps go on to the tolerance.
+  static constexpr double kFastContraction = 0.1;
+  /// A sweep that shrinks the update by less than this hands over to Newton at once.
+  static constexpr double kSlowContraction = 0.5;
   /// Iterations with the Jacobian of the predicted guess before fresh Jacobians take over.
   static constexpr int kChordIterations = 3;
 
   DiscreteLegendreSolver(const LiePoissonSystem<G>& system, const R& retraction, LegendreForm form,
                          SolverOptions options)
-      : system_(system), retraction_(retraction), form_(form), options_(options) {
+      : system_(system),
+        retraction_(retraction),
+        form_(form),
+        options_(options),
+        max_sweeps_(system.hamiltonian().gradientIsASolve() ? 0 : options.max_sweeps) {
     if (form_ == LegendreForm::kLagrangian && system_.lagrangian() == nullptr) {
       throw InvalidArgument("form = lagrangian is invalid: system '" + system_.name() +
                             "' has no Lagrangian (use the Hamiltonian form)");
@@ -50,7 +58,10 @@ class DiscreteLegendreSolver {
   }
 
   /// Forgets the corrections of earlier solves (a new trajectory).
-  void reset() { history_ = 0; }
+  void reset() {
+    history_ = 0;
+    rate_ = 1.0;
+  }
   LegendreForm form() const { return form_; }
   /// Sweeps, Newton iterations and final residual of the last solve.
   const LegendreStats& stats() const { return stats_; }
@@ -62,27 +73,34 @@ class DiscreteLegendreSolver {
   Algebra solve(const Target& target, const Dual& near, double t, double h, Dual& p) {
     InjectivityGuard<R>::beforeSolve(system_, near, t, h);
     const LegendreEquation<R, Target> equation{system_, retraction_, target, h, form_};
-    if (h != h_) history_ = 0;  // corrections scale with h: only same-h ones extrapolate
+    if (h != h_) {  // corrections and rates scale with h: only same-h ones are used
+      history_ = 0;
+      rate_ = 1.0;
+    }
     h_ = h;
     Dual guess = near;
     if (history_ == 1) guess += correction_;
     if (history_ == 2) guess += 2.0 * correction_ - previous_correction_;
     if (history_ == 3) guess += 3.0 * (correction_ - previous_correction_) + oldest_correction_;
     stats_ = LegendreStats{};
-    stats_.fixed_point = sweep(equation, near.norm(), guess);
-    unknown_ = form_ == LegendreForm::kLagrangian ? Vector(system_.velocity(guess)) : guess;
     const double scale = near.norm();
-    TinySolveStats solved = runChordIterations(
-        equation, unknown_, options_.relative_tolerance * scale, kChordIterations);
-    stats_.newton = solved.iterations;
-    if (!solved.converged) {  // from where the chord iterations left it, with fresh Jacobians
-      solved =
-          solveTinyWith(equation, unknown_, scale, options_, "discrete Legendre equation", t, h);
-      stats_.newton += solved.iterations;
-    }
-    stats_.residual = solved.residual;
     Algebra xi;
-    equation.unpack(unknown_.data(), xi, p);
+    if (sweep(equation, scale, guess)) {
+      p = guess;
+      xi = system_.velocity(p);
+    } else {
+      unknown_ = form_ == LegendreForm::kLagrangian ? Vector(system_.velocity(guess)) : guess;
+      TinySolveStats solved = runChordIterations(
+          equation, unknown_, options_.relative_tolerance * scale, kChordIterations);
+      stats_.newton = solved.iterations;
+      if (!solved.converged) {  // from where the chord iterations left it, with fresh Jacobians
+        solved =
+            solveTinyWith(equation, unknown_, scale, options_, "discrete Legendre equation", t, h);
+        stats_.newton += solved.iterations;
+      }
+      stats_.residual = solved.residual;
+      equation.unpack(unknown_.data(), xi, p);
+    }
     InjectivityGuard<R>::afterSolve(system_, near, xi, t, h);
     oldest_correction_ = previous_correction_;
     previous_correction_ = correction_;
@@ -97,30 +115,48 @@ class DiscreteLegendreSolver {
   }
 
  private:
-  // Fixed-point sweeps p ← p − r(p) from `p`; returns how many were kept. A sweep whose
-  // update is more than half the previous one ends them; one that even grew is not applied.
+  // Fixed-point sweeps p ← p − r(p) from `p`, the residual r measured at every iterate.
+  // Returns true when an iterate's ‖r‖ met the tolerance: p is then the next iterate, closer
+  // by the contraction rate (stats_.residual is the measured ‖r‖ of the one before). Returns
+  // false for Newton to go on from p:
+  //   - at once when a sweep grew (it is not applied) or shrank by less than kSlowContraction;
+  //   - with a rate above kFastContraction, once the residual left, about rate · ‖update‖, is
+  //     within √tolerance, where one chord Newton iteration squares it to the tolerance;
+  //   - after max_sweeps_: SolverOptions::max_sweeps (10 by default: a TinySolver iteration
+  //     costs about as many residuals, docs/design.md), or 0 when ∂H/∂μ is itself a solve
+  //     (a sweep then costs a third of a Newton step: 770 ns a step without sweeps against
+  //     1.2 µs with up to three and 2.0 µs with up to ten, Scenario A's body from l alone).
+  // The rate is the ratio of the last two updates; on the first sweep, the last solve's at
+  // the same h (it belongs to the map near the solution and moves slowly with the state).
   template <class Equation>
-  int sweep(const Equation& equation, double scale, Dual& p) const {
-    // Within √tolerance one (chord) Newton iteration squares the error to the tolerance.
-    const double close_enough = std::sqrt(options_.relative_tolerance) * scale;
+  bool sweep(const Equation& equation, double scale, Dual& p) {
+    const double tolerance = options_.relative_tolerance * scale;
+    const double newton_ready = std::sqrt(options_.relative_tolerance) * scale;
     double last = INFINITY;
-    for (int k = 0; k < kMaxSweeps; ++k) {
+    for (int k = 0; k < max_sweeps_; ++k) {
       const Dual update = equation.residualAtMomentum(p);
       const double size = update.norm();
-      if (!(size <= last)) return k;  // diverging (or non-finite): keep p as it is
+      stats_.residual = size;
+      if (!(size <= last)) return false;  // diverging (or non-finite): keep p as it is
       p -= update;
-      if (size <= close_enough || size > 0.5 * last) return k + 1;
+      ++stats_.fixed_point;
+      if (size <= tolerance) return true;
+      if (k > 0) rate_ = size / last;
+      if (k > 0 && rate_ > kSlowContraction) return false;
+      if (rate_ > kFastContraction && rate_ * size <= newton_ready) return false;
       last = size;
     }
-    return kMaxSweeps;
+    return false;
   }
 
   const LiePoissonSystem<G>& system_;
   const R& retraction_;
   LegendreForm form_;
   SolverOptions options_;
+  int max_sweeps_;
   LegendreStats stats_;
-  int history_ = 0;  // corrections remembered (0 to 3)
+  int history_ = 0;    // corrections remembered (0 to 3)
+  double rate_ = 1.0;  // contraction of the last two sweeps; 1 (slow) until measured
   double h_ = 0.0;
   Dual correction_ = Dual::Zero(), previous_correction_ = Dual::Zero(),
        oldest_correction_ = Dual::Zero();

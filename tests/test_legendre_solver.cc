@@ -1,0 +1,123 @@
+// The small Legendre solver's two paths (integrators/legendre.h, docs/conventions.md §4):
+// fixed-point sweeps to the tolerance while they contract fast, TinySolver's Newton when they
+// do not. Each path is checked against the paper's closed form of (dcay⁻¹_x)* on SO(3),
+// written out here, and the two against each other on the states of real trajectories.
+#include <ddb/core/legendre_hamiltonian.h>
+#include <ddb/integrators/ddb.h>
+#include <ddb/systems/paper_scenarios.h>
+#include <ddb/systems/rigid_body.h>
+#include <gtest/gtest.h>
+
+namespace ddb::test {
+namespace {
+
+const RigidBodyScenario& kA = rigidBodyScenario("A");
+constexpr double kTolerance = 1e-14;  // SolverOptions' default relative tolerance
+
+// ‖(I + X/2 + x xᵀ/4) 𝕀ξ − M‖ with x = hξ (paper, Section 4.1): the Lagrangian-form residual
+// of DDB's Legendre equation on the rigid body, from the matrix the paper prints.
+double closedFormResidual(const Eigen::Vector3d& xi, const Eigen::Vector3d& M, double h) {
+  const Eigen::Vector3d x = h * xi;
+  Eigen::Matrix3d X;
+  X << 0, -x(2), x(1), x(2), 0, -x(0), -x(1), x(0), 0;
+  const Eigen::Matrix3d dual = Eigen::Matrix3d::Identity() + X / 2 + x * x.transpose() / 4;
+  return (dual * kA.inertia.cwiseProduct(xi) - M).norm();
+}
+
+// The states M_k of a DDB Cayley trajectory from M_0 (the momenta every solve starts from).
+std::vector<Eigen::Vector3d> ddbStates(double alpha, double h, long steps) {
+  Ddb<Cayley<SO3>> ddb(makeRigidBody(kA.inertia, alpha));
+  std::vector<Eigen::Vector3d> states;
+  integrate(ddb, kA.mu0(), 0.0, h, steps,
+            [&](long, double, const Eigen::Vector3d& mu) { states.push_back(mu); });
+  return states;
+}
+
+SolverOptions withSweeps(int sweeps) {
+  SolverOptions options;
+  options.max_sweeps = sweeps;
+  return options;
+}
+
+// Solves every M_k of a trajectory with the default solver (sweeps first) and with Newton
+// alone (max_sweeps = 0), each with its own warm starts, and checks both solutions against
+// the closed form and against each other. Returns the fraction of the default solver's
+// solves that needed no Newton step.
+double compareThePaths(double alpha, double h, long steps) {
+  const auto body = makeRigidBody(kA.inertia, alpha);
+  const Cayley<SO3> cayley;
+  DiscreteLegendreSolver<Cayley<SO3>> swept(*body, cayley, LegendreForm::kLagrangian, {});
+  DiscreteLegendreSolver<Cayley<SO3>> newton(*body, cayley, LegendreForm::kLagrangian,
+                                             withSweeps(0));
+  long without_newton = 0;
+  const auto states = ddbStates(alpha, h, steps);
+  for (size_t k = 0; k + 1 < states.size(); ++k) {
+    const Eigen::Vector3d& M = states[k];
+    const double tolerance = kTolerance * M.norm();
+    Eigen::Vector3d p_swept, p_newton;
+    const Eigen::Vector3d xi_swept = swept.solve(M, k * h, h, p_swept);
+    const Eigen::Vector3d xi_newton = newton.solve(M, k * h, h, p_newton);
+    SCOPED_TRACE("alpha " + std::to_string(alpha) + ", h " + std::to_string(h) + ", step " +
+                 std::to_string(k));
+    EXPECT_LE(closedFormResidual(xi_swept, M, h), tolerance);
+    EXPECT_LE(closedFormResidual(xi_newton, M, h), tolerance);
+    // p is ∂l/∂ξ(ξ) = 𝕀ξ on both paths (the sweeps' p, with ξ = 𝕀⁻¹p, to rounding).
+    EXPECT_LE((p_swept - kA.inertia.cwiseProduct(xi_swept)).norm(), 1e-15 * M.norm());
+    EXPECT_LE((xi_swept - xi_newton).norm(), kTolerance * xi_newton.norm());
+    EXPECT_EQ(newton.stats().fixed_point, 0);
+    EXPECT_GE(newton.stats().newton, 1);
+    if (swept.stats().newton == 0) {
+      ++without_newton;
+      EXPECT_LE(swept.stats().residual, tolerance);  // the measured ‖r‖ of the last sweep
+    }
+  }
+  return static_cast<double>(without_newton) / static_cast<double>(states.size() - 1);
+}
+
+TEST(LegendreSolver, FastSweepsReachTheToleranceWithoutNewtonOnScenarioA) {
+  // Rate 0.02–0.03 at h = 0.1 (docs/design.md): the sweeps converge on their own.
+  EXPECT_GE(compareThePaths(0.5, 0.1, 300), 0.99);
+  EXPECT_GE(compareThePaths(0.0, 0.1, 300), 0.99);
+}
+
+TEST(LegendreSolver, SlowSweepsHandOverToNewtonAndBothPathsAgree) {
+  // The rate grows with h: at h = 1 it is above kFastContraction on every step, and at h = 3
+  // the sweeps hardly contract; Newton finishes every solve.
+  EXPECT_EQ(compareThePaths(0.5, 1.0, 30), 0.0);
+  EXPECT_EQ(compareThePaths(0.5, 3.0, 10), 0.0);
+}
+
+TEST(LegendreSolver, NoSweepsMeansNewtonFromTheExtrapolatedGuess) {
+  const auto body = makeRigidBody(kA.inertia, 0.5);
+  const Cayley<SO3> cayley;
+  DiscreteLegendreSolver<Cayley<SO3>> solver(*body, cayley, LegendreForm::kHamiltonian,
+                                             withSweeps(-3));
+  Eigen::Vector3d p;
+  const Eigen::Vector3d xi = solver.solve(kA.mu0(), 0.0, 0.1, p);
+  EXPECT_EQ(solver.stats().fixed_point, 0);
+  EXPECT_GE(solver.stats().newton, 1);
+  EXPECT_LE(closedFormResidual(xi, kA.mu0(), 0.1), kTolerance * kA.mu0().norm());
+}
+
+TEST(LegendreSolver, NoSweepsWhenTheVelocityIsItselfASolve) {
+  // The body from l alone: ξ = ∂H/∂μ(p) is an inverse Legendre solve, so a sweep would cost
+  // one; Newton works in ξ with l's derivatives directly.
+  const auto body = makeSystemFromLagrangian<SO3>(
+      "body from l", std::make_shared<const RigidBodyLagrangian>(kA.inertia),
+      std::make_shared<const ScaledIdentityMetric<SO3>>(0.5));
+  ASSERT_TRUE(body->hamiltonian().gradientIsASolve());
+  EXPECT_FALSE(makeRigidBody(kA.inertia, 0.5)->hamiltonian().gradientIsASolve());
+  const Cayley<SO3> cayley;
+  DiscreteLegendreSolver<Cayley<SO3>> solver(*body, cayley, LegendreForm::kLagrangian, {});
+  const auto states = ddbStates(0.5, 0.1, 20);
+  for (size_t k = 0; k + 1 < states.size(); ++k) {
+    Eigen::Vector3d p;
+    const Eigen::Vector3d xi = solver.solve(states[k], k * 0.1, 0.1, p);
+    EXPECT_EQ(solver.stats().fixed_point, 0);
+    EXPECT_GE(solver.stats().newton, 1);
+    EXPECT_LE(closedFormResidual(xi, states[k], 0.1), kTolerance * states[k].norm());
+  }
+}
+
+}  // namespace
+}  // namespace ddb::test
