@@ -4,8 +4,8 @@
 Usage: ddb-bench --benchmark_format=json > bench.json; bench_ratios.py bench.json
 (with --benchmark_repetitions=K the medians are used).
 Prints each benchmark's time relative to rigid_body/rk4 (and heavy_top/rk4), with its
-allocations, Newton iterations and predictor sweeps per step, and the targets: rigid_body ddb-cay / rk4 <= 2.5,
-rk4 / rk4-handwritten <= 1.3, heavy_top ddb-cay / rk4 <= 3.
+allocations, Newton iterations and predictor sweeps per step, and the targets:
+rigid_body ddb-cay / rk4 <= 2.5, rk4 / rk4-handwritten <= 1.3, heavy_top ddb-cay / rk4 <= 3.
 """
 import json
 import sys
@@ -31,8 +31,9 @@ def main():
         print(f"{prefix}: time per step relative to {prefix}/rk4 ({base:.1f} ns)")
         for name, t in times.items():
             if name.startswith(prefix + "/"):
-                iterations = "" if newton[name] is None else (
-                    f"  newton/step {newton[name]:.2f}  sweeps/step {sweeps[name]:.2f}")
+                iterations = "" if newton[name] is None else f"  newton/step {newton[name]:.2f}"
+                if sweeps[name] is not None:  # older runs have no sweeps counter
+                    iterations += f"  sweeps/step {sweeps[name]:.2f}"
                 print(f"  {name:32s} {t:10.1f} ns  x{t / base:7.2f}  allocs/step {allocs[name]:.0f}"
                       f"{iterations}")
     targets = [("rigid_body/ddb-cay", "rigid_body/rk4", 2.5),

@@ -117,17 +117,19 @@ class DiscreteLegendreSolver {
  private:
   // Fixed-point sweeps p ← p − r(p) from `p`, the residual r measured at every iterate.
   // Returns true when an iterate's ‖r‖ met the tolerance: p is then the next iterate, closer
-  // by the contraction rate (stats_.residual is the measured ‖r‖ of the one before). Returns
-  // false for Newton to go on from p:
-  //   - at once when a sweep grew (it is not applied) or shrank by less than kSlowContraction;
+  // by the contraction rate, if that rate is known to be below kSlowContraction, else the
+  // iterate itself (stats_.residual is the measured ‖r‖ of that iterate). Returns false for
+  // Newton to go on from p:
+  //   - at once when a sweep grew or is not finite (it is not applied) or shrank by less
+  //     than kSlowContraction;
   //   - with a rate above kFastContraction, once the residual left, about rate · ‖update‖, is
   //     within √tolerance, where one chord Newton iteration squares it to the tolerance;
-  //   - after max_sweeps_: SolverOptions::max_sweeps (10 by default: a TinySolver iteration
-  //     costs about as many residuals, docs/design.md), or 0 when ∂H/∂μ is itself a solve
-  //     (a sweep then costs a third of a Newton step: 770 ns a step without sweeps against
-  //     1.2 µs with up to three and 2.0 µs with up to ten, Scenario A's body from l alone).
+  //   - after max_sweeps_: SolverOptions::max_sweeps, or 0 when ∂H/∂μ is itself a solve
+  //     (a sweep then costs about as much as a Newton step; docs/design.md, "Small Legendre
+  //     solves", has both measurements).
   // The rate is the ratio of the last two updates; on the first sweep, the last solve's at
-  // the same h (it belongs to the map near the solution and moves slowly with the state).
+  // the same h (it belongs to the map near the solution and moves slowly with the state);
+  // 1, i.e. slow, until measured.
   template <class Equation>
   bool sweep(const Equation& equation, double scale, Dual& p) {
     const double tolerance = options_.relative_tolerance * scale;
@@ -137,11 +139,17 @@ class DiscreteLegendreSolver {
       const Dual update = equation.residualAtMomentum(p);
       const double size = update.norm();
       stats_.residual = size;
-      if (!(size <= last)) return false;  // diverging (or non-finite): keep p as it is
-      p -= update;
-      ++stats_.fixed_point;
-      if (size <= tolerance) return true;
+      if (!std::isfinite(size) || size > last) {  // keep p as it is
+        rate_ = 1.0;
+        return false;
+      }
       if (k > 0) rate_ = size / last;
+      ++stats_.fixed_point;
+      if (size <= tolerance) {
+        if (rate_ <= kSlowContraction) p -= update;
+        return true;
+      }
+      p -= update;
       if (k > 0 && rate_ > kSlowContraction) return false;
       if (rate_ > kFastContraction && rate_ * size <= newton_ready) return false;
       last = size;
