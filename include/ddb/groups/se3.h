@@ -70,7 +70,7 @@ struct SE3 : LieGroupBase<SE3> {
   }
   /// ad*_ξ μ = (π×ω + γ×v, γ×ω).
   template <class T>
-  EIGEN_ALWAYS_INLINE static Dual<T> adDual(const Algebra<T>& x, const Dual<T>& mu) {
+  static Dual<T> adDual(const Algebra<T>& x, const Dual<T>& mu) {
     const auto w = x.template head<3>(), v = x.template tail<3>();
     const auto pi = mu.template head<3>(), gamma = mu.template tail<3>();
     Dual<T> out;
