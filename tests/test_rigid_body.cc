@@ -131,5 +131,95 @@ TEST(RigidBody, RejectsBadParametersNamingThem) {
               ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("alpha")));
 }
 
+// makeLiePoissonSystem keeps the concrete types of H and k♯ (TypedLiePoissonSystem), so that its
+// double vector field calls them without virtual dispatch when they are final. A type that is not
+// final must still reach the override of the object it is given: here a subclass that doubles
+// ∂H/∂μ, so that the field is 2 M × Ω + 2α M × (M × Ω), not the base class's.
+class DiagonalQuadraticHamiltonian : public Hamiltonian<SO3> {
+ public:
+  explicit DiagonalQuadraticHamiltonian(const Eigen::Vector3d& inverse) : inverse_(inverse) {}
+  double value(const Eigen::Vector3d& m) const override {
+    return 0.5 * m.dot(inverse_.cwiseProduct(m));
+  }
+  Eigen::Vector3d gradient(const Eigen::Vector3d& m) const override {
+    return inverse_.cwiseProduct(m);
+  }
+  Eigen::Vector3d hessianTimes(const Eigen::Vector3d&, const Eigen::Vector3d& v) const override {
+    return inverse_.cwiseProduct(v);
+  }
+
+ protected:
+  Eigen::Vector3d inverse_;
+};
+class DoubledQuadraticHamiltonian final : public DiagonalQuadraticHamiltonian {
+ public:
+  using DiagonalQuadraticHamiltonian::DiagonalQuadraticHamiltonian;
+  double value(const Eigen::Vector3d& m) const override { return m.dot(inverse_.cwiseProduct(m)); }
+  Eigen::Vector3d gradient(const Eigen::Vector3d& m) const override {
+    return 2.0 * inverse_.cwiseProduct(m);
+  }
+  Eigen::Vector3d hessianTimes(const Eigen::Vector3d&, const Eigen::Vector3d& v) const override {
+    return 2.0 * inverse_.cwiseProduct(v);
+  }
+};
+
+TEST(TypedLiePoissonSystem, CallsTheOverridesOfATypeThatIsNotFinal) {
+  const double alpha = 0.5;
+  const std::shared_ptr<const DiagonalQuadraticHamiltonian> doubled =
+      std::make_shared<const DoubledQuadraticHamiltonian>(kInertia.cwiseInverse());
+  const auto system = makeLiePoissonSystem(
+      "doubled", doubled, std::make_shared<const ScaledIdentityMetric<SO3>>(alpha));
+  Sampler s(13);
+  for (int i = 0; i < 5; ++i) {
+    const Eigen::Vector3d M = s.vector<Eigen::Vector3d>();
+    const Eigen::Vector3d W = 2.0 * M.cwiseQuotient(kInertia);
+    EXPECT_LT((system->vectorField(M) - (M.cross(W) + alpha * M.cross(M.cross(W)))).norm(), 1e-14);
+  }
+}
+
+// The typed double field (makeRigidBody) and the generic one (a system built from the base
+// classes, and the Jet path of either) are one function: equal values, and the Jets' derivative
+// matches central differences of the typed field.
+TEST(TypedLiePoissonSystem, AgreesWithTheGenericFieldAndItsJetDerivative) {
+  const double alpha = 0.5;
+  const auto typed = makeRigidBody(kInertia, alpha);
+  const LiePoissonSystem<SO3> generic("rigid-body",
+                                      std::make_shared<const RigidBodyHamiltonian>(kInertia),
+                                      std::make_shared<const ScaledIdentityMetric<SO3>>(alpha));
+  using Jet = ceres::Jet<double, 3>;
+  Sampler s(17);
+  for (int i = 0; i < 5; ++i) {
+    const Eigen::Vector3d M = s.vector<Eigen::Vector3d>();
+    EXPECT_LT((typed->vectorField(M) - generic.vectorField(M)).norm(), 1e-15);
+    Eigen::Matrix<Jet, 3, 1> jet_M;
+    for (int j = 0; j < 3; ++j) jet_M(j) = Jet(M(j), j);
+    const Eigen::Matrix<Jet, 3, 1> jet_field = typed->vectorField(jet_M);
+    const double d = 1e-6;
+    for (int j = 0; j < 3; ++j) {
+      const Eigen::Vector3d e = Eigen::Vector3d::Unit(j);
+      const Eigen::Vector3d central = (typed->vectorField(Eigen::Vector3d(M + d * e)) -
+                                       typed->vectorField(Eigen::Vector3d(M - d * e))) /
+                                      (2 * d);
+      for (int r = 0; r < 3; ++r) {
+        EXPECT_NEAR(jet_field(r).a, typed->vectorField(M)(r), 1e-15);
+        EXPECT_NEAR(jet_field(r).v(j), central(r), 1e-8 * (1 + std::abs(central(r))));
+      }
+    }
+  }
+}
+
+TEST(TypedLiePoissonSystem, RejectsANullHamiltonianOrMetricNamingIt) {
+  const auto metric = std::make_shared<const ScaledIdentityMetric<SO3>>(0.5);
+  const auto hamiltonian = std::make_shared<const RigidBodyHamiltonian>(kInertia);
+  EXPECT_THAT(
+      [&] { makeLiePoissonSystem("x", std::shared_ptr<const RigidBodyHamiltonian>(), metric); },
+      ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("hamiltonian")));
+  EXPECT_THAT(
+      [&] {
+        makeLiePoissonSystem("x", hamiltonian, std::shared_ptr<const ScaledIdentityMetric<SO3>>());
+      },
+      ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("metric")));
+}
+
 }  // namespace
 }  // namespace ddb::test

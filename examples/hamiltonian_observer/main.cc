@@ -17,7 +17,7 @@ namespace {
 
 // One templated `evaluate`; AutoDiffHamiltonian derives ∂H/∂M and the Hessian action
 // with ceres::Jet, so constants are lifted with ddb::constant<T>.
-class QuarticTop : public ddb::AutoDiffHamiltonian<QuarticTop, ddb::SO3> {
+class QuarticTop final : public ddb::AutoDiffHamiltonian<QuarticTop, ddb::SO3> {
  public:
   QuarticTop(const Eigen::Vector3d& inertia, double beta)
       : inertia_(ddb::requirePositive("inertia", inertia)),
@@ -47,7 +47,7 @@ struct Sample {
 
 int main() {
   const double alpha = 0.5;
-  const auto system = std::make_shared<const ddb::LiePoissonSystem<ddb::SO3>>(
+  const auto system = ddb::makeLiePoissonSystem(
       "quartic-top", std::make_shared<const QuarticTop>(Eigen::Vector3d(1.0, 1.3, 0.5), 0.3),
       std::make_shared<const ddb::ScaledIdentityMetric<ddb::SO3>>(alpha));
 

@@ -25,7 +25,7 @@ class DissipationMetric {
 /// k♯ = α · identity (coordinates of g* identified with those of g by the basis,
 /// or by the trace pairing for matrix algebras). The rigid body of Section 5.
 template <class G>
-class ScaledIdentityMetric : public DissipationMetric<G> {
+class ScaledIdentityMetric final : public DissipationMetric<G> {
  public:
   using typename DissipationMetric<G>::Algebra;
   using typename DissipationMetric<G>::Dual;
@@ -41,7 +41,7 @@ class ScaledIdentityMetric : public DissipationMetric<G> {
 
 /// k♯ = α · diag(k), k_i >= 0 (the heavy-top and Kirchhoff metrics of docs/file-formats.md).
 template <class G>
-class DiagonalMetric : public DissipationMetric<G> {
+class DiagonalMetric final : public DissipationMetric<G> {
  public:
   using typename DissipationMetric<G>::Algebra;
   using typename DissipationMetric<G>::Dual;

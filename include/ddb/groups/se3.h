@@ -70,11 +70,12 @@ struct SE3 : LieGroupBase<SE3> {
   }
   /// ad*_ξ μ = (π×ω + γ×v, γ×ω).
   template <class T>
-  static Dual<T> adDual(const Algebra<T>& x, const Dual<T>& mu) {
+  EIGEN_ALWAYS_INLINE static Dual<T> adDual(const Algebra<T>& x, const Dual<T>& mu) {
     const auto w = x.template head<3>(), v = x.template tail<3>();
     const auto pi = mu.template head<3>(), gamma = mu.template tail<3>();
-    Dual<T> out;
-    out << pi.cross(w) + gamma.cross(v), gamma.cross(w);
+    Dual<T> out;  // halves assigned, not comma-initialised: see dcayInvDual
+    out.template head<3>() = pi.cross(w) + gamma.cross(v);
+    out.template tail<3>() = gamma.cross(w);
     return out;
   }
   /// Ad*_(R,r) μ = (Rᵀ(π + γ×r), Rᵀγ).

@@ -55,7 +55,7 @@ struct SO3 : LieGroupBase<SO3> {
   }
   /// ad*_x mu = mu × x.
   template <class T>
-  static Dual<T> adDual(const Algebra<T>& x, const Dual<T>& mu) {
+  EIGEN_ALWAYS_INLINE static Dual<T> adDual(const Algebra<T>& x, const Dual<T>& mu) {
     return mu.cross(x);
   }
   template <class T>

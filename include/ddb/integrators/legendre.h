@@ -60,7 +60,7 @@ class DiscreteLegendreSolver {
   /// Forgets the corrections of earlier solves (a new trajectory).
   void reset() {
     history_ = 0;
-    rate_ = 1.0;
+    squared_rate_ = 1.0;
   }
   LegendreForm form() const { return form_; }
   /// Sweeps, Newton iterations and final residual of the last solve.
@@ -75,7 +75,7 @@ class DiscreteLegendreSolver {
     const LegendreEquation<R, Target> equation{system_, retraction_, target, h, form_};
     if (h != h_) {  // corrections and rates scale with h: only same-h ones are used
       history_ = 0;
-      rate_ = 1.0;
+      squared_rate_ = 1.0;
     }
     h_ = h;
     Dual guess = near;
@@ -132,30 +132,34 @@ class DiscreteLegendreSolver {
   // 1, i.e. slow, until measured.
   template <class Equation>
   bool sweep(const Equation& equation, double scale, Dual& p) {
-    const double tolerance = options_.relative_tolerance * scale;
-    const double newton_ready = std::sqrt(options_.relative_tolerance) * scale;
+    // Squared norms and rates: no square root waits in the loop.
+    const double tolerance = square(options_.relative_tolerance * scale);
+    const double newton_ready = options_.relative_tolerance * square(scale);
     double last = INFINITY;
     for (int k = 0; k < max_sweeps_; ++k) {
       const Dual update = equation.residualAtMomentum(p);
-      const double size = update.norm();
-      stats_.residual = size;
+      const double size = update.squaredNorm();
       if (!std::isfinite(size) || size > last) {  // keep p as it is
-        rate_ = 1.0;
+        squared_rate_ = 1.0;
         return false;
       }
-      if (k > 0) rate_ = size / last;
+      if (k > 0) squared_rate_ = size / last;
       ++stats_.fixed_point;
       if (size <= tolerance) {
-        if (rate_ <= kSlowContraction) p -= update;
+        stats_.residual = std::sqrt(size);
+        if (squared_rate_ <= square(kSlowContraction)) p -= update;
         return true;
       }
       p -= update;
-      if (k > 0 && rate_ > kSlowContraction) return false;
-      if (rate_ > kFastContraction && rate_ * size <= newton_ready) return false;
+      if ((k > 0 && squared_rate_ > square(kSlowContraction)) ||
+          (squared_rate_ > square(kFastContraction) && squared_rate_ * size <= newton_ready)) {
+        return false;
+      }
       last = size;
     }
     return false;
   }
+  static constexpr double square(double x) { return x * x; }
 
   const LiePoissonSystem<G>& system_;
   const R& retraction_;
@@ -163,8 +167,9 @@ class DiscreteLegendreSolver {
   SolverOptions options_;
   int max_sweeps_;
   LegendreStats stats_;
-  int history_ = 0;    // corrections remembered (0 to 3)
-  double rate_ = 1.0;  // contraction of the last two sweeps; 1 (slow) until measured
+  int history_ = 0;  // corrections remembered (0 to 3)
+  double squared_rate_ =
+      1.0;  // contraction of the last two sweeps, squared; 1 (slow) until measured
   double h_ = 0.0;
   Dual correction_ = Dual::Zero(), previous_correction_ = Dual::Zero(),
        oldest_correction_ = Dual::Zero();

@@ -14,7 +14,7 @@
 
 namespace ddb {
 
-class HeavyTopHamiltonian : public AutoDiffHamiltonian<HeavyTopHamiltonian, SE3> {
+class HeavyTopHamiltonian final : public AutoDiffHamiltonian<HeavyTopHamiltonian, SE3> {
  public:
   HeavyTopHamiltonian(const Eigen::Vector3d& inertia, double mgl, const Eigen::Vector3d& chi)
       : inverse_inertia_(invertInertia(inertia)),
@@ -33,9 +33,10 @@ class HeavyTopHamiltonian : public AutoDiffHamiltonian<HeavyTopHamiltonian, SE3>
   // Analytic overrides for speed (checked against the autodiff versions in the tests); 𝕀⁻¹ is
   // stored, so that they multiply.
   Eigen::Matrix<double, 6, 1> gradient(const Eigen::Matrix<double, 6, 1>& mu) const override {
-    return (Eigen::Matrix<double, 6, 1>() << inverse_inertia_.cwiseProduct(mu.head<3>()),
-            mgl_ * chi_)
-        .finished();
+    Eigen::Matrix<double, 6, 1> out;  // halves assigned: a comma initialiser stores and reloads
+    out.head<3>() = inverse_inertia_.cwiseProduct(mu.head<3>());
+    out.tail<3>() = mgl_ * chi_;
+    return out;
   }
   Eigen::Matrix<double, 6, 1> hessianTimes(const Eigen::Matrix<double, 6, 1>&,
                                            const Eigen::Matrix<double, 6, 1>& v) const override {
@@ -59,9 +60,9 @@ class HeavyTopHamiltonian : public AutoDiffHamiltonian<HeavyTopHamiltonian, SE3>
 inline std::shared_ptr<const LiePoissonSystem<SE3>> makeHeavyTop(
     const Eigen::Vector3d& inertia, double mgl, const Eigen::Vector3d& chi, double alpha,
     const Eigen::Matrix<double, 6, 1>& metric) {
-  return std::make_shared<const LiePoissonSystem<SE3>>(
-      "heavy-top", std::make_shared<const HeavyTopHamiltonian>(inertia, mgl, chi),
-      std::make_shared<const DiagonalMetric<SE3>>(alpha, metric));
+  return makeLiePoissonSystem("heavy-top",
+                              std::make_shared<const HeavyTopHamiltonian>(inertia, mgl, chi),
+                              std::make_shared<const DiagonalMetric<SE3>>(alpha, metric));
 }
 
 }  // namespace ddb

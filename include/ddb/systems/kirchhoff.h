@@ -30,7 +30,7 @@ T halfWeightedSquares(const Eigen::Matrix<T, 6, 1>& x, const Weights& w) {
 }
 }  // namespace detail
 
-class KirchhoffLagrangian : public AutoDiffLagrangian<KirchhoffLagrangian, SE3> {
+class KirchhoffLagrangian final : public AutoDiffLagrangian<KirchhoffLagrangian, SE3> {
  public:
   KirchhoffLagrangian(const Eigen::Vector3d& inertia, const Eigen::Vector3d& mass)
       : weights_(detail::kirchhoffWeights(inertia, mass)) {}
@@ -54,7 +54,7 @@ class KirchhoffLagrangian : public AutoDiffLagrangian<KirchhoffLagrangian, SE3> 
   Eigen::Matrix<double, 6, 1> weights_;
 };
 
-class KirchhoffHamiltonian : public AutoDiffHamiltonian<KirchhoffHamiltonian, SE3> {
+class KirchhoffHamiltonian final : public AutoDiffHamiltonian<KirchhoffHamiltonian, SE3> {
  public:
   KirchhoffHamiltonian(const Eigen::Vector3d& inertia, const Eigen::Vector3d& mass)
       : inverse_weights_(detail::kirchhoffWeights(inertia, mass).cwiseInverse()) {}
@@ -80,10 +80,10 @@ class KirchhoffHamiltonian : public AutoDiffHamiltonian<KirchhoffHamiltonian, SE
 inline std::shared_ptr<const LiePoissonSystem<SE3>> makeKirchhoffBody(
     const Eigen::Vector3d& inertia, const Eigen::Vector3d& mass, double alpha,
     const Eigen::Matrix<double, 6, 1>& metric) {
-  return std::make_shared<const LiePoissonSystem<SE3>>(
-      "kirchhoff", std::make_shared<const KirchhoffHamiltonian>(inertia, mass),
-      std::make_shared<const DiagonalMetric<SE3>>(alpha, metric),
-      std::make_shared<const KirchhoffLagrangian>(inertia, mass));
+  return makeLiePoissonSystem("kirchhoff",
+                              std::make_shared<const KirchhoffHamiltonian>(inertia, mass),
+                              std::make_shared<const DiagonalMetric<SE3>>(alpha, metric),
+                              std::make_shared<const KirchhoffLagrangian>(inertia, mass));
 }
 
 }  // namespace ddb

@@ -20,7 +20,7 @@ inline Eigen::Vector3d invertInertia(const Eigen::Vector3d& inertia) {
   return inverse;
 }
 
-class RigidBodyLagrangian : public AutoDiffLagrangian<RigidBodyLagrangian, SO3> {
+class RigidBodyLagrangian final : public AutoDiffLagrangian<RigidBodyLagrangian, SO3> {
  public:
   explicit RigidBodyLagrangian(const Eigen::Vector3d& inertia)
       : inertia_(requirePositive("inertia", inertia)) {}
@@ -44,7 +44,7 @@ class RigidBodyLagrangian : public AutoDiffLagrangian<RigidBodyLagrangian, SO3> 
   Eigen::Vector3d inertia_;
 };
 
-class RigidBodyHamiltonian : public AutoDiffHamiltonian<RigidBodyHamiltonian, SO3> {
+class RigidBodyHamiltonian final : public AutoDiffHamiltonian<RigidBodyHamiltonian, SO3> {
  public:
   explicit RigidBodyHamiltonian(const Eigen::Vector3d& inertia)
       : inverse_inertia_(invertInertia(inertia)) {}
@@ -73,10 +73,9 @@ class RigidBodyHamiltonian : public AutoDiffHamiltonian<RigidBodyHamiltonian, SO
 /// The rigid body of principal moments `inertia` (all > 0) and damping `alpha`.
 inline std::shared_ptr<const LiePoissonSystem<SO3>> makeRigidBody(const Eigen::Vector3d& inertia,
                                                                   double alpha) {
-  return std::make_shared<const LiePoissonSystem<SO3>>(
-      "rigid-body", std::make_shared<const RigidBodyHamiltonian>(inertia),
-      std::make_shared<const ScaledIdentityMetric<SO3>>(alpha),
-      std::make_shared<const RigidBodyLagrangian>(inertia));
+  return makeLiePoissonSystem("rigid-body", std::make_shared<const RigidBodyHamiltonian>(inertia),
+                              std::make_shared<const ScaledIdentityMetric<SO3>>(alpha),
+                              std::make_shared<const RigidBodyLagrangian>(inertia));
 }
 
 }  // namespace ddb
