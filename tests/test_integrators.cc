@@ -188,6 +188,31 @@ TEST(Ddb, TooLargeStepThrowsTypedErrorAndKeepsPrefix) {
   }
 }
 
+// The tableau-driven step with its unrolled stage loops is the classical RK4, written out
+// here on eq. (3.6), Ṁ = M × Ω + α M × (M × Ω), to a few ulps (the sums are associated
+// differently).
+TEST(ExplicitRungeKutta, Rk4IsTheClassicalFormulaWrittenOut) {
+  const double alpha = 0.5;
+  auto body = makeRigidBody(kInertia, alpha);
+  ExplicitRungeKutta<SO3, 4> rk4(body, kClassicalRk4);
+  const auto field = [&](const Eigen::Vector3d& m) -> Eigen::Vector3d {
+    const Eigen::Vector3d omega = m.cwiseQuotient(kInertia);
+    return m.cross(omega) + alpha * m.cross(m.cross(omega));
+  };
+  Sampler s(19);
+  for (double h : {0.01, 0.1, 0.7}) {
+    for (int i = 0; i < 5; ++i) {
+      const Eigen::Vector3d m = s.vector<Eigen::Vector3d>();
+      const Eigen::Vector3d k1 = field(m), k2 = field(m + 0.5 * h * k1),
+                            k3 = field(m + 0.5 * h * k2), k4 = field(m + h * k3);
+      const Eigen::Vector3d expected = m + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+      EXPECT_LT((rk4.step(m, 0.0, h) - expected).norm(),
+                8 * std::numeric_limits<double>::epsilon() * expected.norm())
+          << "h " << h;
+    }
+  }
+}
+
 TEST(Integrate, RejectsBadInputNamingIt) {
   auto body = makeRigidBody(kInertia, 0.5);
   ExplicitRungeKutta<SO3, 4> rk4(body, kClassicalRk4);

@@ -1,7 +1,12 @@
 // The rigid body against the component equations of the paper's Examples 3.1/3.5 and
 // the energy/Casimir rates of Proposition 3.3, by central differences along the flow.
+#include <ddb/core/legendre_hamiltonian.h>
+#include <ddb/systems/heavy_top.h>
+#include <ddb/systems/kirchhoff.h>
+#include <ddb/systems/manakov_body.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>
+#include <ddb/systems/zeitlin_fluid.h>
 #include <gmock/gmock.h>
 
 #include "test_support.h"
@@ -135,6 +140,7 @@ TEST(RigidBody, RejectsBadParametersNamingThem) {
 // double vector field calls them without virtual dispatch when they are final. A type that is not
 // final must still reach the override of the object it is given: here a subclass that doubles
 // ∂H/∂μ, so that the field is 2 M × Ω + 2α M × (M × Ω), not the base class's.
+// (The metric is passed as a pointer to non-const: makeLiePoissonSystem takes either.)
 class DiagonalQuadraticHamiltonian : public Hamiltonian<SO3> {
  public:
   explicit DiagonalQuadraticHamiltonian(const Eigen::Vector3d& inverse) : inverse_(inverse) {}
@@ -167,8 +173,8 @@ TEST(TypedLiePoissonSystem, CallsTheOverridesOfATypeThatIsNotFinal) {
   const double alpha = 0.5;
   const std::shared_ptr<const DiagonalQuadraticHamiltonian> doubled =
       std::make_shared<const DoubledQuadraticHamiltonian>(kInertia.cwiseInverse());
-  const auto system = makeLiePoissonSystem(
-      "doubled", doubled, std::make_shared<const ScaledIdentityMetric<SO3>>(alpha));
+  const auto system =
+      makeLiePoissonSystem("doubled", doubled, std::make_shared<ScaledIdentityMetric<SO3>>(alpha));
   Sampler s(13);
   for (int i = 0; i < 5; ++i) {
     const Eigen::Vector3d M = s.vector<Eigen::Vector3d>();
@@ -178,8 +184,9 @@ TEST(TypedLiePoissonSystem, CallsTheOverridesOfATypeThatIsNotFinal) {
 }
 
 // The typed double field (makeRigidBody) and the generic one (a system built from the base
-// classes, and the Jet path of either) are one function: equal values, and the Jets' derivative
-// matches central differences of the typed field.
+// classes, and the Jet path of either) are one function: equal values to a few ulps (equal
+// bits without floating-point contraction), and the Jets' derivative matches central
+// differences of the typed field.
 TEST(TypedLiePoissonSystem, AgreesWithTheGenericFieldAndItsJetDerivative) {
   const double alpha = 0.5;
   const auto typed = makeRigidBody(kInertia, alpha);
@@ -190,7 +197,8 @@ TEST(TypedLiePoissonSystem, AgreesWithTheGenericFieldAndItsJetDerivative) {
   Sampler s(17);
   for (int i = 0; i < 5; ++i) {
     const Eigen::Vector3d M = s.vector<Eigen::Vector3d>();
-    EXPECT_LT((typed->vectorField(M) - generic.vectorField(M)).norm(), 1e-15);
+    const double ulps = 4 * std::numeric_limits<double>::epsilon() * generic.vectorField(M).norm();
+    EXPECT_LE((typed->vectorField(M) - generic.vectorField(M)).norm(), ulps);
     Eigen::Matrix<Jet, 3, 1> jet_M;
     for (int j = 0; j < 3; ++j) jet_M(j) = Jet(M(j), j);
     const Eigen::Matrix<Jet, 3, 1> jet_field = typed->vectorField(jet_M);
@@ -201,11 +209,33 @@ TEST(TypedLiePoissonSystem, AgreesWithTheGenericFieldAndItsJetDerivative) {
                                        typed->vectorField(Eigen::Vector3d(M - d * e))) /
                                       (2 * d);
       for (int r = 0; r < 3; ++r) {
-        EXPECT_NEAR(jet_field(r).a, typed->vectorField(M)(r), 1e-15);
+        EXPECT_NEAR(jet_field(r).a, typed->vectorField(M)(r), ulps);
         EXPECT_NEAR(jet_field(r).v(j), central(r), 1e-8 * (1 + std::abs(central(r))));
       }
     }
   }
+}
+
+// The library's factories keep their parts' types, so that explicit steps take the typed path.
+template <class G, class H, class K>
+bool isTyped(const std::shared_ptr<const LiePoissonSystem<G>>& system) {
+  return dynamic_cast<const TypedLiePoissonSystem<G, H, K>*>(system.get()) != nullptr;
+}
+TEST(TypedLiePoissonSystem, TheLibrarysSystemsAreTyped) {
+  const Eigen::Matrix<double, 6, 1> metric = Eigen::Matrix<double, 6, 1>::Ones();
+  EXPECT_TRUE((
+      isTyped<SO3, RigidBodyHamiltonian, ScaledIdentityMetric<SO3>>(makeRigidBody(kInertia, 0.5))));
+  EXPECT_TRUE((isTyped<SE3, HeavyTopHamiltonian, DiagonalMetric<SE3>>(
+      makeHeavyTop(kInertia, 1.0, Eigen::Vector3d::UnitZ(), 0.5, metric))));
+  EXPECT_TRUE((isTyped<SE3, KirchhoffHamiltonian, DiagonalMetric<SE3>>(
+      makeKirchhoffBody(kInertia, kInertia, 0.5, metric))));
+  EXPECT_TRUE((isTyped<SON, ManakovHamiltonian, ScaledIdentityMetric<SON>>(
+      makeManakovBody(Eigen::VectorXd::LinSpaced(4, 1.0, 2.0), 0.5))));
+  EXPECT_TRUE(
+      (isTyped<SUN, ZeitlinHamiltonian, ScaledIdentityMetric<SUN>>(makeZeitlinFluid(4, 0.5))));
+  EXPECT_TRUE((isTyped<SO3, LegendreHamiltonian<SO3>, DissipationMetric<SO3>>(
+      makeSystemFromLagrangian<SO3>("from-l", std::make_shared<const RigidBodyLagrangian>(kInertia),
+                                    std::make_shared<const ScaledIdentityMetric<SO3>>(0.5)))));
 }
 
 TEST(TypedLiePoissonSystem, RejectsANullHamiltonianOrMetricNamingIt) {

@@ -17,7 +17,7 @@
 namespace ddb {
 
 template <class G>
-class LegendreHamiltonian : public Hamiltonian<G> {
+class LegendreHamiltonian final : public Hamiltonian<G> {
  public:
   static constexpr int kDim = G::kDim;
   using Algebra = typename G::template Algebra<double>;
@@ -72,8 +72,7 @@ std::shared_ptr<const LiePoissonSystem<G>> makeSystemFromLagrangian(
     std::string name, std::shared_ptr<const Lagrangian<G>> lagrangian,
     std::shared_ptr<const DissipationMetric<G>> metric) {
   auto hamiltonian = std::make_shared<const LegendreHamiltonian<G>>(lagrangian);
-  return std::make_shared<const LiePoissonSystem<G>>(std::move(name), std::move(hamiltonian),
-                                                     std::move(metric), std::move(lagrangian));
+  return makeLiePoissonSystem(std::move(name), hamiltonian, metric, std::move(lagrangian));
 }
 
 }  // namespace ddb

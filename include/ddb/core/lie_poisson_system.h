@@ -42,6 +42,13 @@ class LiePoissonSystem {
     if (!metric_) throw InvalidArgument("metric must not be null");
   }
   virtual ~LiePoissonSystem() = default;
+  // Copies share the Hamiltonian and metric; a copy of a TypedLiePoissonSystem through this
+  // class is a generic system of the same parts. No assignment: TypedLiePoissonSystem relies on
+  // its parts keeping their types.
+  LiePoissonSystem(const LiePoissonSystem&) = default;
+  LiePoissonSystem(LiePoissonSystem&&) = default;
+  LiePoissonSystem& operator=(const LiePoissonSystem&) = delete;
+  LiePoissonSystem& operator=(LiePoissonSystem&&) = delete;
 
   const std::string& name() const { return name_; }
   const Hamiltonian<G>& hamiltonian() const { return *hamiltonian_; }
@@ -64,7 +71,8 @@ class LiePoissonSystem {
     return dissipationOf(*metric_, xi, mu);
   }
 
-  /// μ̇ = ad*_{ξ + φ(ξ)} μ (double or Jet); in double, one virtual call (fieldAt).
+  /// μ̇ = ad*_{ξ + φ(ξ)} μ (double or Jet). In double through fieldAt: one virtual call in a
+  /// TypedLiePoissonSystem with `final` parts, three in a system built by this constructor.
   template <class T>
   DualT<T> vectorField(const DualT<T>& mu) const {
     if constexpr (std::is_same_v<T, double>) {
@@ -105,11 +113,11 @@ class LiePoissonSystem {
 };
 
 /// A LiePoissonSystem that knows the concrete types H of its Hamiltonian and K of its metric.
-/// Its double vector field calls them through those types, so that when they are `final` the
-/// compiler inlines ∂H/∂μ and k♯ into the field: one virtual call per evaluation instead of
-/// three, and ξ stays in registers. For a small system that is most of the explicit methods'
-/// overhead over hand-written code (docs/design.md, "Explicit steps"). Built by
-/// makeLiePoissonSystem.
+/// Its double vector field calls `gradient` and `sharp` by name through those types, so that
+/// when they are `final` the compiler inlines ∂H/∂μ and k♯ into the field: one virtual call
+/// per evaluation (fieldAt) instead of two (∂H/∂μ and k♯ through their base classes), and ξ
+/// stays in registers. For a small system that is most of the explicit methods' overhead over
+/// hand-written code (docs/design.md, "Explicit steps"). Built by makeLiePoissonSystem.
 template <class G, class H, class K>
 class TypedLiePoissonSystem final : public LiePoissonSystem<G> {
   static_assert(std::is_base_of_v<Hamiltonian<G>, H>, "H must derive from Hamiltonian<G>");
@@ -122,28 +130,25 @@ class TypedLiePoissonSystem final : public LiePoissonSystem<G> {
   TypedLiePoissonSystem(std::string name, const std::shared_ptr<const H>& hamiltonian,
                         const std::shared_ptr<const K>& metric,
                         std::shared_ptr<const Lagrangian<G>> lagrangian = nullptr)
-      : LiePoissonSystem<G>(std::move(name), hamiltonian, metric, std::move(lagrangian)),
-        hamiltonian_(*hamiltonian),  // not null: the base has checked
-        metric_(*metric) {}
+      : LiePoissonSystem<G>(std::move(name), hamiltonian, metric, std::move(lagrangian)) {}
 
  protected:
+  // The base holds exactly these objects (it has no assignment), so the casts are exact.
   Dual fieldAt(const Dual& mu) const override {
-    return this->vectorFieldOf(hamiltonian_, metric_, mu);
+    return this->vectorFieldOf(static_cast<const H&>(this->hamiltonian()),
+                               static_cast<const K&>(this->metric()), mu);
   }
-
- private:
-  const H& hamiltonian_;  // owned by the base
-  const K& metric_;
 };
 
 /// The system of `hamiltonian` and `metric` (and optionally the Lagrangian they come from),
 /// keeping their concrete types (TypedLiePoissonSystem): declare them `final` for the fastest
 /// explicit steps.
-template <class H, class K>
-std::shared_ptr<const LiePoissonSystem<typename H::Group>> makeLiePoissonSystem(
-    std::string name, const std::shared_ptr<const H>& hamiltonian,
-    const std::shared_ptr<const K>& metric,
-    std::shared_ptr<const Lagrangian<typename H::Group>> lagrangian = nullptr) {
+template <class HP, class KP>
+std::shared_ptr<const LiePoissonSystem<typename HP::Group>> makeLiePoissonSystem(
+    std::string name, const std::shared_ptr<HP>& hamiltonian, const std::shared_ptr<KP>& metric,
+    std::shared_ptr<const Lagrangian<typename HP::Group>> lagrangian = nullptr) {
+  using H = std::remove_const_t<HP>;
+  using K = std::remove_const_t<KP>;
   return std::make_shared<const TypedLiePoissonSystem<typename H::Group, H, K>>(
       std::move(name), hamiltonian, metric, std::move(lagrangian));
 }

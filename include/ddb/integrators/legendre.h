@@ -132,7 +132,8 @@ class DiscreteLegendreSolver {
   // 1, i.e. slow, until measured.
   template <class Equation>
   bool sweep(const Equation& equation, double scale, Dual& p) {
-    // Squared norms and rates: no square root waits in the loop.
+    // Squared norms and rates: no square root waits in the loop (docs/design.md). The
+    // decisions are those on norms, up to ties (Eigen's norm() is √squaredNorm() too).
     const double tolerance = square(options_.relative_tolerance * scale);
     const double newton_ready = options_.relative_tolerance * square(scale);
     double last = INFINITY;
@@ -140,6 +141,7 @@ class DiscreteLegendreSolver {
       const Dual update = equation.residualAtMomentum(p);
       const double size = update.squaredNorm();
       if (!std::isfinite(size) || size > last) {  // keep p as it is
+        stats_.residual = std::sqrt(size);
         squared_rate_ = 1.0;
         return false;
       }
@@ -153,10 +155,12 @@ class DiscreteLegendreSolver {
       p -= update;
       if ((k > 0 && squared_rate_ > square(kSlowContraction)) ||
           (squared_rate_ > square(kFastContraction) && squared_rate_ * size <= newton_ready)) {
+        stats_.residual = std::sqrt(size);
         return false;
       }
       last = size;
     }
+    if (max_sweeps_ > 0) stats_.residual = std::sqrt(last);
     return false;
   }
   static constexpr double square(double x) { return x * x; }

@@ -32,7 +32,8 @@ class ExplicitRungeKutta : public OneStepMethod<G> {
 
   // The stage loops are unrolled (the tableau stays data): the slopes of a small system then
   // stay in registers between vector-field evaluations (docs/design.md, "Explicit steps"). The
-  // arithmetic, and so every rounding, is that of the plain loops.
+  // operations and their order are those of the plain loops (the same roundings without
+  // floating-point contraction).
   Dual step(const Dual& mu, double, double h) override {
     std::array<Dual, S> k;
 #pragma GCC unroll 16

@@ -14,7 +14,7 @@
 
 namespace ddb {
 
-class ManakovHamiltonian : public Hamiltonian<SON> {
+class ManakovHamiltonian final : public Hamiltonian<SON> {
  public:
   using Matrix = Eigen::MatrixXd;
 
@@ -47,9 +47,8 @@ class ManakovHamiltonian : public Hamiltonian<SON> {
 /// The Manakov body with principal values J (all > 0) and damping α.
 inline std::shared_ptr<const LiePoissonSystem<SON>> makeManakovBody(const Eigen::VectorXd& J,
                                                                     double alpha) {
-  return std::make_shared<const LiePoissonSystem<SON>>(
-      "manakov-body", std::make_shared<const ManakovHamiltonian>(J),
-      std::make_shared<const ScaledIdentityMetric<SON>>(alpha));
+  return makeLiePoissonSystem("manakov-body", std::make_shared<const ManakovHamiltonian>(J),
+                              std::make_shared<const ScaledIdentityMetric<SON>>(alpha));
 }
 
 }  // namespace ddb

@@ -22,7 +22,7 @@ namespace ddb {
 inline double zeitlinHbar(Eigen::Index n) { return 2.0 / std::sqrt(double(n * n - 1)); }
 
 /// H(W) = Re tr(W Δ⁻¹W)/(2ħ); its gradient and Hessian are Poisson solves (O(N²)).
-class ZeitlinHamiltonian : public Hamiltonian<SUN> {
+class ZeitlinHamiltonian final : public Hamiltonian<SUN> {
  public:
   using Matrix = Eigen::MatrixXcd;
 
@@ -87,9 +87,8 @@ class ZeitlinDiagnostics {
 
 /// Zeitlin's fluid at resolution N with double-bracket coefficient α (any finite sign).
 inline std::shared_ptr<const LiePoissonSystem<SUN>> makeZeitlinFluid(Eigen::Index n, double alpha) {
-  return std::make_shared<const LiePoissonSystem<SUN>>(
-      "zeitlin", std::make_shared<const ZeitlinHamiltonian>(n),
-      std::make_shared<const ScaledIdentityMetric<SUN>>(alpha));
+  return makeLiePoissonSystem("zeitlin", std::make_shared<const ZeitlinHamiltonian>(n),
+                              std::make_shared<const ScaledIdentityMetric<SUN>>(alpha));
 }
 
 }  // namespace ddb
