@@ -72,7 +72,8 @@ class LiePoissonSystem {
   }
 
   /// μ̇ = ad*_{ξ + φ(ξ)} μ (double or Jet). In double through fieldAt: one virtual call in a
-  /// TypedLiePoissonSystem with `final` parts, three in a system built by this constructor.
+  /// TypedLiePoissonSystem with `final` parts, three in one built by LiePoissonSystem's own
+  /// constructor.
   template <class T>
   DualT<T> vectorField(const DualT<T>& mu) const {
     if constexpr (std::is_same_v<T, double>) {

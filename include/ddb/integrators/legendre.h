@@ -172,8 +172,8 @@ class DiscreteLegendreSolver {
   int max_sweeps_;
   LegendreStats stats_;
   int history_ = 0;  // corrections remembered (0 to 3)
-  double squared_rate_ =
-      1.0;  // contraction of the last two sweeps, squared; 1 (slow) until measured
+  // The contraction of the last two sweeps, squared; 1 (slow) until measured.
+  double squared_rate_ = 1.0;
   double h_ = 0.0;
   Dual correction_ = Dual::Zero(), previous_correction_ = Dual::Zero(),
        oldest_correction_ = Dual::Zero();
