@@ -3,8 +3,7 @@
 // and files of docs/file-formats.md. Exit status (apps/common/exit_status.h): 2 for bad
 // input, checked in full before anything is written; 1 if a method failed (its valid
 // prefix is still written and it is marked FAILED) or a file could not be written.
-#include <ddb/integrators/method_descriptions.h>
-#include <ddb/integrators/method_registry.h>
+#include <ddb/integrators/method_table.h>
 #include <ddb/integrators/run.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <spdlog/spdlog.h>
@@ -496,7 +495,8 @@ int compare(const Options& o, const Settings& s, const Problem<G>& problem) {
     TrajectoryCsv<G> csv(csv_file, system);
     // Every state passes the energy check; only every K-th reaches the file.
     EveryKth<typename G::template Dual<double>, TrajectoryCsv<G>> rows(o.every, csv);
-    const bool watch_energy = app::EnergyRises::applies(name, problem.alpha);
+    const bool watch_energy =
+        app::EnergyRises::applies(findMethod(name)->keeps_casimirs, problem.alpha);
     app::EnergyRises rises;
     const RunResult<G> run = runMethod(*methods[m], system, problem.mu0, s.h, s.steps, options,
                                        [&](long k, double t, const auto& mu) {

@@ -3,8 +3,7 @@
 // docs/file-formats.md ("fluid-relax"). Exit status (apps/common/exit_status.h): 2 for
 // bad input, checked in full before anything is written; 1 if a step failed (history.csv
 // keeps every state before it) or a file could not be written.
-#include <ddb/integrators/method_descriptions.h>
-#include <ddb/integrators/method_registry.h>
+#include <ddb/integrators/method_table.h>
 #include <ddb/integrators/run.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
@@ -53,13 +52,13 @@ const std::vector<std::pair<std::string, std::string>>& initDescriptions() {
   return inits;
 }
 
-/// The methods for the fluid (a subset of matrixGroupMethodNames()), with the registry's
-/// descriptions.
+/// The methods for the fluid: every entry of the method table for matrix groups but the
+/// dense reference, with the table's descriptions.
 std::vector<std::pair<std::string, std::string>> fluidMethods() {
   std::vector<std::pair<std::string, std::string>> methods;
-  for (const auto& entry : methodDescriptions()) {
-    if (entry.first == "ddb-cay" || entry.first == "sddb-cay" || entry.first == "rk4") {
-      methods.push_back(entry);
+  for (const MethodInfo& m : kMethods) {
+    if ((m.groups & kMatrixGroups) != 0 && m.kind != MethodKind::kReference) {
+      methods.emplace_back(m.name, m.description);
     }
   }
   return methods;
@@ -375,7 +374,8 @@ int relax(const Options& o, const Settings& s) {
   };
   EveryKth<Matrix, decltype(historyRow)> history(o.every, historyRow);
 
-  const bool watch_energy = app::EnergyRises::applies(o.method, s.alpha);
+  const bool watch_energy =
+      app::EnergyRises::applies(findMethod(o.method)->keeps_casimirs, s.alpha);
   app::EnergyRises rises;
   app::Progress progress(o.log.quiet);
   const std::string label = o.method + " N=" + std::to_string(n);

@@ -9,7 +9,7 @@
 
 #include <benchmark/benchmark.h>
 #include <ddb/integrators/ddb.h>
-#include <ddb/integrators/method_registry.h>
+#include <ddb/integrators/method_table.h>
 #include <ddb/integrators/symmetric_ddb.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>

@@ -3,7 +3,7 @@
 // against the library called directly, bad input (exit status 2, a message naming the
 // flag, nothing written), --help, --version, "custom" scenarios, --every, FAILED runs,
 // I/O errors (exit status 1 naming the file) and constant memory on long runs.
-#include <ddb/integrators/method_registry.h>
+#include <ddb/integrators/method_table.h>
 #include <ddb/systems/heavy_top.h>
 #include <ddb/systems/rigid_body.h>
 #include <gmock/gmock.h>

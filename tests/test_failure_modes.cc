@@ -5,7 +5,7 @@
 #include <ddb/core/errors.h>
 #include <ddb/groups/se3.h>
 #include <ddb/integrators/injectivity_guard.h>
-#include <ddb/integrators/method_registry.h>
+#include <ddb/integrators/method_table.h>
 #include <ddb/integrators/run.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/zeitlin_fluid.h>

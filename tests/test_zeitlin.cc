@@ -2,10 +2,10 @@
 // library did not use to compute it: Eigen's eigensolver on the dense Laplacian, the
 // defining orthonormality of T_lm, central differences along the flow, the isospectral
 // midpoint rule written here from its own formula, the adaptive reference solver.
-#include <ddb/core/dense_inverse.h>
+#include <ddb/core/detail/dense_inverse.h>
 #include <ddb/integrators/correction_predictor.h>
 #include <ddb/integrators/ddb.h>
-#include <ddb/integrators/method_registry.h>
+#include <ddb/integrators/method_table.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>

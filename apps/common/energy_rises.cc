@@ -8,9 +8,7 @@
 
 namespace ddb::app {
 
-bool EnergyRises::applies(const std::string& method, double alpha) {
-  return alpha > 0 && method.find("ddb") != std::string::npos;
-}
+bool EnergyRises::applies(bool keeps_casimirs, double alpha) { return keeps_casimirs && alpha > 0; }
 
 void EnergyRises::observe(long k, double t, double energy) {
   if (started_) {

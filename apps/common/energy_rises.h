@@ -15,9 +15,10 @@ class EnergyRises {
   /// round-off stays within a few ε of the larger of the two values.
   static constexpr double kRoundOffUlps = 8.0;
 
-  /// Whether rises are counted: a DDB method (its name contains "ddb": ddb-*, sddb-*,
-  /// ddb4-*, ddb6-*) with α > 0. Other methods, and α ≤ 0, promise no monotone energy.
-  static bool applies(const std::string& method, double alpha);
+  /// Whether rises are counted: a method of the DDB family (MethodInfo::keeps_casimirs,
+  /// integrators/method_table.h) with α > 0. Other methods, and α ≤ 0, promise no
+  /// monotone energy.
+  static bool applies(bool keeps_casimirs, double alpha);
 
   /// The energy of state k at time t, in the order of the run.
   void observe(long k, double t, double energy);

@@ -4,9 +4,9 @@
 // Neither keeps the coadjoint orbit: they are the paper's general-purpose peers.
 #pragma once
 
+#include <ddb/core/detail/tiny_solver.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/lie_poisson_system.h>
-#include <ddb/core/tiny_solver.h>
 #include <ddb/integrators/butcher_tableau.h>
 #include <ddb/integrators/one_step_method.h>
 

@@ -7,7 +7,7 @@
 // directional derivatives the interfaces provide.
 #pragma once
 
-#include <ddb/core/scalar.h>
+#include <ddb/core/detail/scalar.h>
 
 #include <Eigen/Core>
 

@@ -21,10 +21,10 @@
 // (hat = vee = identity, pairing Re tr(A^H B)); no n×n operator is ever formed here.
 #pragma once
 
-#include <ddb/core/bernoulli.h>
+#include <ddb/core/detail/bernoulli.h>
+#include <ddb/core/detail/jet_jacobian.h>
+#include <ddb/core/detail/scalar.h>
 #include <ddb/core/errors.h>
-#include <ddb/core/jet_jacobian.h>
-#include <ddb/core/scalar.h>
 
 #include <Eigen/Core>
 #include <Eigen/LU>

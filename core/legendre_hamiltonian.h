@@ -6,10 +6,10 @@
 // one instance must not be shared between threads).
 #pragma once
 
-#include <ddb/core/jet_lift.h>
+#include <ddb/core/detail/jet_lift.h>
+#include <ddb/core/detail/tiny_solver.h>
 #include <ddb/core/lagrangian.h>
 #include <ddb/core/lie_poisson_system.h>
-#include <ddb/core/tiny_solver.h>
 
 #include <Eigen/LU>
 #include <memory>

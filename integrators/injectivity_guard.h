@@ -4,7 +4,7 @@
 // with adRadius(hξ) ≥ π has Legendre solutions on other branches, and the solver converges
 // to one of them without a word (`--scenario B --h 5` climbed to the maximum-energy state).
 // Cayley has no such limit (cay maps so(3) one-to-one onto SO(3) minus the half-turns), and
-// the matrix groups, which have no adRadius, have Cayley methods only (method_registry.h).
+// the matrix groups, which have no adRadius, have Cayley methods only (method_table.h).
 #pragma once
 
 #include <ddb/core/errors.h>

@@ -13,7 +13,7 @@
 // products. The workspaces are allocated when the size first appears, then reused.
 #pragma once
 
-#include <ddb/core/dense_inverse.h>
+#include <ddb/core/detail/dense_inverse.h>
 #include <ddb/core/dissipation_metric.h>
 #include <ddb/core/errors.h>
 

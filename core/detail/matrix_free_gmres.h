@@ -5,7 +5,7 @@
 // system are allocated by resize() once; solve() does not allocate.
 #pragma once
 
-#include <ddb/core/scalar.h>
+#include <ddb/core/detail/scalar.h>
 
 #include <Eigen/Core>
 #include <cmath>

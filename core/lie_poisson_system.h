@@ -4,10 +4,10 @@
 // so Casimirs are constant and dH/dt = -k(ad*_ξ μ, ad*_ξ μ) (Proposition 3.3).
 #pragma once
 
+#include <ddb/core/detail/jet_lift.h>
 #include <ddb/core/dissipation_metric.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/group_traits.h>
-#include <ddb/core/jet_lift.h>
 #include <ddb/core/lagrangian.h>
 
 #include <memory>

@@ -3,9 +3,9 @@
 // ad^order term (TruncatedExponential; the paper's runs use order 2).
 #pragma once
 
-#include <ddb/core/bernoulli.h>
+#include <ddb/core/detail/bernoulli.h>
+#include <ddb/core/detail/jet_jacobian.h>
 #include <ddb/core/errors.h>
-#include <ddb/core/jet_jacobian.h>
 #include <ddb/core/retraction.h>
 
 #include <type_traits>

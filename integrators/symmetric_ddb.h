@@ -17,7 +17,7 @@
 // μ_k = Ad*_{τ(-hφ(ξ_k)/2)} M_k; it is second order and still exactly on the orbit.
 #pragma once
 
-#include <ddb/core/jet_jacobian.h>
+#include <ddb/core/detail/jet_jacobian.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/integrators/legendre_method.h>
 

@@ -1,6 +1,6 @@
 // The whole public API of ddb in one include. The per-concept headers below stay
 // reachable on their own (<ddb/groups/so3.h>, ...); headers they include themselves
-// (solver details, scalar helpers) are not listed.
+// (core/detail/: solver details, scalar helpers) are not listed.
 #pragma once
 
 #include <ddb/core/autodiff.h>
@@ -11,7 +11,6 @@
 #include <ddb/core/legendre_hamiltonian.h>
 #include <ddb/core/lie_group.h>
 #include <ddb/core/lie_poisson_system.h>
-#include <ddb/core/matrix_free_gmres.h>
 #include <ddb/core/retraction.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/exponential.h>
@@ -24,8 +23,7 @@
 #include <ddb/integrators/ddb.h>
 #include <ddb/integrators/matrix_cayley_transport.h>
 #include <ddb/integrators/matrix_legendre.h>
-#include <ddb/integrators/method_descriptions.h>
-#include <ddb/integrators/method_registry.h>
+#include <ddb/integrators/method_table.h>
 #include <ddb/integrators/one_step_method.h>
 #include <ddb/integrators/reference.h>
 #include <ddb/integrators/run.h>

@@ -18,8 +18,8 @@
 //     SolveFailure when the tolerance is not reached.
 #pragma once
 
+#include <ddb/core/detail/tiny_solver.h>
 #include <ddb/core/lie_poisson_system.h>
-#include <ddb/core/tiny_solver.h>
 #include <ddb/integrators/injectivity_guard.h>
 #include <ddb/integrators/legendre_equation.h>
 #include <ddb/integrators/legendre_stats.h>

@@ -22,11 +22,11 @@
 #pragma once
 
 #include <ceres/ceres.h>
+#include <ddb/core/detail/matrix_free_gmres.h>
+#include <ddb/core/detail/tiny_solver.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
-#include <ddb/core/matrix_free_gmres.h>
-#include <ddb/core/tiny_solver.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/integrators/correction_predictor.h>
 #include <ddb/integrators/legendre_equation.h>

@@ -1,0 +1,268 @@
+// The integrators by their contract names (docs/file-formats.md): one table, kMethods,
+// holds each method's name, description, the groups it runs on, whether it keeps the
+// Casimirs, its order and its recipe; makeMethod() builds any entry for any group, and
+// the apps' choices, --help, messages and the tests all read the same table. Adding an
+// integrator is one row here plus its header (and, for a new kind of method, one case
+// in makeMethod's switch).
+#pragma once
+
+#include <ddb/core/errors.h>
+#include <ddb/core/group_traits.h>
+#include <ddb/groups/cayley.h>
+#include <ddb/groups/exponential.h>
+#include <ddb/integrators/composition.h>
+#include <ddb/integrators/ddb.h>
+#include <ddb/integrators/reference.h>
+#include <ddb/integrators/runge_kutta.h>
+#include <ddb/integrators/symmetric_ddb.h>
+
+#include <array>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace ddb {
+
+/// The groups a method runs on: the fixed-size ones (SO3, SE3 and any user group with
+/// static sizes) and the matrix groups with N at run time (SON, SUN).
+enum GroupFamilies : unsigned { kFixedSizeGroups = 1u, kMatrixGroups = 2u };
+
+/// How makeMethod() builds an entry.
+enum class MethodKind {
+  kDdb,                ///< Ddb<R> (paper, Section 4.1)
+  kSymmetricDdb,       ///< SymmetricDdb<R>, the one-step symmetric DDB
+  kPaperSymmetricDdb,  ///< PaperSymmetricDdb<R>, the paper's symmetric variant as written
+  kComposition,        ///< Composition of the entry `base` by `scheme`
+  kExplicitRk4,        ///< ExplicitRungeKutta with kClassicalRk4
+  kLobattoIIIC,        ///< ImplicitRungeKutta with kLobattoIIIC3
+  kReference,          ///< ReferenceSolver, adaptive RKF 7(8)
+};
+
+enum class RetractionKind {
+  kNone,
+  kCayley,                 ///< Cayley<G>
+  kExponential,            ///< Exponential<G>, closed-form dexp^{-1}
+  kTruncatedExponential2,  ///< TruncatedExponential<G>(2), as in the paper's runs
+};
+
+enum class SchemeKind { kNone, kTripleJump, kYoshida6 };
+
+struct MethodInfo {
+  std::string_view name;
+  std::string_view description;  ///< one line, for --help and messages
+  unsigned groups;               ///< GroupFamilies it applies to
+  /// The DDB family: every state on the coadjoint orbit of μ₀, so the Casimirs are kept to
+  /// round-off and, with α > 0, the energy falls (the apps watch it).
+  bool keeps_casimirs;
+  bool needs_lagrangian;  ///< evaluates ∂l/∂ξ at a midpoint, so the system needs l
+  /// Order in μ with α ≠ 0 (docs/conventions.md §2); 0 for the adaptive reference,
+  /// whose error is set by its tolerance, not by h.
+  int order;
+  int order_without_dissipation;  ///< order with α = 0
+  MethodKind kind;
+  RetractionKind retraction;
+  SchemeKind scheme;
+  std::string_view base;  ///< the composed entry, for kComposition
+};
+
+// clang-format off
+/// Every method, in the order of the paper's comparison (docs/file-formats.md).
+inline constexpr std::array<MethodInfo, 13> kMethods{{
+  {"ddb-cay", "DDB step with the Cayley map (order 1, order 2 at alpha = 0)",
+   kFixedSizeGroups | kMatrixGroups, true, false, 1, 2,
+   MethodKind::kDdb, RetractionKind::kCayley, SchemeKind::kNone, ""},
+  {"ddb-exp", "DDB step with exp, dexp^-1 series truncated at order 2 as in the paper",
+   kFixedSizeGroups, true, false, 1, 2,
+   MethodKind::kDdb, RetractionKind::kTruncatedExponential2, SchemeKind::kNone, ""},
+  {"ddb-exp-exact", "DDB step with exp and the closed-form dexp^-1",
+   kFixedSizeGroups, true, false, 1, 2,
+   MethodKind::kDdb, RetractionKind::kExponential, SchemeKind::kNone, ""},
+  {"sddb-paper-cay", "the paper's symmetric DDB, Cayley (order 1 as written; Lagrangian only)",
+   kFixedSizeGroups, true, true, 1, 2,
+   MethodKind::kPaperSymmetricDdb, RetractionKind::kCayley, SchemeKind::kNone, ""},
+  {"sddb-paper-exp", "the paper's symmetric DDB, exp (order 1 as written; Lagrangian only)",
+   kFixedSizeGroups, true, true, 1, 2,
+   MethodKind::kPaperSymmetricDdb, RetractionKind::kExponential, SchemeKind::kNone, ""},
+  {"sddb-cay", "one-step symmetric DDB, Cayley (order 2)",
+   kFixedSizeGroups | kMatrixGroups, true, false, 2, 2,
+   MethodKind::kSymmetricDdb, RetractionKind::kCayley, SchemeKind::kNone, ""},
+  {"sddb-exp", "one-step symmetric DDB, exp (order 2)",
+   kFixedSizeGroups, true, false, 2, 2,
+   MethodKind::kSymmetricDdb, RetractionKind::kExponential, SchemeKind::kNone, ""},
+  {"ddb4-cay", "triple jump of sddb-cay (order 4)",
+   kFixedSizeGroups | kMatrixGroups, true, false, 4, 4,
+   MethodKind::kComposition, RetractionKind::kNone, SchemeKind::kTripleJump, "sddb-cay"},
+  {"ddb4-exp", "triple jump of sddb-exp (order 4)",
+   kFixedSizeGroups, true, false, 4, 4,
+   MethodKind::kComposition, RetractionKind::kNone, SchemeKind::kTripleJump, "sddb-exp"},
+  {"ddb6-exp", "Yoshida's 7-stage composition of sddb-exp (order 6)",
+   kFixedSizeGroups, true, false, 6, 6,
+   MethodKind::kComposition, RetractionKind::kNone, SchemeKind::kYoshida6, "sddb-exp"},
+  {"rk4", "classical Runge-Kutta, order 4 (does not keep Casimirs)",
+   kFixedSizeGroups | kMatrixGroups, false, false, 4, 4,
+   MethodKind::kExplicitRk4, RetractionKind::kNone, SchemeKind::kNone, ""},
+  {"lobatto3c", "Lobatto IIIC, 3 stages, order 4 (does not keep Casimirs)",
+   kFixedSizeGroups, false, false, 4, 4,
+   MethodKind::kLobattoIIIC, RetractionKind::kNone, SchemeKind::kNone, ""},
+  {"reference", "adaptive Runge-Kutta-Fehlberg 7(8), tolerance 1e-13",
+   kFixedSizeGroups | kMatrixGroups, false, false, 0, 0,
+   MethodKind::kReference, RetractionKind::kNone, SchemeKind::kNone, ""},
+}};
+// clang-format on
+
+/// The families G belongs to.
+template <class G>
+constexpr unsigned groupFamilyOf() {
+  return isDynamicGroup<G> ? kMatrixGroups : kFixedSizeGroups;
+}
+
+/// The entry named `name`, or nullptr.
+inline const MethodInfo* findMethod(std::string_view name) {
+  for (const MethodInfo& m : kMethods) {
+    if (m.name == name) return &m;
+  }
+  return nullptr;
+}
+
+/// The names of the entries that run on any of `families`, in table order.
+inline std::vector<std::string> methodNames(unsigned families = kFixedSizeGroups | kMatrixGroups) {
+  std::vector<std::string> names;
+  for (const MethodInfo& m : kMethods) {
+    if ((m.groups & families) != 0) names.emplace_back(m.name);
+  }
+  return names;
+}
+
+/// The names of the methods for matrix groups (SO(N), SU(N)).
+inline std::vector<std::string> matrixGroupMethodNames() { return methodNames(kMatrixGroups); }
+
+/// (name, one-line description) of the entries that run on any of `families`.
+inline std::vector<std::pair<std::string, std::string>> methodDescriptions(
+    unsigned families = kFixedSizeGroups | kMatrixGroups) {
+  std::vector<std::pair<std::string, std::string>> lines;
+  for (const MethodInfo& m : kMethods) {
+    if ((m.groups & families) != 0) lines.emplace_back(m.name, m.description);
+  }
+  return lines;
+}
+
+/// Whether the entry runs on G and on this system (the paper's symmetric variant
+/// evaluates ∂l/∂ξ at the midpoint (ξ_k + ξ_{k+1})/2, so it needs a Lagrangian).
+template <class G>
+bool methodApplies(const MethodInfo& method, const LiePoissonSystem<G>& system) {
+  return (method.groups & groupFamilyOf<G>()) != 0 &&
+         (!method.needs_lagrangian || system.lagrangian() != nullptr);
+}
+
+/// methodApplies for a name; false for a name that is not in the table.
+template <class G>
+bool methodApplies(std::string_view name, const LiePoissonSystem<G>& system) {
+  const MethodInfo* method = findMethod(name);
+  return method != nullptr && methodApplies(*method, system);
+}
+
+namespace detail {
+
+/// The message of a name that is not a method for G's family.
+template <class G>
+[[noreturn]] void throwNotAMethod(const std::string& name) {
+  if constexpr (isDynamicGroup<G>) {
+    std::string valid;
+    for (const auto& n : matrixGroupMethodNames()) valid += (valid.empty() ? "" : ", ") + n;
+    throwInvalid("method", name, "is not one of the methods for matrix groups: " + valid);
+  } else {
+    throwInvalid("method", name, "unknown method");
+  }
+}
+
+template <class G>
+using MethodPointer = std::unique_ptr<OneStepMethod<G>>;
+
+/// A DDB-family method M<R> with the entry's retraction. Matrix groups have the Cayley
+/// map only; the table says so, and makeMethod checks the table first.
+template <class G, template <class> class M, class... Args>
+MethodPointer<G> withRetraction(RetractionKind r, std::shared_ptr<const LiePoissonSystem<G>> system,
+                                Args... args) {
+  if (r == RetractionKind::kCayley) {
+    return std::make_unique<M<Cayley<G>>>(system, Cayley<G>(), args...);
+  }
+  if constexpr (!isDynamicGroup<G>) {
+    if (r == RetractionKind::kExponential) {
+      return std::make_unique<M<Exponential<G>>>(system, Exponential<G>(), args...);
+    }
+    if (r == RetractionKind::kTruncatedExponential2) {
+      return std::make_unique<M<TruncatedExponential<G>>>(system, TruncatedExponential<G>(2),
+                                                          args...);
+    }
+  }
+  throw std::logic_error("method table: a retraction the group has not");
+}
+
+inline const CompositionScheme& schemeOf(SchemeKind scheme) {
+  if (scheme == SchemeKind::kYoshida6) return yoshida6();
+  return tripleJump();
+}
+
+}  // namespace detail
+
+/// Builds the entry for this system. `ddb-exp` truncates dexp^{-1} after ad^2, as in
+/// the paper's runs; `ddb-exp-exact` and every symmetric or composed exp method use the
+/// closed form (a truncated series breaks (dτ^{-1}_{-x})* = Ad*_{τ(x)} (dτ^{-1}_x)*,
+/// which symmetry needs). On fixed-size groups the DDB methods use the Lagrangian form
+/// when the system has a Lagrangian and the Hamiltonian form otherwise; on matrix groups
+/// always the Hamiltonian form with the matrix-free Legendre solver. Throws
+/// InvalidArgument naming the method if it does not apply.
+template <class G>
+std::unique_ptr<OneStepMethod<G>> makeMethod(const MethodInfo& method,
+                                             std::shared_ptr<const LiePoissonSystem<G>> system) {
+  const std::string name(method.name);
+  if ((method.groups & groupFamilyOf<G>()) == 0) detail::throwNotAMethod<G>(name);
+  if (method.needs_lagrangian && system->lagrangian() == nullptr) {
+    throwInvalid("method", name, "needs a Lagrangian, which '" + system->name() + "' has not");
+  }
+  LegendreForm form = LegendreForm::kHamiltonian;
+  if constexpr (!isDynamicGroup<G>) {
+    if (system->lagrangian()) form = LegendreForm::kLagrangian;
+  }
+  switch (method.kind) {
+    case MethodKind::kDdb:
+      return detail::withRetraction<G, Ddb>(method.retraction, system, form);
+    case MethodKind::kSymmetricDdb:
+      return detail::withRetraction<G, SymmetricDdb>(method.retraction, system, form);
+    case MethodKind::kPaperSymmetricDdb:
+      if constexpr (!isDynamicGroup<G>) {
+        return detail::withRetraction<G, PaperSymmetricDdb>(method.retraction, system);
+      }
+      break;
+    case MethodKind::kComposition: {
+      const MethodInfo* base = findMethod(method.base);
+      if (base == nullptr) throw std::logic_error("method table: no base for " + name);
+      return std::make_unique<Composition<G>>(name, makeMethod<G>(*base, system),
+                                              detail::schemeOf(method.scheme));
+    }
+    case MethodKind::kExplicitRk4:
+      return std::make_unique<ExplicitRungeKutta<G, 4>>(system, kClassicalRk4);
+    case MethodKind::kLobattoIIIC:
+      if constexpr (!isDynamicGroup<G>) {
+        return std::make_unique<ImplicitRungeKutta<G, 3>>(system, kLobattoIIIC3);
+      }
+      break;
+    case MethodKind::kReference:
+      return std::make_unique<ReferenceSolver<G>>(system);
+  }
+  throw std::logic_error("method table: " + name + " cannot be built on this group");
+}
+
+/// makeMethod for a name of the table; InvalidArgument naming it if it is not one.
+template <class G>
+std::unique_ptr<OneStepMethod<G>> makeMethod(std::string_view name,
+                                             std::shared_ptr<const LiePoissonSystem<G>> system) {
+  const MethodInfo* method = findMethod(name);
+  if (method == nullptr) detail::throwNotAMethod<G>(std::string(name));
+  return makeMethod<G>(*method, std::move(system));
+}
+
+}  // namespace ddb

@@ -1,0 +1,54 @@
+# Fails if any file includes one of the library's headers by a path that resolves only
+# inside this tree (README, "Layout"). The library folders sit at the top of the tree but
+# are installed under include/ddb/, so the one spelling that works in the tree, through
+# add_subdirectory and after find_package alike is <ddb/...>; <core/x.h>, "groups/x.h" or
+# include/ddb/... would resolve here only if the source root were on the include path.
+# Every <ddb/...> path must also name a header that exists, so a stale path fails too.
+#   cmake -DSOURCE_DIR=<tree> -P tests/check_includes.cmake
+if(NOT IS_DIRECTORY "${SOURCE_DIR}")
+  message(FATAL_ERROR "set SOURCE_DIR to the ddb source tree")
+endif()
+
+set(parts core groups systems integrators)
+set(library_globs ddb.h)
+foreach(part IN LISTS parts)
+  list(APPEND library_globs ${part}/*.h)
+endforeach()
+list(TRANSFORM library_globs PREPEND "${SOURCE_DIR}/")
+file(GLOB_RECURSE library_files RELATIVE "${SOURCE_DIR}" ${library_globs})
+set(user_globs)
+foreach(folder apps bench examples tests tools)
+  list(APPEND user_globs "${SOURCE_DIR}/${folder}/*.h" "${SOURCE_DIR}/${folder}/*.cc")
+endforeach()
+file(GLOB_RECURSE user_files RELATIVE "${SOURCE_DIR}" ${user_globs})
+
+set(errors "")
+foreach(file IN LISTS library_files user_files)
+  file(STRINGS "${SOURCE_DIR}/${file}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"]")
+  list(FIND library_files "${file}" in_library)
+  foreach(line IN LISTS lines)
+    string(REGEX MATCH "[<\"]([^>\"]+)[>\"]" _ "${line}")
+    set(path "${CMAKE_MATCH_1}")
+    if(path MATCHES "^(core|groups|systems|integrators|include)/" OR path STREQUAL "ddb.h")
+      string(APPEND errors "  ${file}: ${line}  (resolves only in the tree; write <ddb/...>)\n")
+    elseif(path MATCHES "^ddb/(.*)$")
+      if(NOT EXISTS "${SOURCE_DIR}/${CMAKE_MATCH_1}")
+        string(APPEND errors "  ${file}: ${line}  (no such header in the library)\n")
+      endif()
+    elseif(in_library GREATER -1 AND line MATCHES "\"")
+      # A quoted include in an installed header would search the header's own folder.
+      string(APPEND errors "  ${file}: ${line}  (library headers include <ddb/...>)\n")
+    endif()
+  endforeach()
+endforeach()
+
+list(LENGTH library_files library_count)
+list(LENGTH user_files user_count)
+if(library_count LESS 40)
+  message(FATAL_ERROR "found only ${library_count} library headers under ${SOURCE_DIR}")
+endif()
+if(errors)
+  message(FATAL_ERROR "includes that would break once installed:\n${errors}")
+endif()
+message(STATUS "${library_count} library headers and ${user_count} other sources include "
+               "the library as <ddb/...> only")

@@ -1,0 +1,112 @@
+// The method table (integrators/method_table.h) against what its methods do: each row
+// builds on exactly the groups it names, a row said to keep the Casimirs keeps them to
+// round-off on every group it runs on and a fixed-step row said not to drifts off the
+// orbit, compositions compose a symmetric method, and the text is fit for --help. The
+// orders the table claims are fitted in test_integrators.cc and test_symmetric.cc.
+#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/run.h>
+#include <ddb/systems/manakov_body.h>
+#include <ddb/systems/paper_scenarios.h>
+#include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_initial_conditions.h>
+#include <gmock/gmock.h>
+
+#include <set>
+
+namespace ddb::test {
+namespace {
+
+TEST(MethodTable, NamesAreUniqueAndDescriptionsAreOneLine) {
+  std::set<std::string_view> names;
+  for (const MethodInfo& m : kMethods) {
+    EXPECT_TRUE(names.insert(m.name).second) << m.name << " twice";
+    EXPECT_FALSE(m.description.empty()) << m.name;
+    EXPECT_EQ(m.description.find('\n'), std::string_view::npos) << m.name;
+    EXPECT_NE(m.groups, 0u) << m.name << " runs on no group";
+  }
+  ASSERT_EQ(methodDescriptions().size(), methodNames().size());
+  for (size_t i = 0; i < methodNames().size(); ++i) {
+    EXPECT_EQ(methodDescriptions()[i].first, methodNames()[i]);
+  }
+}
+
+TEST(MethodTable, CompositionsComposeASymmetricMethodOnTheSameGroups) {
+  for (const MethodInfo& m : kMethods) {
+    if (m.kind != MethodKind::kComposition) continue;
+    const MethodInfo* base = findMethod(m.base);
+    ASSERT_NE(base, nullptr) << m.name;
+    // Raising the order by a symmetric composition needs Φ_{−h} = Φ_h⁻¹ (conventions.md §2).
+    EXPECT_EQ(base->kind, MethodKind::kSymmetricDdb) << m.name;
+    EXPECT_EQ(base->groups & m.groups, m.groups) << m.name;
+    EXPECT_EQ(base->keeps_casimirs, m.keeps_casimirs) << m.name;
+  }
+}
+
+/// ‖C(μ_K) − C(μ₀)‖/‖C(μ₀)‖ after `steps` steps of h.
+template <class G>
+double casimirDrift(OneStepMethod<G>& method, const LiePoissonSystem<G>& system,
+                    const typename G::template Dual<double>& mu0, double h, long steps) {
+  const RunResult<G> run = runMethod(method, system, mu0, h, steps);
+  EXPECT_TRUE(run.ok()) << method.name() << ": " << run.failure;
+  const auto c0 = system.casimirs(mu0);
+  return (system.casimirs(run.final) - c0).norm() / c0.norm();
+}
+
+/// Every row builds on G iff the table names G's family, and its Casimir claim holds.
+template <class G>
+void checkRows(std::shared_ptr<const LiePoissonSystem<G>> system,
+               const typename G::template Dual<double>& mu0, double h) {
+  for (const MethodInfo& m : kMethods) {
+    const bool runs_here = (m.groups & groupFamilyOf<G>()) != 0;
+    if (!methodApplies(m, *system)) {
+      EXPECT_THROW(makeMethod<G>(m, system), InvalidArgument) << m.name << " on " << G::kName;
+      continue;
+    }
+    ASSERT_TRUE(runs_here);
+    auto method = makeMethod<G>(m, system);
+    ASSERT_NE(method, nullptr) << m.name;
+    if (m.kind == MethodKind::kReference) continue;  // adaptive: near the orbit by accuracy
+    const double drift = casimirDrift(*method, *system, mu0, h, 40);
+    if (m.keeps_casimirs) {
+      EXPECT_LT(drift, 1e-13) << m.name << " on " << G::kName;
+    } else {
+      EXPECT_GT(drift, 1e-10) << m.name << " on " << G::kName << " keeps the Casimirs";
+    }
+  }
+}
+
+TEST(MethodTable, RowsMatchWhatTheMethodsDoOnSO3) {
+  const RigidBodyScenario& a = rigidBodyScenario("A");
+  checkRows<SO3>(a.system(), a.mu0(), 0.2);
+}
+
+TEST(MethodTable, RowsMatchWhatTheMethodsDoOnSE3WithoutALagrangian) {
+  const HeavyTopSetup top;
+  ASSERT_EQ(top.system()->lagrangian(), nullptr);
+  checkRows<SE3>(top.system(), top.mu0, 0.2);
+  EXPECT_FALSE(methodApplies("sddb-paper-cay", *top.system()));
+}
+
+TEST(MethodTable, RowsMatchWhatTheMethodsDoOnSUN) {
+  checkRows<SUN>(makeZeitlinFluid(6, 0.5), randomVorticity(6, 3), 0.05);
+}
+
+TEST(MethodTable, RowsMatchWhatTheMethodsDoOnSON) {
+  const Eigen::VectorXd J = Eigen::VectorXd::LinSpaced(4, 1.0, 2.5);
+  Eigen::MatrixXd M0 = Eigen::MatrixXd::Random(4, 4);
+  M0 = (M0 - M0.transpose()).eval();
+  checkRows<SON>(makeManakovBody(J, 0.5), M0, 0.2);
+}
+
+TEST(MethodTable, NamesNotInTheTableAreRefusedByName) {
+  const RigidBodyScenario& a = rigidBodyScenario("A");
+  EXPECT_THAT([&] { makeMethod<SO3>("ddb-cayley", a.system()); },
+              ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("ddb-cayley")));
+  EXPECT_THAT([&] { makeMethod<SUN>("lobatto3c", makeZeitlinFluid(4, 0.5)); },
+              ::testing::ThrowsMessage<InvalidArgument>(
+                  ::testing::HasSubstr("ddb-cay, sddb-cay, ddb4-cay, rk4, reference")));
+  EXPECT_FALSE(methodApplies("ddb-cayley", *a.system()));
+}
+
+}  // namespace
+}  // namespace ddb::test
