@@ -1,7 +1,6 @@
 // GroupTraits: what a group is made of, read from the group alone, and a check of the
-// minimum API of core/lie_group.h with one message per missing member (manif checks a
-// group the same way), so that a group lacking e.g. dualVee fails at the door, not deep
-// inside an integrator's instantiation.
+// minimum API of core/lie_group.h with one message per missing member, so that a group
+// lacking e.g. dualVee fails at the door, not deep inside an integrator's instantiation.
 //
 // A group is "dynamic" when its algebra elements are runtime-sized N×N matrices
 // (kDim == Eigen::Dynamic: SO(N), SU(N)); the integrators choose their matrix-free

@@ -13,9 +13,9 @@
 
 namespace ddb {
 
+/// The step fractions γ_1..γ_s of a symmetric composition (their order is the method
+/// table's, integrators/method_table.h).
 struct CompositionScheme {
-  const char* name;
-  int order;  // for a symmetric base method of order 2
   std::vector<double> coefficients;
 };
 
@@ -23,7 +23,7 @@ struct CompositionScheme {
 inline const CompositionScheme& tripleJump() {
   static const CompositionScheme scheme = [] {
     const double g = 1.0 / (2.0 - std::cbrt(2.0));
-    return CompositionScheme{"triple-jump", 4, {g, 1.0 - 2.0 * g, g}};
+    return CompositionScheme{{g, 1.0 - 2.0 * g, g}};
   }();
   return scheme;
 }
@@ -35,7 +35,7 @@ inline const CompositionScheme& yoshida6() {
   static const CompositionScheme scheme = [] {
     const double w1 = -1.17767998417887, w2 = 0.235573213359357, w3 = 0.784513610477560;
     const double w0 = 1.0 - 2.0 * (w1 + w2 + w3);
-    return CompositionScheme{"yoshida6", 6, {w3, w2, w1, w0, w1, w2, w3}};
+    return CompositionScheme{{w3, w2, w1, w0, w1, w2, w3}};
   }();
   return scheme;
 }

@@ -6,13 +6,10 @@
 // obey a linear recurrence, so the next correction is predicted by one (linear prediction):
 //   c_{k+1} ≈ Σ_{j=1..m} β_j c_{k+1−j},  β = argmin ‖c_k − Σ_j β_j c_{k−j}‖,
 // with m ≤ kOrder real coefficients fitted to the newest corrections. A polynomial
-// extrapolation of degree m − 1 is the special case β_j = (−1)^{j+1} C(m, j): on the
-// benchmark's Euler fluid it reaches 9e-13 relative at m = 6 where the fit reaches 1e-13;
-// with dissipation at N = 256 the fast modes make polynomials of every degree worse than
-// 1e-6 where the fit reaches 2e-9. kOrder = 8 against 6 took the benchmark's steps from
-// 2.17 to 1.85 sweeps with dissipation and from one sweep and a refinement to one sweep
-// without; 12 saved little more for four more stored corrections (docs/design.md,
-// "Measured, and what it decided").
+// extrapolation of degree m − 1 is the special case β_j = (−1)^{j+1} C(m, j); with
+// dissipation the fast modes decay geometrically, which no polynomial follows and a fitted
+// recurrence does. The errors of both and the choice kOrder = 8 are measured in
+// docs/design.md ("The initial guess: linear prediction").
 // The fit is a least-squares problem of m unknowns on a sketch, a fixed sample of entries,
 // so it costs O(sample·m²), not O(N²) per coefficient; the prediction reads m corrections.
 #pragma once

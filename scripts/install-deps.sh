@@ -3,7 +3,7 @@
 # Skips apt-get entirely when everything is already present.
 set -euo pipefail
 packages=(cmake g++ make libeigen3-dev libceres-dev libspdlog-dev libgtest-dev libgmock-dev
-          libbenchmark-dev libboost-dev libcli11-dev libopenblas-dev python3-matplotlib
+          libbenchmark-dev libboost-dev libcli11-dev libopenblas-dev liblapacke-dev python3-matplotlib
           python3-scipy)
 missing=()
 for p in "${packages[@]}"; do

@@ -14,7 +14,6 @@
 namespace ddb {
 
 namespace detail {
-/// ½ Σ_i w_i x_i² in any scalar type (the quadratic form of a diagonal tensor).
 /// (𝕀, 𝕄) stacked: the diagonal of the Lagrangian's quadratic form.
 inline Eigen::Matrix<double, 6, 1> kirchhoffWeights(const Eigen::Vector3d& inertia,
                                                     const Eigen::Vector3d& mass) {
@@ -22,6 +21,7 @@ inline Eigen::Matrix<double, 6, 1> kirchhoffWeights(const Eigen::Vector3d& inert
           requirePositive("mass", mass))
       .finished();
 }
+/// ½ Σ_i w_i x_i² in any scalar type (the quadratic form of a diagonal tensor).
 template <class T, class Weights>
 T halfWeightedSquares(const Eigen::Matrix<T, 6, 1>& x, const Weights& w) {
   T sum = constant<T>(0.0);

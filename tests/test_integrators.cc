@@ -7,6 +7,9 @@
 #include <ddb/systems/rigid_body.h>
 #include <gmock/gmock.h>
 
+#include <array>
+#include <cmath>
+
 #include "order_fit.h"
 #include "test_support.h"
 
@@ -222,6 +225,49 @@ TEST(Integrate, RejectsBadInputNamingIt) {
               ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("h = -0.1")));
   EXPECT_THAT([&] { integrate(rk4, kM0, 0.0, INFINITY, 1, ignore); },
               ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("h = inf")));
+}
+
+/// The Butcher order conditions of the rooted trees up to order 4 (Hairer, Nørsett, Wanner I,
+/// II.2, Table 2.2), and c = A·1; then the bushy tree of order 5, Σ b c⁴ = 1/5, which
+/// a method of order exactly 4 misses.
+template <int S>
+void expectOrderFour(const ButcherTableau<S>& t) {
+  std::array<double, S> ac{}, ac2{}, aac{};
+  for (int i = 0; i < S; ++i) {
+    double row = 0.0;
+    for (int j = 0; j < S; ++j) {
+      row += t.a[i][j];
+      ac[i] += t.a[i][j] * t.c[j];
+      ac2[i] += t.a[i][j] * t.c[j] * t.c[j];
+    }
+    EXPECT_NEAR(t.c[i], row, 1e-15) << t.name << " c_" << i;
+  }
+  for (int i = 0; i < S; ++i)
+    for (int j = 0; j < S; ++j) aac[i] += t.a[i][j] * ac[j];
+  const auto sum = [&](auto term) {
+    double total = 0.0;
+    for (int i = 0; i < S; ++i) total += t.b[i] * term(i);
+    return total;
+  };
+  const auto c = [&](int i, int p) { return std::pow(t.c[i], p); };
+  EXPECT_NEAR(sum([&](int) { return 1.0; }), 1.0, 1e-15) << t.name;
+  EXPECT_NEAR(sum([&](int i) { return c(i, 1); }), 1.0 / 2, 1e-15) << t.name;
+  EXPECT_NEAR(sum([&](int i) { return c(i, 2); }), 1.0 / 3, 1e-15) << t.name;
+  EXPECT_NEAR(sum([&](int i) { return ac[i]; }), 1.0 / 6, 1e-15) << t.name;
+  EXPECT_NEAR(sum([&](int i) { return c(i, 3); }), 1.0 / 4, 1e-15) << t.name;
+  EXPECT_NEAR(sum([&](int i) { return c(i, 1) * ac[i]; }), 1.0 / 8, 1e-15) << t.name;
+  EXPECT_NEAR(sum([&](int i) { return ac2[i]; }), 1.0 / 12, 1e-15) << t.name;
+  EXPECT_NEAR(sum([&](int i) { return aac[i]; }), 1.0 / 24, 1e-15) << t.name;
+  EXPECT_GT(std::abs(sum([&](int i) { return c(i, 4); }) - 1.0 / 5), 1e-3) << t.name;
+}
+
+TEST(ButcherTableau, TableausHaveTheOrderTheMethodTableClaims) {
+  ASSERT_EQ(findMethod("rk4")->order, 4);
+  ASSERT_EQ(findMethod("lobatto3c")->order, 4);
+  expectOrderFour(kClassicalRk4);
+  expectOrderFour(kLobattoIIIC3);
+  EXPECT_TRUE(kClassicalRk4.isExplicit());
+  EXPECT_FALSE(kLobattoIIIC3.isExplicit());
 }
 
 TEST(RunMethod, SinkSeesEveryKthStateAndTheLastWithDriftOverAllStates) {

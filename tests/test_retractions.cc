@@ -5,6 +5,7 @@
 #include <type_traits>
 #include <unsupported/Eigen/MatrixFunctions>
 
+#include "order_fit.h"
 #include "test_support.h"
 
 namespace ddb::test {
@@ -131,24 +132,16 @@ TEST(TruncatedExponential, ErrorShrinksLikeFirstOmittedPower) {
   for (int order = 1; order <= 6; ++order) {
     TruncatedExponential<SO3> truncated(order);
     Exponential<SO3> exact;
-    std::vector<double> lx, le;
-    for (double r : {1.0, 0.7, 0.5, 0.35, 0.25, 0.18, 0.125, 0.09}) {
+    const std::vector<double> radii{1.0, 0.7, 0.5, 0.35, 0.25, 0.18, 0.125, 0.09};
+    std::vector<double> errors;
+    for (double r : radii) {
       const Eigen::Vector3d x = r * direction;
-      const double error = (truncated.dTauInverseDual(x, mu) - exact.dTauInverseDual(x, mu)).norm();
-      if (error < 1e-13) continue;  // round-off plateau
-      lx.push_back(std::log(r));
-      le.push_back(std::log(error));
+      errors.push_back((truncated.dTauInverseDual(x, mu) - exact.dTauInverseDual(x, mu)).norm());
     }
-    ASSERT_GE(lx.size(), 4u) << "order " << order;
-    const double mx = std::accumulate(lx.begin(), lx.end(), 0.0) / lx.size();
-    const double me = std::accumulate(le.begin(), le.end(), 0.0) / le.size();
-    double sxy = 0, sxx = 0;
-    for (size_t i = 0; i < lx.size(); ++i) {
-      sxy += (lx[i] - mx) * (le[i] - me);
-      sxx += (lx[i] - mx) * (lx[i] - mx);
-    }
+    const OrderFit fit = fitOrder(radii, errors);  // round-off plateau (< 1e-13) dropped
+    ASSERT_GE(fit.points, 4) << "order " << order;
     const int expected = (order + 1) % 2 == 0 ? order + 1 : order + 2;
-    EXPECT_NEAR(sxy / sxx, expected, 0.1) << "order " << order;
+    EXPECT_NEAR(fit.slope, expected, 0.1) << "order " << order;
   }
 }
 

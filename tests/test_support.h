@@ -1,5 +1,5 @@
 // Shared helpers for the test suite: seeded random samples and the type lists of
-// the generic suites. Adding a group: one entry in kGroups-style lists below.
+// the generic suites. Adding a group: one entry in GroupsWith below.
 #pragma once
 
 #include <ddb/core/group_traits.h>

@@ -2,9 +2,9 @@
 // its pivots and workspace allocated when a size first appears, then reused (no
 // allocation per call). The Cayley transport of the matrix groups inverts I − x once or
 // twice per step (docs/conventions.md §4). With DDB_USE_LAPACK (set by the build when a
-// LAPACK is found next to the BLAS) it calls ?getrf + ?getri: with Debian's OpenBLAS that is
-// 1.4 complex N×N products at N = 256, against 3.0 for Eigen's own LU and solve against the
-// identity, which is the fallback (docs/design.md, "Measured, and what it decided").
+// LAPACK and LAPACKE are found next to the BLAS) it calls ?getrf + ?getri, which with Debian's
+// OpenBLAS costs half of Eigen's own LU and solve against the identity, the fallback
+// (docs/design.md, "Measured, and what it decided").
 #pragma once
 
 #include <Eigen/Core>
@@ -15,15 +15,12 @@
 #include <vector>
 
 #ifdef DDB_USE_LAPACK
-extern "C" {
-void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
-void dgetri_(const int* n, double* a, const int* lda, const int* ipiv, double* work,
-             const int* lwork, int* info);
-void zgetrf_(const int* m, const int* n, std::complex<double>* a, const int* lda, int* ipiv,
-             int* info);
-void zgetri_(const int* n, std::complex<double>* a, const int* lda, const int* ipiv,
-             std::complex<double>* work, const int* lwork, int* info);
-}
+// LAPACKE's own prototypes (Debian liblapacke-dev), so the integer width (lapack_int) and
+// the complex type are the ones the LAPACK was built with, never a guess of ours.
+#ifndef lapack_complex_double
+#define lapack_complex_double std::complex<double>
+#endif
+#include <lapacke.h>
 #endif
 
 namespace ddb {
@@ -39,17 +36,21 @@ class DenseInverse {
   bool invert(Matrix& A) {
     allocate(A.rows());
 #ifdef DDB_USE_LAPACK
-    const int n = static_cast<int>(A.rows());
-    const int lwork = static_cast<int>(work_.size());
-    int info = 0;
+    // The _work variants with column-major storage call ?getrf/?getri directly: no copy,
+    // no NaN scan, no workspace allocation.
+    const auto n = static_cast<lapack_int>(A.rows());
+    const auto lwork = static_cast<lapack_int>(work_.size());
+    lapack_int info = 0;
     if constexpr (std::is_same_v<Scalar, double>) {
-      dgetrf_(&n, &n, A.data(), &n, pivots_.data(), &info);
+      info = LAPACKE_dgetrf_work(LAPACK_COL_MAJOR, n, n, A.data(), n, pivots_.data());
       if (info != 0) return false;
-      dgetri_(&n, A.data(), &n, pivots_.data(), work_.data(), &lwork, &info);
+      info = LAPACKE_dgetri_work(LAPACK_COL_MAJOR, n, A.data(), n, pivots_.data(), work_.data(),
+                                 lwork);
     } else {
-      zgetrf_(&n, &n, A.data(), &n, pivots_.data(), &info);
+      info = LAPACKE_zgetrf_work(LAPACK_COL_MAJOR, n, n, A.data(), n, pivots_.data());
       if (info != 0) return false;
-      zgetri_(&n, A.data(), &n, pivots_.data(), work_.data(), &lwork, &info);
+      info = LAPACKE_zgetri_work(LAPACK_COL_MAJOR, n, A.data(), n, pivots_.data(), work_.data(),
+                                 lwork);
     }
     return info == 0;
 #else
@@ -69,13 +70,12 @@ class DenseInverse {
     pivots_.assign(static_cast<std::size_t>(n), 0);
     // ?getri's workspace: the size it asks for in a query (lwork = −1).
     Matrix probe = Matrix::Identity(n, n);
-    const int m = static_cast<int>(n), query = -1;
-    int info = 0;
+    const auto m = static_cast<lapack_int>(n);
     Scalar optimal = 0;
     if constexpr (std::is_same_v<Scalar, double>) {
-      dgetri_(&m, probe.data(), &m, pivots_.data(), &optimal, &query, &info);
+      LAPACKE_dgetri_work(LAPACK_COL_MAJOR, m, probe.data(), m, pivots_.data(), &optimal, -1);
     } else {
-      zgetri_(&m, probe.data(), &m, pivots_.data(), &optimal, &query, &info);
+      LAPACKE_zgetri_work(LAPACK_COL_MAJOR, m, probe.data(), m, pivots_.data(), &optimal, -1);
     }
     work_.assign(static_cast<std::size_t>(std::max(std::real(optimal), double(n))), Scalar(0));
 #else
@@ -86,7 +86,7 @@ class DenseInverse {
 
   Eigen::Index size_ = -1;
 #ifdef DDB_USE_LAPACK
-  std::vector<int> pivots_;
+  std::vector<lapack_int> pivots_;
   std::vector<Scalar> work_;
 #else
   Eigen::PartialPivLU<Matrix> lu_;

@@ -8,12 +8,21 @@
 
 #include <ceres/tiny_solver.h>
 #include <ceres/tiny_solver_autodiff_function.h>
+#include <ceres/version.h>
 #include <ddb/core/errors.h>
 
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <cmath>
 #include <type_traits>
+
+// runChordIterations below drives TinySolver one LM iteration per Solve and reads its state
+// between Solves (function_tolerance = ∞ ends a Solve right after its step; final_cost is
+// the cost at the returned point). That is how Ceres 2.1's TinySolver behaves, and the only
+// version this was tested with; another would need the chord loop checked again
+// (tests/test_legendre_solver.cc), so it is refused here rather than trusted silently.
+static_assert(CERES_VERSION_MAJOR == 2 && CERES_VERSION_MINOR == 1,
+              "ddb's chord iterations rely on Ceres 2.1's TinySolver (core/detail/tiny_solver.h)");
 
 namespace ddb {
 
@@ -54,8 +63,8 @@ struct SmallInverseSolver {
 /// For even n ≤ 8 (the 6 × 6 of SE(3)), block elimination on a = [[A, B], [Bᵀ, C]] with the
 /// closed-form inverses of A and of the Schur complement S = C − Bᵀ A⁻¹ B (both SPD as a is):
 /// two divisions and independent multiply-adds. A Cholesky factorisation chains six square
-/// roots and divisions with its substitutions, and took 17% of a heavy-top DDB step (perf,
-/// docs/design.md); Eigen's LLT, out of line at run-time block sizes, 14%.
+/// roots and divisions with its substitutions, and Eigen's LLT is out of line at run-time
+/// block sizes; both cost a heavy-top DDB step more (docs/design.md, "Small Legendre solves").
 template <int N>
 struct SchurComplementSolver {
   static constexpr int kHalf = N / 2;
