@@ -12,6 +12,7 @@
 #include <ddb/core/lie_group.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/core/retraction.h>
+#include <ddb/core/solver_options.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/exponential.h>
 #include <ddb/groups/se3.h>

@@ -1,4 +1,4 @@
-// One step (h = 0.1) of every registry method on the rigid body of Scenario A and on
+// One step (h = 0.1) of every method of the method table on the rigid body of Scenario A and on
 // the default heavy top (systems/paper_scenarios.h), named rigid_body/<method> and
 // heavy_top/<method> (docs/file-formats.md), with Boost.Odeint's runge_kutta4 on the same vector
 // field as the peer `rigid_body/odeint-rk4`, and RK4 written out by hand as the floor
@@ -77,7 +77,7 @@ std::function<const LegendreStats*()> statsReader(const OneStepMethod<G>& method
   return statsReaderFor<G, TruncatedExponential<G>>(method);
 }
 
-// One benchmark per applicable registry method, named <prefix>/<method>.
+// One benchmark per applicable method of the table, named <prefix>/<method>.
 template <class G>
 void registerMethods(const std::string& prefix, std::shared_ptr<const LiePoissonSystem<G>> system,
                      const typename G::template Dual<double>& mu0) {

@@ -113,9 +113,10 @@ void registerZeitlinBenchmarks() {
     const std::string size = "/" + std::to_string(n);
     benchmark::RegisterBenchmark(("zeitlin/gemm" + size).c_str(), product, n)
         ->Unit(benchmark::kMicrosecond);
-    for (const char* method : {"ddb-cay", "sddb-cay", "rk4"}) {
-      benchmark::RegisterBenchmark(("zeitlin/" + std::string(method) + size).c_str(), stepFluid,
-                                   std::string(method), 0.5, n)
+    for (const MethodInfo& info : kMethods) {  // the table's matrix-group methods
+      if ((info.groups & kMatrixGroups) == 0 || info.kind == MethodKind::kReference) continue;
+      const std::string method(info.name);
+      benchmark::RegisterBenchmark(("zeitlin/" + method + size).c_str(), stepFluid, method, 0.5, n)
           ->Unit(benchmark::kMicrosecond);
     }
     benchmark::RegisterBenchmark(("zeitlin-euler/ddb-cay" + size).c_str(), stepFluid,

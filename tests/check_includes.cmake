@@ -5,6 +5,7 @@
 # include/ddb/... would resolve here only if the source root were on the include path.
 # Every <ddb/...> path must also name a header that exists, so a stale path fails too.
 #   cmake -DSOURCE_DIR=<tree> -P tests/check_includes.cmake
+cmake_policy(SET CMP0009 NEW)  # globs do not follow links (the build tree has some)
 if(NOT IS_DIRECTORY "${SOURCE_DIR}")
   message(FATAL_ERROR "set SOURCE_DIR to the ddb source tree")
 endif()
@@ -24,20 +25,38 @@ file(GLOB_RECURSE user_files RELATIVE "${SOURCE_DIR}" ${user_globs})
 
 set(errors "")
 foreach(file IN LISTS library_files user_files)
-  file(STRINGS "${SOURCE_DIR}/${file}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"]")
+  # #include lines and __has_include tests, with <...> or "..." paths.
+  file(STRINGS "${SOURCE_DIR}/${file}" lines
+       REGEX "(^[ \t]*#[ \t]*include[ \t]*[<\"])|(__has_include[ \t]*\\([ \t]*[<\"])")
   list(FIND library_files "${file}" in_library)
+  get_filename_component(folder "${SOURCE_DIR}/${file}" DIRECTORY)
   foreach(line IN LISTS lines)
     string(REGEX MATCH "[<\"]([^>\"]+)[>\"]" _ "${line}")
     set(path "${CMAKE_MATCH_1}")
     if(path MATCHES "^(core|groups|systems|integrators|include)/" OR path STREQUAL "ddb.h")
       string(APPEND errors "  ${file}: ${line}  (resolves only in the tree; write <ddb/...>)\n")
     elseif(path MATCHES "^ddb/(.*)$")
-      if(NOT EXISTS "${SOURCE_DIR}/${CMAKE_MATCH_1}")
+      # Installed, include/ddb/ holds the four folders and ddb.h, nothing else of the tree.
+      set(rest "${CMAKE_MATCH_1}")
+      if(NOT rest MATCHES "^(core|groups|systems|integrators)/" AND NOT rest STREQUAL "ddb.h")
+        string(APPEND errors "  ${file}: ${line}  (not a library header: <ddb/core|groups|"
+                             "systems|integrators/...> or <ddb/ddb.h>)\n")
+      elseif(NOT EXISTS "${SOURCE_DIR}/${rest}")
         string(APPEND errors "  ${file}: ${line}  (no such header in the library)\n")
       endif()
-    elseif(in_library GREATER -1 AND line MATCHES "\"")
-      # A quoted include in an installed header would search the header's own folder.
-      string(APPEND errors "  ${file}: ${line}  (library headers include <ddb/...>)\n")
+    elseif(line MATCHES "\"")
+      if(in_library GREATER -1)
+        # A quoted include in an installed header would search the header's own folder.
+        string(APPEND errors "  ${file}: ${line}  (library headers include <ddb/...>)\n")
+      else()
+        # A relative path into a library folder ("../core/x.h") works only in the tree.
+        get_filename_component(target "${folder}/${path}" ABSOLUTE)
+        file(RELATIVE_PATH relative "${SOURCE_DIR}" "${target}")
+        if(relative MATCHES "^(core|groups|systems|integrators)/" OR relative STREQUAL "ddb.h")
+          string(APPEND errors "  ${file}: ${line}  (a relative path into the library; write "
+                               "<ddb/${relative}>)\n")
+        endif()
+      endif()
     endif()
   endforeach()
 endforeach()

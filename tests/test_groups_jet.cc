@@ -125,7 +125,7 @@ TYPED_TEST(GroupOnScalarTest, ClosedFormsAgreeWithGenericBase) {
     EXPECT_LT(largest((G::cayTransport(x, y, mu) - Base::cayTransport(x, y, mu)).eval()), kTight)
         << scale;
     if (!std::is_same_v<typename TestFixture::T, Jet> || scale > 0.05) {
-      // On Jets, below θ = 0.05 see DexpJetDerivativeLosesDigitsBelowTheSeriesBranch.
+      // On Jets, below θ = 0.05 see DexpJetDerivativeLosesDigitsAboveItsTaylorThreshold.
       EXPECT_LT(largest((G::dexp(x, y) - Base::dexp(x, y)).eval()), 1e-12) << scale;
     }
     EXPECT_LT(largest((G::dexpInvDual(x, mu) - Base::dexpInvDual(x, mu)).eval()), 1e-12) << scale;
@@ -183,21 +183,22 @@ void checkSolveDerivatives() {
 }
 
 // A known defect, kept visible: SO3::dexp switches to its Taylor series only below
-// θ² = 1e-8, and above it (θ − sin θ)/θ³ cancels; the values stay good to round-off (the
-// factor multiplies θ²), their Jet derivatives do not. The closed form and its branch
-// decide every exp trajectory on SE(3) bit for bit, so the threshold moves with a release
-// that may change trajectories; only Newton Jacobians (sddb-exp on SE(3)) see the error,
-// not results. Against the generic series on Jets (accurate there), at θ = 5e-4 and 2e-3:
-TEST(GroupJets, DexpJetDerivativeLosesDigitsBelowTheSeriesBranch) {
+// θ² = 1e-8, and just above it (θ − sin θ)/θ³ cancels; the values stay good to round-off
+// (the factor multiplies θ²), their Jet derivatives do not (docs/design.md, "Jets"). The
+// closed form and its branch decide every exp trajectory on SE(3) bit for bit, so the
+// threshold moves with a release that may change trajectories; only Newton Jacobians
+// (sddb-exp on SE(3)) see the error, not results. Against the generic series on Jets
+// (accurate there), where the loss is large enough not to depend on libm's rounding:
+TEST(GroupJets, DexpJetDerivativeLosesDigitsAboveItsTaylorThreshold) {
   using Base = LieGroupBase<SO3>;
-  for (double theta : {5e-4, 2e-3}) {
+  for (double theta : {1.5e-4, 5e-4}) {
     Eigen::Matrix<Jet, 3, 1> x, y;
     for (int i = 0; i < 3; ++i) {
       x(i) = Jet(theta * (i + 1) / std::sqrt(14.0), i);
       y(i) = Jet(0.3 * i - 0.4);
     }
     const double error = largest((SO3::dexp(x, y) - Base::dexp(x, y)).eval());
-    EXPECT_GT(error, 1e-12) << theta << ": fixed? then drop this test and the exclusion above";
+    EXPECT_GT(error, 1e-11) << theta << ": fixed? then drop this test and the exclusion above";
     EXPECT_LT(error, 1e-8) << theta;
   }
 }

@@ -58,10 +58,10 @@ class Draw {
   std::mt19937_64 rng_;
 };
 
-/// At least this share of the runs must complete: every system completes 71% to 84% of its
+/// At least this share of the runs must complete: every system completes 64% to 83% of its
 /// sets (docs/reliability.md §3), so a regression to "every run throws a SolveFailure",
 /// which each run alone would accept, fails the suite.
-constexpr double kMinimumCompletedShare = 0.6;
+constexpr double kMinimumCompletedShare = 0.5;
 
 /// Outcome counts by kind; prints and records them at the end of a suite, and checks the
 /// share of completed runs.
@@ -114,8 +114,17 @@ std::string runOne(OneStepMethod<G>& method, const typename G::template Dual<dou
   return kind;
 }
 
-const std::vector<std::string> kSmallMethods{"ddb-cay",  "ddb-exp",  "ddb-exp-exact", "sddb-cay",
-                                             "sddb-exp", "ddb4-cay", "ddb4-exp",      "ddb6-exp"};
+/// The DDB methods of the table that run on `families` and need no Lagrangian, in table order.
+std::vector<std::string> ddbMethods(unsigned families) {
+  std::vector<std::string> names;
+  for (const MethodInfo& m : kMethods) {
+    if ((m.groups & families) != 0 && m.keeps_casimirs && !m.needs_lagrangian) {
+      names.emplace_back(m.name);
+    }
+  }
+  return names;
+}
+const std::vector<std::string> kSmallMethods = ddbMethods(kFixedSizeGroups);
 
 std::string describe(const std::string& method, double alpha, double h, int i) {
   std::ostringstream os;
@@ -211,7 +220,7 @@ double spectrumDrift(const Eigen::VectorXd& spectrum0,
   return (G::casimirs(mu) - spectrum0).cwiseAbs().maxCoeff() / spectrum0.cwiseAbs().maxCoeff();
 }
 
-const std::vector<std::string> kMatrixMethods{"ddb-cay", "sddb-cay", "ddb4-cay"};
+const std::vector<std::string> kMatrixMethods = ddbMethods(kMatrixGroups);
 
 /// 1000 sets at N = 3, 4, 5; make(draw, n, alpha) returns the system and μ₀.
 template <class G, class Make>

@@ -15,11 +15,9 @@
 #include <vector>
 
 #ifdef DDB_USE_LAPACK
-// LAPACKE's own prototypes (Debian liblapacke-dev), so the integer width (lapack_int) and
-// the complex type are the ones the LAPACK was built with, never a guess of ours.
-#ifndef lapack_complex_double
-#define lapack_complex_double std::complex<double>
-#endif
+// LAPACKE's own prototypes (Debian liblapacke-dev) instead of hand-declared ones: the integer
+// type is its lapack_int (set by LAPACK_ILP64, as the LAPACK it is built against needs), and
+// its complex type, whatever an includer chose, is layout-compatible with std::complex.
 #include <lapacke.h>
 #endif
 
@@ -47,10 +45,10 @@ class DenseInverse {
       info = LAPACKE_dgetri_work(LAPACK_COL_MAJOR, n, A.data(), n, pivots_.data(), work_.data(),
                                  lwork);
     } else {
-      info = LAPACKE_zgetrf_work(LAPACK_COL_MAJOR, n, n, A.data(), n, pivots_.data());
+      info = LAPACKE_zgetrf_work(LAPACK_COL_MAJOR, n, n, lapackData(A.data()), n, pivots_.data());
       if (info != 0) return false;
-      info = LAPACKE_zgetri_work(LAPACK_COL_MAJOR, n, A.data(), n, pivots_.data(), work_.data(),
-                                 lwork);
+      info = LAPACKE_zgetri_work(LAPACK_COL_MAJOR, n, lapackData(A.data()), n, pivots_.data(),
+                                 lapackData(work_.data()), lwork);
     }
     return info == 0;
 #else
@@ -63,6 +61,11 @@ class DenseInverse {
   }
 
  private:
+#ifdef DDB_USE_LAPACK
+  static lapack_complex_double* lapackData(std::complex<double>* z) {
+    return reinterpret_cast<lapack_complex_double*>(z);
+  }
+#endif
   void allocate(Eigen::Index n) {
     if (size_ == n) return;
     size_ = n;
@@ -75,7 +78,8 @@ class DenseInverse {
     if constexpr (std::is_same_v<Scalar, double>) {
       LAPACKE_dgetri_work(LAPACK_COL_MAJOR, m, probe.data(), m, pivots_.data(), &optimal, -1);
     } else {
-      LAPACKE_zgetri_work(LAPACK_COL_MAJOR, m, probe.data(), m, pivots_.data(), &optimal, -1);
+      LAPACKE_zgetri_work(LAPACK_COL_MAJOR, m, lapackData(probe.data()), m, pivots_.data(),
+                          lapackData(&optimal), -1);
     }
     work_.assign(static_cast<std::size_t>(std::max(std::real(optimal), double(n))), Scalar(0));
 #else

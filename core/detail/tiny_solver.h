@@ -10,6 +10,7 @@
 #include <ceres/tiny_solver_autodiff_function.h>
 #include <ceres/version.h>
 #include <ddb/core/errors.h>
+#include <ddb/core/solver_options.h>
 
 #include <Eigen/Core>
 #include <Eigen/LU>
@@ -25,16 +26,6 @@ static_assert(CERES_VERSION_MAJOR == 2 && CERES_VERSION_MINOR == 1,
               "ddb's chord iterations rely on Ceres 2.1's TinySolver (core/detail/tiny_solver.h)");
 
 namespace ddb {
-
-struct SolverOptions {
-  /// Relative residual tolerance (1e-14: round-off level for O(1) data).
-  double relative_tolerance = 1e-14;
-  int max_iterations = 30;
-  /// Fixed-point sweeps at most before Newton in a small Legendre solve (integrators/legendre.h);
-  /// 0: Newton from the extrapolated guess at once (always so when ∂H/∂μ is itself a solve,
-  /// Hamiltonian::gradientIsASolve). Negative counts as 0.
-  int max_sweeps = 10;
-};
 
 /// What one solve took: Newton (Levenberg–Marquardt) iterations, the final ‖r‖, and
 /// whether ‖r‖ met the relative tolerance.
