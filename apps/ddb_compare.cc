@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <string_view>
 
@@ -65,9 +64,7 @@ template <class Derived>
 std::string shortList(const Eigen::DenseBase<Derived>& v) {
   std::string s;
   for (Eigen::Index i = 0; i < v.size(); ++i) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%s%.6g", i ? "," : "", v.derived()(i));
-    s += buffer;
+    s += (i ? "," : "") + app::number(v.derived()(i), std::chars_format::general, 6);
   }
   return s;
 }
@@ -537,10 +534,9 @@ int compare(const Options& o, const Settings& s, const Problem<G>& problem) {
           .add("runtime_s", runtime)
           .add("timed_runs", static_cast<long>(timed_runs));
       runtime_table.add(name, runtime);
-      char row[256];
-      std::snprintf(row, sizeof row, "| %s | %.4g | %.3e | %.3e |\n", name.c_str(), runtime,
-                    err_final, run.casimir_drift);
-      table += row;
+      table += "| " + name + " | " + app::number(runtime, std::chars_format::general, 4) + " | " +
+               app::number(err_final, std::chars_format::scientific, 3) + " | " +
+               app::number(run.casimir_drift, std::chars_format::scientific, 3) + " |\n";
       spdlog::info("{:14s} err_final {:.3e}  casimir drift {:.3e}  runtime {:.3g} s", name,
                    err_final, run.casimir_drift, runtime);
     } else {

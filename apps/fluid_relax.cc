@@ -223,7 +223,7 @@ void requireRepresentableStep(const CLI::App& cli, const Options& o, const Setti
       "the dissipative step h|alpha||P0|_2|W0|_2/hbar = {:.3g} exceeds {:g} and would "
       "overflow",
       std::abs(s.alpha) * scale, kMaxDissipativeStep);
-  if (fits(std::stod(Options().alpha))) {
+  if (fits(app::parseNumber("--alpha", Options().alpha, Options().alpha))) {
     app::usageError("--alpha", o.alpha, why);
   }
   if (cli.count("--h") > 0) app::usageError("--h", o.h, why);
