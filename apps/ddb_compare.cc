@@ -9,13 +9,12 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <filesystem>
-#include <string_view>
 
 #include "common/atomic_file.h"
 #include "common/cli.h"
+#include "common/csv_row.h"
 #include "common/energy_rises.h"
 #include "common/exit_status.h"
 #include "common/format.h"
@@ -46,13 +45,6 @@ const std::vector<std::pair<std::string, std::string>>& systemDescriptions() {
   return systems;
 }
 
-template <class V>
-std::vector<std::string> firstOf(const V& pairs) {
-  std::vector<std::string> names;
-  for (const auto& pair : pairs) names.push_back(pair.first);
-  return names;
-}
-
 std::vector<std::string> scenarioNames() {
   std::vector<std::string> names;
   for (const auto& s : rigidBodyScenarios()) names.push_back(s.name);
@@ -69,10 +61,6 @@ std::string shortList(const Eigen::DenseBase<Derived>& v) {
   return s;
 }
 std::string shortList(double v) { return shortList(Eigen::Matrix<double, 1, 1>(v)); }
-
-std::vector<double> values(const Eigen::Ref<const Eigen::VectorXd>& v) {
-  return std::vector<double>(v.data(), v.data() + v.size());
-}
 
 // ---- the command line (docs/file-formats.md) ----
 struct Options {
@@ -197,7 +185,7 @@ struct Problem {
   std::string scenario_base;  // the scenario "custom" started from
   double t_end = 0.0;         // the default horizon
   double alpha = 0.0;         // the dissipation scale, for energy_rises
-  app::JsonObject parameters;
+  app::Json parameters = app::Json::object();
 };
 
 double optionalNumber(const std::string& flag, const std::string& text, double fallback) {
@@ -229,10 +217,10 @@ Problem<SO3> rigidBodyProblem(const CLI::App& cli, const Options& o) {
   Problem<SO3> p{
       used.system(), used.mu0(), custom ? "custom" : base.name, custom ? base.name : "", base.t_end,
       used.alpha,    {}};
-  p.parameters.add("inertia", app::JsonObject::array(values(used.inertia)))
-      .add("alpha", used.alpha)
-      .add("omega0", app::JsonObject::array(values(used.omega0)))
-      .add("mu0", app::JsonObject::array(values(used.mu0())));
+  p.parameters["inertia"] = app::jsonArray(used.inertia);
+  p.parameters["alpha"] = used.alpha;
+  p.parameters["omega0"] = app::jsonArray(used.omega0);
+  p.parameters["mu0"] = app::jsonArray(used.mu0());
   return p;
 }
 
@@ -259,10 +247,10 @@ Problem<SE3> se3Problem(const CLI::App& cli, const Options& o) {
     p.mu0 = setup.mu0;
     p.t_end = setup.t_end;
     p.alpha = setup.alpha;
-    p.parameters.add("inertia", app::JsonObject::array(values(setup.inertia)))
-        .add("alpha", setup.alpha)
-        .add("metric", app::JsonObject::array(values(setup.metric)))
-        .add("mu0", app::JsonObject::array(values(setup.mu0)));
+    p.parameters["inertia"] = app::jsonArray(setup.inertia);
+    p.parameters["alpha"] = setup.alpha;
+    p.parameters["metric"] = app::jsonArray(setup.metric);
+    p.parameters["mu0"] = app::jsonArray(setup.mu0);
     return setup;
   };
   bool custom = false;
@@ -272,14 +260,15 @@ Problem<SE3> se3Problem(const CLI::App& cli, const Options& o) {
     s.chi = optionalVector<3>("--chi", o.chi, s.chi);
     custom = !s.sameParameters(HeavyTopSetup());
     p.system = s.system();
-    p.parameters.add("mgl", s.mgl).add("chi", app::JsonObject::array(values(s.chi)));
+    p.parameters["mgl"] = s.mgl;
+    p.parameters["chi"] = app::jsonArray(s.chi);
   } else {
     KirchhoffSetup s = shared(KirchhoffSetup());
     s.mass = optionalVector<3>("--mass", o.mass, s.mass);
     requirePositiveEntries("--mass", o.mass, s.mass);
     custom = !s.sameParameters(KirchhoffSetup());
     p.system = s.system();
-    p.parameters.add("mass", app::JsonObject::array(values(s.mass)));
+    p.parameters["mass"] = app::jsonArray(s.mass);
   }
   // These systems have no paper scenario: "none" with the defaults, else "custom".
   p.scenario = custom ? "custom" : "none";
@@ -394,14 +383,14 @@ Settings commonSettings(const Options& o, double default_t_end) {
 }
 
 /// <method>.csv rows as they are computed (docs/file-formats.md): t, μ, energy,
-/// Casimirs, 17 significant digits, formatted on the stack (no allocation per row).
+/// Casimirs.
 template <class G>
 class TrajectoryCsv {
  public:
   using Dual = typename G::template Dual<double>;
 
   TrajectoryCsv(app::AtomicFile& file, const LiePoissonSystem<G>& system)
-      : file_(file), system_(system) {
+      : file_(file), system_(system), row_(G::kDim + 2 + G::kNumCasimirs) {
     std::string header = "t";
     for (int i = 1; i <= G::kDim; ++i) header += ",m" + std::to_string(i);
     header += ",energy";
@@ -414,24 +403,18 @@ class TrajectoryCsv {
   }
 
   void operator()(long, double t, const Dual& mu) {
-    std::size_t n = 0;
-    const auto put = [&](double v, char after) {
-      n += static_cast<std::size_t>(app::formatNumber(row_.data() + n, row_.size() - n, v));
-      row_[n++] = after;
-    };
-    put(t, ',');
-    for (int i = 0; i < G::kDim; ++i) put(mu(i), ',');
-    put(system_.energy(mu), ',');
+    row_.put(t);
+    for (int i = 0; i < G::kDim; ++i) row_.put(mu(i));
+    row_.put(system_.energy(mu));
     const auto c = system_.casimirs(mu);
-    for (int i = 0; i < G::kNumCasimirs; ++i) put(c(i), i + 1 < G::kNumCasimirs ? ',' : '\n');
-    file_.write(std::string_view(row_.data(), n));
+    for (int i = 0; i < G::kNumCasimirs; ++i) row_.put(c(i));
+    row_.writeTo(file_);
   }
 
  private:
   app::AtomicFile& file_;
   const LiePoissonSystem<G>& system_;
-  // Each cell is at most 24 characters of %.17g plus its separator.
-  std::array<char, 32 * (G::kDim + 2 + G::kNumCasimirs)> row_;
+  app::CsvRow row_;
 };
 
 struct MethodOutcome {
@@ -481,7 +464,7 @@ int compare(const Options& o, const Settings& s, const Problem<G>& problem) {
   bool any_failed = !reference.ok();
   if (!reference.ok()) spdlog::error("reference (for err_final) FAILED: {}", reference.failure);
 
-  app::JsonObject method_json, runtime_table;
+  app::Json method_json = app::Json::object(), runtime_table = app::Json::object();
   std::string table = "| method | runtime (s), median of up to " + std::to_string(o.repeat) +
                       " runs | err_final | casimir_drift |\n|---|---|---|---|\n";
   for (size_t m = 0; m < names.size(); ++m) {
@@ -520,20 +503,20 @@ int compare(const Options& o, const Settings& s, const Problem<G>& problem) {
     }
     progress.clear();
 
-    app::JsonObject entry;
-    entry.add("final", app::JsonObject::array(values(run.final)))
-        .add("energy_final", system.energy(run.final))
-        .add("steps", run.steps)
-        .add("t_final", run.t_final);
-    if (watch_energy) entry.add("energy_rises", rises.count());
+    app::Json& entry = method_json[name];
+    entry["final"] = app::jsonArray(run.final);
+    entry["energy_final"] = system.energy(run.final);
+    entry["steps"] = run.steps;
+    entry["t_final"] = run.t_final;
+    if (watch_energy) entry["energy_rises"] = rises.count();
     if (run.ok()) {
       const double err_final = reference.ok() ? (run.final - reference.final).norm() : NAN;
-      entry.addString("status", "ok")
-          .add("err_final", err_final)
-          .add("casimir_drift", run.casimir_drift)
-          .add("runtime_s", runtime)
-          .add("timed_runs", static_cast<long>(timed_runs));
-      runtime_table.add(name, runtime);
+      entry["status"] = "ok";
+      entry["err_final"] = err_final;
+      entry["casimir_drift"] = run.casimir_drift;
+      entry["runtime_s"] = runtime;
+      entry["timed_runs"] = timed_runs;
+      runtime_table[name] = runtime;
       table += "| " + name + " | " + app::number(runtime, std::chars_format::general, 4) + " | " +
                app::number(err_final, std::chars_format::scientific, 3) + " | " +
                app::number(run.casimir_drift, std::chars_format::scientific, 3) + " |\n";
@@ -542,17 +525,16 @@ int compare(const Options& o, const Settings& s, const Problem<G>& problem) {
     } else {
       // A failed run has no final error, drift or runtime to compare: say FAILED instead.
       any_failed = true;
-      entry.addString("status", "FAILED")
-          .add("failed_step", run.failed_step)
-          .add("err_final", NAN)
-          .add("casimir_drift", NAN)
-          .add("runtime_s", NAN)
-          .addString("failure", run.failure);
-      runtime_table.addString(name, failedLabel(run));
+      entry["status"] = "FAILED";
+      entry["failed_step"] = run.failed_step;
+      entry["err_final"] = NAN;
+      entry["casimir_drift"] = NAN;
+      entry["runtime_s"] = NAN;
+      entry["failure"] = run.failure;
+      runtime_table[name] = failedLabel(run);
       table += "| " + name + " | " + failedLabel(run) + " | - | - |\n";
       spdlog::error("{:14s} {}: {}", name, failedLabel(run), run.failure);
     }
-    method_json.add(name, entry.str(4));
   }
 
   if (s.sweep.count > 0) {
@@ -587,19 +569,20 @@ int compare(const Options& o, const Settings& s, const Problem<G>& problem) {
     app::writeFileAtomically(s.out / "error_vs_h.csv", rows);
   }
 
-  app::JsonObject summary;
-  summary.addString("system", system.name()).addString("scenario", problem.scenario);
-  if (!problem.scenario_base.empty()) summary.addString("scenario_base", problem.scenario_base);
-  summary.addString("version", app::projectVersion())
-      .add("h", s.h)
-      .add("t_end", t_reached)
-      .add("t_end_requested", s.t_end)
-      .add("steps", s.steps)
-      .add("every", o.every)
-      .add("parameters", problem.parameters.str(2))
-      .add("methods", method_json.str(2))
-      .add("runtime_table", runtime_table.str(2));
-  app::writeFileAtomically(s.out / "summary.json", summary.str() + "\n");
+  app::Json summary;
+  summary["system"] = system.name();
+  summary["scenario"] = problem.scenario;
+  if (!problem.scenario_base.empty()) summary["scenario_base"] = problem.scenario_base;
+  summary["version"] = app::projectVersion();
+  summary["h"] = s.h;
+  summary["t_end"] = t_reached;
+  summary["t_end_requested"] = s.t_end;
+  summary["steps"] = s.steps;
+  summary["every"] = o.every;
+  summary["parameters"] = problem.parameters;
+  summary["methods"] = method_json;
+  summary["runtime_table"] = runtime_table;
+  app::writeJsonFile(s.out / "summary.json", summary);
   app::writeFileAtomically(s.out / "runtime_table.md", table);
   spdlog::info("wrote {}", s.out.string());
   return any_failed ? app::kExitFailed : app::kExitOk;
@@ -631,7 +614,7 @@ int runCompare(int argc, char** argv) {
   if (const auto status = app::parseCommandLine(cli, argc, argv)) return *status;
   app::setupLogging(o.log);
 
-  app::requireChoice("--system", o.system, firstOf(systemDescriptions()));
+  app::requireChoice("--system", o.system, app::namesOf(systemDescriptions()));
   const auto rigidBody = [&](const Options& options) {
     return asUsageError([&] { return rigidBodyProblem(cli, options); });
   };

@@ -15,11 +15,11 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <string_view>
 #include <vector>
 
 #include "common/atomic_file.h"
 #include "common/cli.h"
+#include "common/csv_row.h"
 #include "common/energy_rises.h"
 #include "common/exit_status.h"
 #include "common/format.h"
@@ -62,12 +62,6 @@ std::vector<std::pair<std::string, std::string>> fluidMethods() {
     }
   }
   return methods;
-}
-
-std::vector<std::string> namesOf(const std::vector<std::pair<std::string, std::string>>& pairs) {
-  std::vector<std::string> names;
-  for (const auto& pair : pairs) names.push_back(pair.first);
-  return names;
 }
 
 // ---- the command line (docs/file-formats.md) ----
@@ -197,7 +191,7 @@ Matrix initialVorticity(const CLI::App& cli, const Options& o, std::string& init
   if (o.n < 2 || o.n > kMaxN) {
     app::usageError("--n", std::to_string(o.n), "must be in [2, " + std::to_string(kMaxN) + "]");
   }
-  app::requireChoice("--init", o.init, namesOf(initDescriptions()));
+  app::requireChoice("--init", o.init, app::namesOf(initDescriptions()));
   init = o.init;
   if (o.init == "random") return randomVorticity(o.n, o.seed);
   if (o.init == "l1") return l1Vorticity(o.n, o.seed);
@@ -233,7 +227,7 @@ void requireRepresentableStep(const CLI::App& cli, const Options& o, const Setti
 
 Settings settings(const CLI::App& cli, const Options& o) {
   Settings s;
-  app::requireChoice("--method", o.method, namesOf(fluidMethods()));
+  app::requireChoice("--method", o.method, app::namesOf(fluidMethods()));
   s.alpha = app::parseNumber("--alpha", o.alpha, o.alpha);
   const bool by_steps = cli.count("--steps") > 0, by_time = cli.count("--t-end") > 0;
   if (by_steps == by_time) {
@@ -280,31 +274,10 @@ Settings settings(const CLI::App& cli, const Options& o) {
   return s;
 }
 
-/// Writes a row of numbers, comma-separated, 17 significant digits, without allocating.
-class CsvRow {
- public:
-  explicit CsvRow(std::size_t cells) : buffer_(32 * cells) {}
-  void put(double v) {
-    if (used_ > 0) buffer_[used_ - 1] = ',';
-    used_ += static_cast<std::size_t>(
-        app::formatNumber(buffer_.data() + used_, buffer_.size() - used_, v));
-    buffer_[used_++] = '\n';
-  }
-  /// Appends the row to `file` and starts a new one.
-  void writeTo(app::AtomicFile& file) {
-    file.write(std::string_view(buffer_.data(), used_));
-    used_ = 0;
-  }
-
- private:
-  std::vector<char> buffer_;
-  std::size_t used_ = 0;
-};
-
 /// W in the layout of --init-file: row j is Re W[j, :] then Im W[j, :].
 void writeMatrixCsv(const fs::path& path, const Matrix& W) {
   app::AtomicFile file(path);
-  CsvRow row(static_cast<std::size_t>(2 * W.cols()));
+  app::CsvRow row(static_cast<std::size_t>(2 * W.cols()));
   for (Eigen::Index j = 0; j < W.rows(); ++j) {
     for (Eigen::Index k = 0; k < W.cols(); ++k) row.put(W(j, k).real());
     for (Eigen::Index k = 0; k < W.cols(); ++k) row.put(W(j, k).imag());
@@ -319,7 +292,7 @@ void writeOmegaCsv(const fs::path& path, const SphericalHarmonicBasis& basis, co
   const Eigen::VectorXd omega = basis.coefficients(W);
   app::AtomicFile file(path);
   file.write("l,m,omega\n");
-  CsvRow row(3);
+  app::CsvRow row(3);
   for (Eigen::Index l = 0; l < basis.size(); ++l) {
     for (Eigen::Index m = -l; m <= l; ++m) {
       row.put(static_cast<double>(l));
@@ -363,7 +336,7 @@ int relax(const Options& o, const Settings& s) {
 
   app::AtomicFile history_file(s.out / "history.csv");
   history_file.write("t,energy,enstrophy,commutator_norm,spectrum_drift\n");
-  CsvRow row(5);
+  app::CsvRow row(5);
   auto historyRow = [&](long, double t, const Matrix& W) {
     row.put(t);
     row.put(diagnostics.energy(W));
@@ -402,38 +375,39 @@ int relax(const Options& o, const Settings& s) {
   rises.warnIfAny(o.method);
 
   const double commutator_final = diagnostics.commutatorNorm(run.final);
-  app::JsonObject summary;
-  summary.addString("version", app::projectVersion())
-      .addString("status", run.ok() ? "ok" : "FAILED")
-      .add("n", static_cast<long>(n))
-      .add("alpha", s.alpha)
-      .add("h", s.h)
-      .addString("h_source", s.default_h ? "default" : "--h")
-      .add("steps", run.steps)
-      .add("steps_requested", s.steps)
-      .add("t_end", run.t_final)
-      .add("every", o.every)
-      .addString("method", o.method)
-      .addString("init", s.init)
-      .add("seed", s.init == "file" ? "null" : std::to_string(o.seed))
-      .add("init_file", s.init == "file" ? app::JsonObject::quoted(o.init_file) : "null")
-      .add("energy_initial", diagnostics.energy(s.W0))
-      .add("energy_final", diagnostics.energy(run.final))
-      .add("enstrophy_initial", diagnostics.enstrophy(s.W0))
-      .add("enstrophy", diagnostics.enstrophy(run.final))
-      .add("spectrum_drift_max", drift_max)
-      .add("commutator_initial", diagnostics.commutatorNorm(s.W0))
-      .add("commutator_final", commutator_final)
-      .add("runtime_s", run.runtime_s)
-      .add("iterations_mean",
-           run.steps > 0 ? static_cast<double>(iterations_total) / run.steps : 0.0)
-      .add("iterations_max", iterations_max);
-  if (watch_energy) summary.add("energy_rises", rises.count());
+  app::Json summary;
+  summary["version"] = app::projectVersion();
+  summary["status"] = run.ok() ? "ok" : "FAILED";
+  summary["n"] = n;
+  summary["alpha"] = s.alpha;
+  summary["h"] = s.h;
+  summary["h_source"] = s.default_h ? "default" : "--h";
+  summary["steps"] = run.steps;
+  summary["steps_requested"] = s.steps;
+  summary["t_end"] = run.t_final;
+  summary["every"] = o.every;
+  summary["method"] = o.method;
+  summary["init"] = s.init;
+  summary["seed"] = s.init == "file" ? app::Json() : app::Json(o.seed);
+  summary["init_file"] = s.init == "file" ? app::Json(o.init_file) : app::Json();
+  summary["energy_initial"] = diagnostics.energy(s.W0);
+  summary["energy_final"] = diagnostics.energy(run.final);
+  summary["enstrophy_initial"] = diagnostics.enstrophy(s.W0);
+  summary["enstrophy"] = diagnostics.enstrophy(run.final);
+  summary["spectrum_drift_max"] = drift_max;
+  summary["commutator_initial"] = diagnostics.commutatorNorm(s.W0);
+  summary["commutator_final"] = commutator_final;
+  summary["runtime_s"] = run.runtime_s;
+  summary["iterations_mean"] =
+      run.steps > 0 ? static_cast<double>(iterations_total) / run.steps : 0.0;
+  summary["iterations_max"] = iterations_max;
+  if (watch_energy) summary["energy_rises"] = rises.count();
   if (!run.ok()) {
     // A failed run writes no final state: W_final.csv and omega_final.csv would claim a
     // time the run did not reach (docs/file-formats.md).
-    summary.add("failed_step", run.failed_step).addString("failure", run.failure);
-    app::writeFileAtomically(s.out / "summary.json", summary.str() + "\n");
+    summary["failed_step"] = run.failed_step;
+    summary["failure"] = run.failure;
+    app::writeJsonFile(s.out / "summary.json", summary);
     spdlog::error("{}", run.failure);
     spdlog::error("history.csv holds the {} steps before the failure; wrote {}", run.steps,
                   s.out.string());
@@ -443,7 +417,7 @@ int relax(const Options& o, const Settings& s) {
   const SphericalHarmonicBasis basis(hamiltonian.laplacian());
   writeOmegaCsv(s.out / "omega_initial.csv", basis, s.W0);
   writeOmegaCsv(s.out / "omega_final.csv", basis, run.final);
-  app::writeFileAtomically(s.out / "summary.json", summary.str() + "\n");
+  app::writeJsonFile(s.out / "summary.json", summary);
   spdlog::info("E {} -> {}, |[P,W]| {} -> {}, spectrum drift <= {:.2e}, {:.3g} s; wrote {}",
                diagnostics.energy(s.W0), diagnostics.energy(run.final),
                diagnostics.commutatorNorm(s.W0), commutator_final, drift_max, run.runtime_s,

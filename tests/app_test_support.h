@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -84,6 +85,11 @@ inline AppResult runProgram(const std::string& program, const std::string& argum
   std::stringstream ss(arguments);
   for (std::string word; ss >> word;) words.push_back(word);
   return runProgram(program, std::move(words), environment);
+}
+
+/// The JSON file at `path`, parsed (summary.json keeps its key order: ordered_json).
+inline nlohmann::ordered_json readJson(const fs::path& path) {
+  return nlohmann::ordered_json::parse(readFile(path));
 }
 
 /// An empty (removed) folder under the system's temporary directory.

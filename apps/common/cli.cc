@@ -79,6 +79,12 @@ std::vector<double> parseNumbers(const std::string& flag, const std::string& tex
   return values;
 }
 
+std::vector<std::string> namesOf(const std::vector<std::pair<std::string, std::string>>& choices) {
+  std::vector<std::string> names;
+  for (const auto& choice : choices) names.push_back(choice.first);
+  return names;
+}
+
 void requireChoice(const std::string& flag, const std::string& value,
                    const std::vector<std::string>& names) {
   if (std::find(names.begin(), names.end(), value) != names.end()) return;
