@@ -17,7 +17,7 @@ namespace ddb::compare {
 
 constexpr const char* kApp = "ddb-compare";
 
-/// At most this many steps: a run of 1e9 steps is hours; more is a typo.
+/// The most steps a run or the reference may take (docs/bad-inputs.md): more is bad input.
 constexpr long kMaxSteps = 1000000000L;
 // Each timed run is shorter than 1 s: 1000 of them per method bound the timing to
 // minutes, where 1e9 would take years.
