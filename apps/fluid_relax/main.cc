@@ -13,7 +13,6 @@
 
 #include "common/atomic_file.h"
 #include "common/cli.h"
-#include "common/csv_row.h"
 #include "common/energy_rises.h"
 #include "common/exit_status.h"
 #include "common/json.h"
@@ -59,16 +58,10 @@ int relax(const Options& o, const Settings& s) {
   double drift = 0.0, drift_max = 0.0;
   long iterations_total = 0, iterations_max = 0;
 
-  app::AtomicFile history_file(s.out / "history.csv");
-  history_file.write("t,energy,enstrophy,commutator_norm,spectrum_drift\n");
-  app::CsvRow row(5);
+  HistoryCsv history_csv(s.out / "history.csv");
   auto historyRow = [&](long, double t, const Matrix& W) {
-    row.put(t);
-    row.put(diagnostics.energy(W));
-    row.put(diagnostics.enstrophy(W));
-    row.put(diagnostics.commutatorNorm(W));
-    row.put(drift);
-    row.writeTo(history_file);
+    history_csv.write(t, diagnostics.energy(W), diagnostics.enstrophy(W),
+                      diagnostics.commutatorNorm(W), drift);
   };
   EveryKth<Matrix, decltype(historyRow)> history(o.every, historyRow);
 
@@ -95,7 +88,7 @@ int relax(const Options& o, const Settings& s) {
         });
       });
   history.finish();
-  history_file.commit();
+  history_csv.commit();
   progress.clear();
   rises.warnIfAny(o.method);
 

@@ -1,9 +1,20 @@
 #include "fluid_relax/outputs.h"
 
-#include "common/atomic_file.h"
-#include "common/csv_row.h"
-
 namespace ddb::fluid {
+
+HistoryCsv::HistoryCsv(const std::filesystem::path& path) : file_(path), row_(5) {
+  file_.write("t,energy,enstrophy,commutator_norm,spectrum_drift\n");
+}
+
+void HistoryCsv::write(double t, double energy, double enstrophy, double commutator_norm,
+                       double spectrum_drift) {
+  row_.put(t);
+  row_.put(energy);
+  row_.put(enstrophy);
+  row_.put(commutator_norm);
+  row_.put(spectrum_drift);
+  row_.writeTo(file_);
+}
 
 void writeMatrixCsv(const std::filesystem::path& path, const Eigen::MatrixXcd& W) {
   app::AtomicFile file(path);
