@@ -28,7 +28,8 @@ for build_type in Debug ""; do
   cmake --no-warn-unused-cli -S tests/subproject_consumer -B "$scratch/subproject-$build_type" \
         -DDDB_SOURCE_DIR="$PWD" -DCMAKE_BUILD_TYPE="$build_type" \
         -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON -DCMAKE_DISABLE_FIND_PACKAGE_benchmark=ON \
-        -DCMAKE_DISABLE_FIND_PACKAGE_spdlog=ON -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON
+        -DCMAKE_DISABLE_FIND_PACKAGE_spdlog=ON -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON \
+        -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=ON
 done
 # The library's failure-mode and randomised tests (every system and DDB method, the small
 # and the matrix-free Legendre solvers, the matrix groups' OpenBLAS products) again under

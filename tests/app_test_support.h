@@ -10,8 +10,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ddb::test {
@@ -38,13 +40,11 @@ struct RunEnvironment {
   unsigned timeout_s = 0;              // kill the app (SIGALRM) after this; 0: never
 };
 
-/// Runs `program` with whitespace-separated arguments, without a shell, so that wait4()
-/// reports the app's own peak memory.
-inline AppResult runProgram(const std::string& program, const std::string& arguments,
+/// Runs `program` with the arguments `words`, without a shell, so that wait4() reports
+/// the app's own peak memory and an argument reaches the app as it is (spaces, quotes).
+inline AppResult runProgram(const std::string& program, std::vector<std::string> words,
                             const RunEnvironment& environment = {}) {
-  std::vector<std::string> words{program};
-  std::stringstream ss(arguments);
-  for (std::string word; ss >> word;) words.push_back(word);
+  words.insert(words.begin(), program);
   std::vector<char*> argv;
   for (auto& word : words) argv.push_back(word.data());
   argv.push_back(nullptr);
@@ -76,6 +76,20 @@ inline AppResult runProgram(const std::string& program, const std::string& argum
   fs::remove(out_log);
   fs::remove(err_log);
   return result;
+}
+
+/// runProgram() with whitespace-separated arguments.
+inline AppResult runProgram(const std::string& program, const std::string& arguments,
+                            const RunEnvironment& environment = {}) {
+  std::vector<std::string> words;
+  std::stringstream ss(arguments);
+  for (std::string word; ss >> word;) words.push_back(word);
+  return runProgram(program, std::move(words), environment);
+}
+
+/// The JSON file at `path`, parsed (summary.json keeps its key order: ordered_json).
+inline nlohmann::ordered_json readJson(const fs::path& path) {
+  return nlohmann::ordered_json::parse(readFile(path));
 }
 
 /// An empty (removed) folder under the system's temporary directory.

@@ -23,6 +23,7 @@
 namespace {
 
 using namespace ddb::test;
+using Json = nlohmann::ordered_json;
 
 AppResult run(const std::string& arguments) { return runProgram(DDB_COMPARE_PATH, arguments); }
 
@@ -56,14 +57,22 @@ TEST(DdbCompare, WritesContractFilesMatchingTheLibrary) {
     for (int i = 0; i < 3; ++i) EXPECT_DOUBLE_EQ(final_row[1 + i], last(i)) << method;
     EXPECT_DOUBLE_EQ(final_row[4], body->energy(last));
   }
-  const std::string summary = readFile(out / "summary.json");
-  for (const std::string key :
-       {"\"system\": \"rigid-body\"", "\"scenario\": \"B\"", "\"h\": ", "\"t_end\": 2",
-        "\"methods\"", "\"ddb-cay\"", "\"rk4\"", "\"final\"", "\"err_final\"", "\"casimir_drift\"",
-        "\"energy_final\"", "\"runtime_s\"", "\"steps\": 20"}) {
-    EXPECT_THAT(summary, ::testing::HasSubstr(key));
+  Json summary = readJson(out / "summary.json");
+  EXPECT_EQ(summary["system"], "rigid-body");
+  EXPECT_EQ(summary["scenario"], "B");
+  EXPECT_EQ(summary["h"], 0.1);
+  EXPECT_NEAR(summary["t_end"].get<double>(), 2.0, 1e-12);
+  EXPECT_EQ(summary["steps"], 20);
+  for (const std::string method : {"ddb-cay", "rk4"}) {
+    Json& entry = summary["methods"][method];
+    for (const std::string key :
+         {"final", "energy_final", "err_final", "casimir_drift", "runtime_s"}) {
+      ASSERT_TRUE(entry.contains(key)) << method << " " << key;
+      for (const Json& value : entry[key].is_array() ? entry[key] : Json::array({entry[key]})) {
+        EXPECT_TRUE(value.is_number()) << method << " " << key;  // null: not finite
+      }
+    }
   }
-  EXPECT_THAT(summary, ::testing::Not(::testing::HasSubstr("null")));
   EXPECT_FALSE(fs::exists(out / "ddb-cay.csv.tmp"));
 }
 
@@ -104,10 +113,10 @@ TEST(DdbCompare, SE3SystemsWriteTwoCasimirColumns) {
     const auto rows = readCsv(out / "ddb-cay.csv", &header);
     EXPECT_EQ(header, "t,m1,m2,m3,m4,m5,m6,energy,casimir1,casimir2");
     EXPECT_EQ(rows.size(), 11u);
-    const std::string summary = readFile(out / "summary.json");
-    EXPECT_THAT(summary, ::testing::HasSubstr("\"system\": \"" + system + "\""));
+    Json summary = readJson(out / "summary.json");
+    EXPECT_EQ(summary["system"], system);
     for (const std::string method : {"ddb-cay", "ddb-exp", "ddb-exp-exact", "rk4", "lobatto3c"}) {
-      EXPECT_THAT(summary, ::testing::HasSubstr("\"" + method + "\""));
+      EXPECT_TRUE(summary["methods"].contains(method)) << method;
     }
   }
 }
@@ -137,11 +146,12 @@ TEST(DdbCompare, FailedSolveKeepsThePrefixAndExitsOne) {
   EXPECT_EQ(rows.size(), static_cast<std::size_t>(failed_step + 1));
   for (const auto& row : rows)
     for (double v : row) EXPECT_TRUE(std::isfinite(v));
-  const std::string summary = readFile(out / "summary.json");
-  EXPECT_THAT(summary, ::testing::HasSubstr("\"failure\": \"DDB with the exp retraction step " +
-                                            std::to_string(failed_step)));
-  EXPECT_THAT(summary, ::testing::HasSubstr("injectivity limit"));
-  EXPECT_THAT(summary, ::testing::HasSubstr("\"err_final\": null"));
+  Json entry = readJson(out / "summary.json")["methods"]["ddb-exp-exact"];
+  EXPECT_THAT(
+      entry["failure"].get<std::string>(),
+      ::testing::StartsWith("DDB with the exp retraction step " + std::to_string(failed_step)));
+  EXPECT_THAT(entry["failure"].get<std::string>(), ::testing::HasSubstr("injectivity limit"));
+  EXPECT_TRUE(entry["err_final"].is_null());
 }
 
 TEST(DdbCompare, BadInputExitsTwoAndWritesNothing) {
@@ -157,23 +167,6 @@ TEST(DdbCompare, BadInputExitsTwoAndWritesNothing) {
     EXPECT_TRUE(!fs::exists(out) || fs::is_empty(out)) << arguments;
   }
   EXPECT_EQ(runApp("--t-end 1 --out /proc/ddb-cannot-write"), 2);
-}
-
-/// The value text after `"key": ` in `json` (first occurrence after `from`).
-std::string jsonValue(const std::string& json, const std::string& key, size_t from = 0) {
-  const std::string marker = "\"" + key + "\": ";
-  const size_t at = json.find(marker, from);
-  if (at == std::string::npos) return "";
-  const size_t begin = at + marker.size();
-  if (json[begin] == '[') return json.substr(begin, json.find(']', begin) + 1 - begin);
-  return json.substr(begin, json.find_first_of(",\n", begin) - begin);
-}
-
-/// The object of method `name` in summary.json's "methods".
-std::string methodEntry(const std::string& summary, const std::string& name) {
-  const size_t begin = summary.find("\"" + name + "\": {");
-  if (begin == std::string::npos) return "";
-  return summary.substr(begin, summary.find('}', begin) - begin);
 }
 
 TEST(DdbCompare, VersionIsTheProjectVersion) {
@@ -255,11 +248,11 @@ TEST(DdbCompare, ParametersThatChangeTheScenarioAreRecordedAsCustom) {
   ASSERT_EQ(runApp("--scenario B --alpha 0.25 --t-end 0.2 --method ddb-cay --repeat 1 --out " +
                    out.string()),
             0);
-  std::string summary = readFile(out / "summary.json");
-  EXPECT_EQ(jsonValue(summary, "scenario"), "\"custom\"");
-  EXPECT_EQ(jsonValue(summary, "scenario_base"), "\"B\"");
-  EXPECT_EQ(jsonValue(summary, "alpha"), "0.25");
-  EXPECT_EQ(jsonValue(summary, "inertia"), "[1, 1.3, 0.5]");  // docs: scenario B's 𝕀
+  Json summary = readJson(out / "summary.json");
+  EXPECT_EQ(summary["scenario"], "custom");
+  EXPECT_EQ(summary["scenario_base"], "B");
+  EXPECT_EQ(summary["parameters"]["alpha"], 0.25);
+  EXPECT_EQ(summary["parameters"]["inertia"], Json::array({1, 1.3, 0.5}));  // scenario B's 𝕀
   // The run used α = 0.25: the library called directly ends where the app ended.
   const Eigen::Vector3d inertia(1.0, 1.3, 0.5);
   auto body = ddb::makeRigidBody(inertia, 0.25);
@@ -277,18 +270,18 @@ TEST(DdbCompare, ParametersThatChangeTheScenarioAreRecordedAsCustom) {
                    "--method ddb-cay --repeat 1 --out " +
                    out.string()),
             0);
-  summary = readFile(out / "summary.json");
-  EXPECT_EQ(jsonValue(summary, "scenario"), "\"C\"");
-  EXPECT_EQ(jsonValue(summary, "scenario_base"), "");
+  summary = readJson(out / "summary.json");
+  EXPECT_EQ(summary["scenario"], "C");
+  EXPECT_FALSE(summary.contains("scenario_base"));
 
   ASSERT_EQ(runApp("--system heavy-top --mgl 2 --t-end 0.2 --method ddb-cay --repeat 1 --out " +
                    out.string()),
             0);
-  summary = readFile(out / "summary.json");
-  EXPECT_EQ(jsonValue(summary, "scenario"), "\"custom\"");
-  EXPECT_EQ(jsonValue(summary, "mgl"), "2");
+  summary = readJson(out / "summary.json");
+  EXPECT_EQ(summary["scenario"], "custom");
+  EXPECT_EQ(summary["parameters"]["mgl"], 2.0);
   for (const std::string key : {"inertia", "alpha", "metric", "mu0", "chi"}) {
-    EXPECT_NE(jsonValue(summary, key), "") << key;
+    EXPECT_TRUE(summary["parameters"].contains(key)) << key;
   }
 }
 
@@ -307,7 +300,7 @@ TEST(DdbCompare, EveryWritesEveryKthStateAndTheLast) {
       ASSERT_EQ(rows.size(), times.size()) << method << " every " << every;
       for (size_t i = 0; i < rows.size(); ++i) EXPECT_NEAR(rows[i][0], times[i], 1e-12);
     }
-    EXPECT_EQ(jsonValue(readFile(out / "summary.json"), "steps"), "10");
+    EXPECT_EQ(readJson(out / "summary.json")["steps"], 10);
   }
 }
 
@@ -316,9 +309,9 @@ TEST(DdbCompare, TEndNotAMultipleOfHIsReportedAndTheReachedOneRecorded) {
   const AppResult r = run("--t-end 1 --h 0.3 --method ddb-cay --repeat 1 --out " + out.string());
   ASSERT_EQ(r.status, 0);
   EXPECT_THAT(r.output, ::testing::HasSubstr("not a multiple"));
-  const std::string summary = readFile(out / "summary.json");
-  EXPECT_NEAR(std::stod(jsonValue(summary, "t_end")), 0.9, 1e-12);  // 3 steps of 0.3
-  EXPECT_EQ(jsonValue(summary, "t_end_requested"), "1");
+  Json summary = readJson(out / "summary.json");
+  EXPECT_NEAR(summary["t_end"].get<double>(), 0.9, 1e-12);  // 3 steps of 0.3
+  EXPECT_EQ(summary["t_end_requested"], 1.0);
   std::string header;
   const auto rows = readCsv(out / "ddb-cay.csv", &header);
   ASSERT_EQ(rows.size(), 4u);
@@ -352,16 +345,15 @@ TEST(DdbCompare, FailedMethodsAreMarkedFailedEverywhere) {
   EXPECT_TRUE(std::regex_search(table, std::regex("\\| ddb-exp-exact \\| " + failed + " \\|")))
       << table;
   EXPECT_TRUE(std::regex_search(table, std::regex("\\| ddb-cay \\| [0-9.e+-]+ \\|"))) << table;
-  const std::string summary = readFile(out / "summary.json");
-  const std::string entry = methodEntry(summary, "ddb-exp-exact");
-  EXPECT_EQ(jsonValue(entry, "status"), "\"FAILED\"");
-  EXPECT_EQ(jsonValue(entry, "failed_step"), std::to_string(failed_step));
-  EXPECT_EQ(jsonValue(entry, "steps"), std::to_string(failed_step));
-  EXPECT_EQ(jsonValue(entry, "casimir_drift"), "null");
-  EXPECT_EQ(jsonValue(entry, "runtime_s"), "null");
-  EXPECT_EQ(jsonValue(summary, "ddb-exp-exact", summary.find("\"runtime_table\"")),
-            "\"" + failed + "\"");
-  EXPECT_EQ(jsonValue(methodEntry(summary, "ddb-cay"), "status"), "\"ok\"");
+  Json summary = readJson(out / "summary.json");
+  Json& entry = summary["methods"]["ddb-exp-exact"];
+  EXPECT_EQ(entry["status"], "FAILED");
+  EXPECT_EQ(entry["failed_step"], failed_step);
+  EXPECT_EQ(entry["steps"], failed_step);
+  EXPECT_TRUE(entry["casimir_drift"].is_null());
+  EXPECT_TRUE(entry["runtime_s"].is_null());
+  EXPECT_EQ(summary["runtime_table"]["ddb-exp-exact"], failed);
+  EXPECT_EQ(summary["methods"]["ddb-cay"]["status"], "ok");
 }
 
 TEST(DdbCompare, ExpStepPastItsLimitIsARunFailureNotBadInput) {
@@ -373,8 +365,7 @@ TEST(DdbCompare, ExpStepPastItsLimitIsARunFailureNotBadInput) {
       run("--system heavy-top --method rk4,ddb-exp-exact --h 2 --repeat 1 --out " + out.string());
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_TRUE(fs::exists(out / "rk4.csv"));
-  EXPECT_EQ(jsonValue(methodEntry(readFile(out / "summary.json"), "ddb-exp-exact"), "status"),
-            "\"FAILED\"");
+  EXPECT_EQ(readJson(out / "summary.json")["methods"]["ddb-exp-exact"]["status"], "FAILED");
 }
 
 TEST(DdbCompare, UnwritableFileIsExitOneNamingItAndLeavesNoTemporary) {

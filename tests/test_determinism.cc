@@ -2,7 +2,9 @@
 // the runtime fields that docs/file-formats.md lists ("Determinism"): those are masked
 // here, by name, and nothing else is.
 #include <gmock/gmock.h>
+#include <locale.h>
 
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
 #include <string>
@@ -22,20 +24,29 @@ std::set<std::string> fileNames(const fs::path& folder) {
   return names;
 }
 
+/// `json` with every "runtime_s" and "timed_runs" value, at any depth, replaced by "R".
+void maskRuntimes(nlohmann::ordered_json& json) {
+  if (!json.is_object()) return;
+  for (auto& [key, value] : json.items()) {
+    if (key == "runtime_s" || key == "timed_runs") {
+      value = "R";
+    } else {
+      maskRuntimes(value);
+    }
+  }
+}
+
 /// `text` with the runtime fields of docs/file-formats.md replaced by "R": in
 /// summary.json "runtime_s" and "timed_runs" and every value of "runtime_table"; the
 /// runtime column of runtime_table.md; the runtime_s column of error_vs_h.csv.
 std::string withoutRuntimes(const std::string& name, const std::string& text) {
   if (name == "summary.json") {
-    std::string masked =
-        std::regex_replace(text, std::regex("(\"(runtime_s|timed_runs)\": )[^,\n]+"), "$1R");
-    const std::size_t table = masked.find("\"runtime_table\": {");
-    if (table == std::string::npos) return masked;
-    const std::size_t end = masked.find('}', table);
-    return masked.substr(0, table) +
-           std::regex_replace(masked.substr(table, end - table),
-                              std::regex("(\"[a-z0-9-]+\": )[^,\n]+"), "$1R") +
-           masked.substr(end);
+    nlohmann::ordered_json json = nlohmann::ordered_json::parse(text);
+    maskRuntimes(json);
+    if (json.contains("runtime_table")) {
+      for (auto& value : json["runtime_table"]) value = "R";
+    }
+    return json.dump(2);
   }
   if (name == "runtime_table.md") {
     return std::regex_replace(text, std::regex("(\n\\| [a-z0-9-]+ \\| )[^|]+"), "$1R ");
@@ -65,6 +76,56 @@ TEST(Determinism, DdbCompareWritesTheSameFilesTwice) {
   ASSERT_EQ(runProgram(DDB_COMPARE_PATH, arguments + second.string()).status, 0);
   EXPECT_EQ(fileNames(first).size(), 10u);  // 7 trajectories, summary, table, sweep
   expectSameFilesApartFromRuntimes(first, second);
+}
+
+// A comma-decimal locale in the environment changes no byte of any file: numbers are
+// formatted and parsed without the locale (apps/common/format.h, cli.h).
+constexpr const char* kCommaLocale = "de_DE.UTF-8";
+
+/// Skips the test (with the reason) if kCommaLocale is not installed.
+bool commaLocaleInstalled() {
+  const locale_t locale = ::newlocale(LC_ALL_MASK, kCommaLocale, static_cast<locale_t>(0));
+  if (locale == static_cast<locale_t>(0)) return false;
+  ::freelocale(locale);
+  return true;
+}
+
+/// Runs `program` with `arguments` and --out twice, under LC_ALL=C and kCommaLocale,
+/// and compares the files.
+void expectSameFilesInBothLocales(const std::string& program, const std::string& arguments,
+                                  const std::string& name) {
+  const fs::path c = freshFolder("locale_c_", name);
+  const fs::path comma = freshFolder("locale_comma_", name);
+  RunEnvironment c_locale, comma_locale;
+  c_locale.variables = {"LC_ALL=C"};
+  comma_locale.variables = {std::string("LC_ALL=") + kCommaLocale};
+  const AppResult r = runProgram(program, arguments + " --out " + comma.string(), comma_locale);
+  ASSERT_EQ(r.status, 0) << r.output;
+  ASSERT_EQ(runProgram(program, arguments + " --out " + c.string(), c_locale).status, 0);
+  expectSameFilesApartFromRuntimes(c, comma);
+}
+
+TEST(Determinism, DdbCompareIgnoresTheLocale) {
+  if (!commaLocaleInstalled()) {
+    GTEST_SKIP() << kCommaLocale << " is not installed (Debian: locales-all)";
+  }
+  // Decimal parameters on the command line, so that parsing is exercised too.
+  expectSameFilesInBothLocales(DDB_COMPARE_PATH,
+                               "--quiet --scenario B --t-end 1.5 --h 0.05 --alpha 0.25 "
+                               "--repeat 1 --method ddb-cay,rk4",
+                               "ddb_compare");
+  expectSameFilesInBothLocales(DDB_COMPARE_PATH,
+                               "--quiet --system heavy-top --t-end 1 --mgl 0.75 --repeat 1 "
+                               "--method ddb-cay,reference",
+                               "heavy_top");
+}
+
+TEST(Determinism, FluidRelaxIgnoresTheLocale) {
+  if (!commaLocaleInstalled()) {
+    GTEST_SKIP() << kCommaLocale << " is not installed (Debian: locales-all)";
+  }
+  expectSameFilesInBothLocales(FLUID_RELAX_PATH, "--quiet --n 8 --steps 20 --alpha 0.75 --h 0.05",
+                               "fluid_relax");
 }
 
 TEST(Determinism, FluidRelaxWritesTheSameFilesTwice) {

@@ -29,13 +29,11 @@ long risesInCsv(const fs::path& csv, std::size_t column) {
   return rises;
 }
 
-/// The integer after `"energy_rises": ` in summary.json, -1 if absent.
+/// summary.json's "energy_rises": fluid-relax's, or ddb-compare's for ddb-cay; -1 if absent.
 long summaryRises(const fs::path& summary) {
-  const std::string json = readFile(summary);
-  const std::string marker = "\"energy_rises\": ";
-  const std::size_t at = json.find(marker);
-  if (at == std::string::npos) return -1;
-  return std::stol(json.substr(at + marker.size()));
+  const nlohmann::ordered_json json = readJson(summary);
+  const auto& holder = json.contains("methods") ? json.at("methods").at("ddb-cay") : json;
+  return holder.contains("energy_rises") ? holder.at("energy_rises").get<long>() : -1;
 }
 
 TEST(EnergyRises, DdbCompareCountsRisesOfATooLargeStepAndNoneOfASmallOne) {

@@ -1,10 +1,11 @@
 #include "common/cli.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstddef>
-#include <map>
-#include <sstream>
+#include <limits>
+#include <string_view>
 
 #include "common/exit_status.h"
 
@@ -25,14 +26,38 @@ std::vector<std::string> split(const std::string& text, char separator) {
   return items;
 }
 
-double parseNumber(const std::string& flag, const std::string& text, const std::string& item) {
-  try {
-    std::size_t used = 0;
-    const double v = std::stod(item, &used);
-    if (used == item.size() && std::isfinite(v)) return v;
-  } catch (const std::exception&) {
-    // std::stod's invalid_argument and out_of_range: reported below with the flag.
+namespace {
+
+/// `item` read as std::stod read it, but without the locale (a comma-decimal LC_NUMERIC
+/// must not change what a flag means): leading white space, a sign ('+' too, which
+/// std::from_chars does not take), decimal or 0x hexadecimal, and nothing left over.
+/// std::nullopt where std::stod threw, which includes results below the smallest normal
+/// double (glibc's strtod sets ERANGE for them, std::stod's out_of_range).
+std::optional<double> readDouble(std::string_view item) {
+  const std::size_t begin = item.find_first_not_of(" \t\n\v\f\r");
+  if (begin == std::string_view::npos) return std::nullopt;
+  item.remove_prefix(begin);
+  const bool negative = item.front() == '-';
+  if (negative || item.front() == '+') item.remove_prefix(1);
+  auto format = std::chars_format::general;
+  if (item.size() >= 2 && item[0] == '0' && (item[1] == 'x' || item[1] == 'X')) {
+    format = std::chars_format::hex;
+    item.remove_prefix(2);
   }
+  // std::from_chars takes a '-' of its own: a second sign ("--1", "+-1") is not a number.
+  if (item.empty() || item.front() == '-') return std::nullopt;
+  double v = 0.0;
+  const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), v, format);
+  if (error != std::errc() || end != item.data() + item.size()) return std::nullopt;
+  if (v != 0.0 && std::abs(v) < std::numeric_limits<double>::min()) return std::nullopt;
+  return negative ? -v : v;
+}
+
+}  // namespace
+
+double parseNumber(const std::string& flag, const std::string& text, const std::string& item) {
+  const std::optional<double> v = readDouble(item);
+  if (v && std::isfinite(*v)) return *v;
   usageError(flag, text, "'" + item + "' is not a finite number");
 }
 
@@ -52,6 +77,12 @@ std::vector<double> parseNumbers(const std::string& flag, const std::string& tex
   std::vector<double> values;
   for (const auto& item : items) values.push_back(parseNumber(flag, text, item));
   return values;
+}
+
+std::vector<std::string> namesOf(const std::vector<std::pair<std::string, std::string>>& choices) {
+  std::vector<std::string> names;
+  for (const auto& choice : choices) names.push_back(choice.first);
+  return names;
 }
 
 void requireChoice(const std::string& flag, const std::string& value,
@@ -89,30 +120,18 @@ namespace {
 
 /// Throws a UsageError naming an option given more than once and every value it was
 /// given: CLI11 would say only "At Most 1 required but received 2" (or, for a flag,
-/// nothing at all), and a silent choice between two values is a wrong number.
-void rejectRepeated(const CLI::App& cli, int argc, char** argv) {
-  std::map<std::string, std::vector<std::string>> given;
-  for (int i = 1; i < argc; ++i) {
-    const std::string word = argv[i];
-    if (word.rfind("--", 0) != 0) continue;
-    const std::size_t equals = word.find('=');
-    const std::string name = word.substr(0, equals);
-    const CLI::Option* option = cli.get_option_no_throw(name);
-    if (option == nullptr) continue;  // an unknown flag: CLI11 reports it
-    std::string value;
-    if (equals != std::string::npos) {
-      value = word.substr(equals + 1);
-    } else if (option->get_expected_max() > 0 && i + 1 < argc) {
-      value = argv[++i];
-    }
-    given[name].push_back(value);
-  }
-  for (const auto& [name, values] : given) {
-    if (values.size() < 2) continue;
-    const std::string why = "given " + std::to_string(values.size()) + " times; give it once";
-    if (cli.get_option(name)->get_expected_max() == 0) throw UsageError(name + ": " + why);
+/// nothing at all), and a silent choice between two values is a wrong number. The counts
+/// are CLI11's own, from the parse itself, so that a word is a value or a flag here
+/// exactly as CLI11 read it (`--out --plot`: --out has no value, --plot is the flag).
+void rejectRepeated(const CLI::App& cli) {
+  for (const CLI::Option* option : cli.get_options()) {
+    const std::size_t count = option->count();
+    if (count < 2) continue;
+    const std::string name = option->get_name();
+    const std::string why = "given " + std::to_string(count) + " times; give it once";
+    if (option->get_expected_max() == 0) throw UsageError(name + ": " + why);
     std::string all;
-    for (const auto& value : values) all += (all.empty() ? "" : " and ") + value;
+    for (const auto& value : option->results()) all += (all.empty() ? "" : " and ") + value;
     usageError(name, all, why);
   }
 }
@@ -120,7 +139,11 @@ void rejectRepeated(const CLI::App& cli, int argc, char** argv) {
 }  // namespace
 
 std::optional<int> parseCommandLine(CLI::App& cli, int argc, char** argv) {
-  rejectRepeated(cli, argc, argv);
+  // Every option keeps all its values through the parse (CLI11's default policy would
+  // stop at the second with its own message); rejectRepeated() then names them.
+  for (CLI::Option* option : cli.get_options()) {
+    option->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  }
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -132,6 +155,7 @@ std::optional<int> parseCommandLine(CLI::App& cli, int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     throw UsageError(e.what());
   }
+  rejectRepeated(cli);
   return std::nullopt;
 }
 

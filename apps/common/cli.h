@@ -35,6 +35,9 @@ Eigen::Matrix<double, N, 1> parseVector(const std::string& flag, const std::stri
   return Eigen::Map<const Eigen::Matrix<double, N, 1>>(values.data());
 }
 
+/// The names of (name, description) pairs, such as describeChoices() lists.
+std::vector<std::string> namesOf(const std::vector<std::pair<std::string, std::string>>& choices);
+
 /// Throws a UsageError listing every valid name if `value` is not one of `names`.
 void requireChoice(const std::string& flag, const std::string& value,
                    const std::vector<std::string>& names);

@@ -1,29 +1,25 @@
-// A minimal JSON writer for summary.json (docs/file-formats.md): an object built key by
-// key, values already serialised. JSON has no NaN or infinity, so a non-finite number
-// is written as null (a failed method's err_final, for instance).
+// summary.json (docs/file-formats.md) through nlohmann-json: ordered_json keeps the keys in
+// the order the apps add them, and a non-finite double is dumped as null (JSON has no
+// NaN or infinity; a failed method's err_final, for instance).
 #pragma once
 
-#include <string>
+#include <Eigen/Core>
+#include <filesystem>
+#include <nlohmann/json.hpp>
 #include <vector>
 
 namespace ddb::app {
 
-class JsonObject {
- public:
-  /// Adds `"key": raw_value`; raw_value must already be JSON.
-  JsonObject& add(const std::string& key, const std::string& raw_value);
-  JsonObject& add(const std::string& key, double value);
-  JsonObject& add(const std::string& key, long value);
-  JsonObject& addString(const std::string& key, const std::string& value);
-  /// The object, nested `indent` spaces deep.
-  std::string str(int indent = 0) const;
+using Json = nlohmann::ordered_json;
 
-  static std::string number(double v);  // %.17g, or null if not finite
-  static std::string quoted(const std::string& v);
-  static std::string array(const std::vector<double>& values);
+/// The entries of `v`, as a JSON array of numbers.
+inline Json jsonArray(const Eigen::Ref<const Eigen::VectorXd>& v) {
+  return std::vector<double>(v.data(), v.data() + v.size());
+}
 
- private:
-  std::vector<std::string> entries_;
-};
+/// Writes `json`, indented by 2, and a newline to `path` through AtomicFile; a string
+/// that is not UTF-8 (a file name, a message quoting one) gets U+FFFD for its bad bytes
+/// instead of failing the run.
+void writeJsonFile(const std::filesystem::path& path, const Json& json);
 
 }  // namespace ddb::app

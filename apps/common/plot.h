@@ -1,5 +1,7 @@
 // Figures: the apps render PNGs by running a matplotlib script of scripts/ on their
-// output folder (docs/file-formats.md, --plot), with the interpreter CMake found.
+// output folder (docs/file-formats.md, --plot), with the interpreter CMake found. The
+// script runs from an argument vector, never through a shell, so that no output folder
+// name is ever read as a command (docs/bad-inputs.md).
 #pragma once
 
 #include <filesystem>
@@ -7,7 +9,18 @@
 
 namespace ddb::app {
 
-/// Runs `python3 script out`; returns kExitOk, or logs the failure and returns kExitFailed.
+/// The python3 CMake found (DDB_PYTHON3): Debian's, which has matplotlib and scipy.
+std::string pythonInterpreter();
+
+/// Runs `interpreter script out` as a child process (posix_spawnp, no shell) and waits
+/// for it. Returns "" if it exited with status 0, else what failed: the interpreter
+/// that could not be started (its path and why), or the script's exit status or signal
+/// with the last lines of its stderr.
+std::string plotFailure(const std::string& interpreter, const std::string& script,
+                        const std::filesystem::path& out);
+
+/// plotFailure() with pythonInterpreter(); returns kExitOk, or logs the failure and
+/// returns kExitFailed.
 int runPlotScript(const std::string& script, const std::filesystem::path& out);
 
 }  // namespace ddb::app

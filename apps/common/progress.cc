@@ -1,8 +1,8 @@
 #include "common/progress.h"
 
+#include <spdlog/fmt/fmt.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <cstdio>
 
 namespace ddb::app {
@@ -30,17 +30,15 @@ void Progress::update(const std::string& label, long done, long total,
   }
   if (shown_ && now - last_ < std::chrono::milliseconds(100)) return;
   const double percent = total > 0 ? 100.0 * static_cast<double>(done) / total : 100.0;
-  char line[256];
-  int n = std::snprintf(line, sizeof line, "%s: %5.1f%% (%ld/%ld steps", label.c_str(), percent,
-                        done, total);
+  // fmt, not printf: the line ignores the locale, as the files do (format.h).
+  std::string line = fmt::format("{}: {:5.1f}% ({}/{} steps", label, percent, done, total);
   const double seconds = std::chrono::duration<double>(now - rate_start_).count();
-  if (done > rate_done_ && seconds > 0 && n > 0 && n < static_cast<int>(sizeof line)) {
+  if (done > rate_done_ && seconds > 0) {
     const double rate = static_cast<double>(done - rate_done_) / seconds;
-    n += std::snprintf(line + n, sizeof line - n, ", %.3g steps/s, %.0f s left", rate,
-                       static_cast<double>(total - done) / rate);
+    line += fmt::format(", {:.3g} steps/s, {:.0f} s left", rate,
+                        static_cast<double>(total - done) / rate);
   }
-  show(std::string(line, std::min<std::size_t>(std::max(n, 0), sizeof line - 1)) + ")" +
-       (detail ? "  " + detail() : ""));
+  show(line + ")" + (detail ? "  " + detail() : ""));
 }
 
 void Progress::clear() {

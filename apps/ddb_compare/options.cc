@@ -1,0 +1,162 @@
+#include "ddb_compare/options.h"
+
+#include <ddb/integrators/method_table.h>
+#include <ddb/systems/paper_scenarios.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/format.h"
+
+namespace ddb::compare {
+
+namespace {
+
+/// Short form of a default for --help: "1,1.3,0.5".
+template <class Derived>
+std::string shortList(const Eigen::DenseBase<Derived>& v) {
+  std::string s;
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    s += (i ? "," : "") + app::number(v.derived()(i), std::chars_format::general, 6);
+  }
+  return s;
+}
+std::string shortList(double v) { return shortList(Eigen::Matrix<double, 1, 1>(v)); }
+
+std::string helpFooter() {
+  const RigidBodyScenario& a = rigidBodyScenarios().front();
+  const HeavyTopSetup top;
+  const KirchhoffSetup kirchhoff;
+  return "\nSystems (--system):\n" + app::describeChoices(systemDescriptions()) +
+         "\nScenarios (--scenario, rigid body only; alpha " + shortList(a.alpha) + ", omega0 " +
+         shortList(a.omega0) + ", M0 = inertia * omega0):\n" +
+         [] {
+           std::vector<std::pair<std::string, std::string>> lines;
+           for (const auto& s : rigidBodyScenarios()) lines.push_back({s.name, s.description});
+           return app::describeChoices(lines);
+         }() +
+         "\nMethods (--method; default: every method that applies to the system):\n" +
+         app::describeChoices(methodDescriptions()) + "\nDefaults of the other systems (t-end " +
+         shortList(top.t_end) + "):\n  heavy-top  inertia " + shortList(top.inertia) + ", mgl " +
+         shortList(top.mgl) + ", chi " + shortList(top.chi) + ", mu0 " + shortList(top.mu0) +
+         ", metric " + shortList(top.metric) + ", alpha " + shortList(top.alpha) +
+         "\n  kirchhoff  inertia " + shortList(kirchhoff.inertia) + ", mass " +
+         shortList(kirchhoff.mass) + ", mu0 " + shortList(kirchhoff.mu0) + ", metric " +
+         shortList(kirchhoff.metric) + ", alpha " + shortList(kirchhoff.alpha) +
+         "\n\nA parameter that differs from the scenario's is recorded in summary.json, whose "
+         "scenario is then \"custom\".\nExit status: 0 ok, 1 a method failed or a file could not "
+         "be written, 2 bad input (nothing written).\n";
+}
+
+}  // namespace
+
+const std::vector<std::pair<std::string, std::string>>& systemDescriptions() {
+  static const std::vector<std::pair<std::string, std::string>> systems{
+      {"rigid-body", "free rigid body on so(3)*, K = alpha I (paper, Section 5)"},
+      {"heavy-top", "heavy top on se(3)*, Hamiltonian-form DDB, K = alpha diag(metric)"},
+      {"kirchhoff", "rigid body in ideal fluid on se(3)*, K = alpha diag(metric)"}};
+  return systems;
+}
+
+void addOptions(CLI::App& cli, Options& o) {
+  const RigidBodyScenario& a = rigidBodyScenarios().front();
+  cli.add_option("--system", o.system, "rigid-body | heavy-top | kirchhoff (listed below)")
+      ->capture_default_str();
+  cli.add_option("--scenario", o.scenario, "A | B | C, rigid body only (listed below)")
+      ->capture_default_str();
+  cli.add_option("--method", o.methods,
+                 "comma-separated methods (default: every one that applies)");
+  cli.add_option("--h", o.h, "step size")->capture_default_str();
+  cli.add_option("--t-end", o.t_end,
+                 "final time (default: the scenario's, A 30, B and C 250; other systems " +
+                     shortList(HeavyTopSetup().t_end) +
+                     "); rounded to a whole number of steps, with a warning");
+  cli.add_option("--every", o.every, "write every K-th state and the last one to <method>.csv")
+      ->capture_default_str();
+  cli.add_option("--out", o.out, "output folder")->capture_default_str();
+  cli.add_flag("--plot", o.plot, "render PNG figures with matplotlib");
+  cli.add_option("--sweep-h", o.sweep, "HMIN:HMAX:COUNT log-spaced step sizes -> error_vs_h.csv");
+  cli.add_option("--repeat", o.repeat,
+                 "timed runs per method for the median runtime, for runs shorter than 1 s")
+      ->capture_default_str();
+  cli.add_option("--inertia", o.inertia,
+                 "principal moments a,b,c (default: scenario A/B " + shortList(a.inertia) + ", C " +
+                     shortList(rigidBodyScenarios().back().inertia) + ", other systems " +
+                     shortList(HeavyTopSetup().inertia) + ")");
+  cli.add_option(
+      "--alpha", o.alpha,
+      "dissipation scale, K = alpha I or alpha diag(metric) (default " + shortList(a.alpha) + ")");
+  cli.add_option(
+      "--omega0", o.omega0,
+      "rigid body: initial angular velocity x,y,z (default " + shortList(a.omega0) + ")");
+  cli.add_option("--mgl", o.mgl,
+                 "heavy top: m g l (default " + shortList(HeavyTopSetup().mgl) + ")");
+  cli.add_option(
+      "--chi", o.chi,
+      "heavy top: centre-of-mass direction x,y,z (default " + shortList(HeavyTopSetup().chi) + ")");
+  cli.add_option("--mu0", o.mu0, "heavy top, Kirchhoff: initial momentum, 6 numbers (below)");
+  cli.add_option("--metric", o.metric,
+                 "heavy top, Kirchhoff: k1,...,k6, K = alpha diag(k) (default " +
+                     shortList(HeavyTopSetup().metric) + ")");
+  cli.add_option(
+      "--mass", o.mass,
+      "Kirchhoff: added masses m1,m2,m3 (default " + shortList(KirchhoffSetup().mass) + ")");
+  app::addLogFlags(cli, o.log);
+  app::addVersionFlag(cli, kApp);
+  cli.footer(helpFooter());
+}
+
+long stepCount(double t_end, double h, const std::string& flag, const std::string& text) {
+  const double n = std::round(t_end / h);
+  if (n > static_cast<double>(kMaxSteps)) {
+    app::usageError(flag, text, fmt::format("more than 1e9 steps of h = {} to t-end {}", h, t_end));
+  }
+  return std::max(1L, static_cast<long>(n));
+}
+
+double optionalNumber(const std::string& flag, const std::string& text, double fallback) {
+  return text.empty() ? fallback : app::parseNumber(flag, text, text);
+}
+
+Settings commonSettings(const Options& o, double default_t_end) {
+  Settings s;
+  s.h = app::parseNumber("--h", o.h, o.h);
+  if (!(s.h > 0)) app::usageError("--h", o.h, "must be > 0");
+  s.t_end = optionalNumber("--t-end", o.t_end, default_t_end);
+  if (!(s.t_end > 0)) app::usageError("--t-end", o.t_end, "must be > 0");
+  // The message names both; the flag is --t-end if given (every default t-end takes at
+  // most 2500 steps of the default h), else --h.
+  s.steps = o.t_end.empty() ? stepCount(s.t_end, s.h, "--h", o.h)
+                            : stepCount(s.t_end, s.h, "--t-end", o.t_end);
+  if (o.repeat < 1 || o.repeat > kMaxRepeat) {
+    app::usageError("--repeat", std::to_string(o.repeat), "must be in [1, 1000]");
+  }
+  if (o.every < 1) app::usageError("--every", std::to_string(o.every), "must be >= 1");
+  if (!o.sweep.empty()) {
+    const auto parts = app::split(o.sweep, ':');
+    if (parts.size() != 3) app::usageError("--sweep-h", o.sweep, "expected HMIN:HMAX:COUNT");
+    s.sweep.h_min = app::parseNumber("--sweep-h", o.sweep, parts[0]);
+    s.sweep.h_max = app::parseNumber("--sweep-h", o.sweep, parts[1]);
+    const double count = app::parseNumber("--sweep-h", o.sweep, parts[2]);
+    if (!(s.sweep.h_min > 0) || !(s.sweep.h_max >= s.sweep.h_min) || count < 1 || count > 1000 ||
+        count != std::floor(count)) {
+      app::usageError("--sweep-h", o.sweep,
+                      "need 0 < HMIN <= HMAX and an integer COUNT in [1, 1000]");
+    }
+    s.sweep.count = static_cast<int>(count);
+    stepCount(s.t_end, s.sweep.h_min, "--sweep-h", o.sweep);
+  }
+  s.methods = o.methods.empty() ? methodNames() : app::splitItems("--method", o.methods);
+  for (auto m = s.methods.begin(); m != s.methods.end(); ++m) {
+    app::requireChoice("--method", *m, methodNames());
+    // Twice the same method would write its file twice and its summary entry twice.
+    if (std::find(s.methods.begin(), m, *m) != m) {
+      app::usageError("--method", o.methods, *m + " is given twice");
+    }
+  }
+  s.out = o.out;
+  return s;
+}
+
+}  // namespace ddb::compare

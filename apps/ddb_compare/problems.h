@@ -1,0 +1,88 @@
+// ddb-compare's problems (docs/file-formats.md, "ddb-compare"): the rigid body of a paper
+// scenario (docs/conventions.md §3) or the heavy top or Kirchhoff body, with the
+// parameters given on the command line, and the check that the reference can resolve the
+// flow (docs/bad-inputs.md, "Decisions").
+#pragma once
+
+#include <ddb/core/lie_poisson_system.h>
+#include <ddb/groups/se3.h>
+#include <ddb/groups/so3.h>
+#include <ddb/integrators/flow_rate.h>
+#include <spdlog/spdlog.h>
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/cli.h"
+#include "common/json.h"
+#include "ddb_compare/options.h"
+
+namespace ddb::compare {
+
+/// One system's problem: the system, μ0, the scenario label and its parameters.
+template <class G>
+struct Problem {
+  std::shared_ptr<const LiePoissonSystem<G>> system;
+  typename G::template Dual<double> mu0;
+  std::string scenario;                        // "A", "B", "C", "custom" or "none"
+  std::string scenario_base;                   // the scenario "custom" started from
+  double t_end = 0.0;                          // the default horizon
+  double alpha = 0.0;                          // the dissipation scale, for energy_rises
+  app::Json parameters = app::Json::object();  // summary.json's "parameters"
+};
+
+/// The rigid body of --scenario with --inertia, --alpha, --omega0 over its values.
+Problem<SO3> rigidBodyProblem(const CLI::App& cli, const Options& o);
+
+/// The heavy top or Kirchhoff body (--system) with the given parameters over the defaults.
+Problem<SE3> se3Problem(const CLI::App& cli, const Options& o);
+
+/// Why the reference cannot follow the flow from μ₀ to t_end in at most kMaxSteps of
+/// its time scale 1/rate, or "" if it can. An overflowing or extremely stiff problem
+/// (α = 1e308, 𝕀 = 1e-300, μ₀ = 1e200) would otherwise run for hours or fail at step 0.
+template <class G>
+std::string unresolvable(const Problem<G>& p, double t_end) {
+  const double rate = flowRate(*p.system, p.mu0);
+  if (rate * t_end <= static_cast<double>(kMaxSteps)) return "";
+  return fmt::format(
+      "the flow's rate |df/dmu|_inf = {:.3g} at mu0 exceeds 1e9/t-end = {:.3g}: no integrator "
+      "resolves it in 1e9 steps",
+      rate, static_cast<double>(kMaxSteps) / t_end);
+}
+
+/// Bad input if the problem cannot be resolved (unresolvable()), naming the first given
+/// flag whose default alone makes it resolvable, else the first given one: the flag
+/// whose value made the flow too fast or overflow.
+template <class G, class MakeProblem>
+void requireResolvable(const Options& o, const Problem<G>& problem, const MakeProblem& make) {
+  const auto horizon = [](const Options& options, double fallback) {
+    return optionalNumber("--t-end", options.t_end, fallback);
+  };
+  const std::string why = unresolvable(problem, horizon(o, problem.t_end));
+  if (why.empty()) return;
+  const std::vector<std::pair<const char*, std::string Options::*>> flags{
+      {"--alpha", &Options::alpha},   {"--inertia", &Options::inertia},
+      {"--omega0", &Options::omega0}, {"--mu0", &Options::mu0},
+      {"--mgl", &Options::mgl},       {"--chi", &Options::chi},
+      {"--metric", &Options::metric}, {"--mass", &Options::mass},
+      {"--t-end", &Options::t_end}};
+  const std::pair<const char*, std::string Options::*>* blamed = nullptr;
+  for (const auto& flag : flags) {
+    if ((o.*flag.second).empty()) continue;
+    Options reverted = o;
+    (reverted.*flag.second).clear();
+    const auto fixed = make(reverted);
+    if (unresolvable(fixed, horizon(reverted, fixed.t_end)).empty()) {
+      blamed = &flag;
+      break;
+    }
+    if (blamed == nullptr) blamed = &flag;
+  }
+  if (blamed == nullptr) throw std::logic_error("the default problem is unresolvable: " + why);
+  app::usageError(blamed->first, o.*blamed->second, why);
+}
+
+}  // namespace ddb::compare

@@ -1,0 +1,97 @@
+// ddb-compare's files (docs/file-formats.md, "Output files"): <method>.csv as the run
+// goes, summary.json and runtime_table.md from every method's result, error_vs_h.csv
+// from the sweep.
+#pragma once
+
+#include <ddb/core/lie_poisson_system.h>
+
+#include <Eigen/Core>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "common/atomic_file.h"
+#include "common/csv_row.h"
+#include "common/json.h"
+
+namespace ddb::compare {
+
+/// <method>.csv rows as they are computed (docs/file-formats.md): t, μ, energy,
+/// Casimirs.
+template <class G>
+class TrajectoryCsv {
+ public:
+  using Dual = typename G::template Dual<double>;
+
+  TrajectoryCsv(app::AtomicFile& file, const LiePoissonSystem<G>& system)
+      : file_(file), system_(system), row_(G::kDim + 2 + G::kNumCasimirs) {
+    std::string header = "t";
+    for (int i = 1; i <= G::kDim; ++i) header += ",m" + std::to_string(i);
+    header += ",energy";
+    if (G::kNumCasimirs == 1) {
+      header += ",casimir";
+    } else {
+      for (int i = 1; i <= G::kNumCasimirs; ++i) header += ",casimir" + std::to_string(i);
+    }
+    file_.write(header + "\n");
+  }
+
+  void operator()(long, double t, const Dual& mu) {
+    row_.put(t);
+    for (int i = 0; i < G::kDim; ++i) row_.put(mu(i));
+    row_.put(system_.energy(mu));
+    const auto c = system_.casimirs(mu);
+    for (int i = 0; i < G::kNumCasimirs; ++i) row_.put(c(i));
+    row_.writeTo(file_);
+  }
+
+ private:
+  app::AtomicFile& file_;
+  const LiePoissonSystem<G>& system_;
+  app::CsvRow row_;
+};
+
+/// What summary.json and runtime_table.md say of one method.
+struct MethodResult {
+  std::string name;
+  Eigen::VectorXd final;
+  double energy_final = 0.0;
+  long steps = 0;
+  double t_final = 0.0;
+  std::optional<long> energy_rises;  // for the methods EnergyRises::applies to
+  bool ok = true;
+  std::string failed_label, failure;  // "FAILED at step k" and why, if not ok
+  long failed_step = 0;
+  double err_final = 0.0, casimir_drift = 0.0, runtime_s = 0.0;
+  int timed_runs = 1;
+};
+
+/// summary.json's "methods" and "runtime_table" and runtime_table.md, method by method.
+class Report {
+ public:
+  /// `repeat`: --repeat, named in runtime_table.md's header.
+  explicit Report(int repeat);
+  void add(const MethodResult& result);
+  /// Writes summary.json (`head` followed by "methods" and "runtime_table") and
+  /// runtime_table.md to `out`.
+  void write(const std::filesystem::path& out, app::Json head) const;
+
+ private:
+  app::Json methods_ = app::Json::object();
+  app::Json runtime_table_ = app::Json::object();
+  std::string table_;
+};
+
+/// error_vs_h.csv: one row per method and step size of the sweep.
+class SweepCsv {
+ public:
+  SweepCsv();
+  void add(const std::string& method, double h, double err_final, double casimir_drift,
+           double runtime_s);
+  void write(const std::filesystem::path& out) const;
+
+ private:
+  std::string rows_;
+};
+
+}  // namespace ddb::compare

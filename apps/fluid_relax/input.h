@@ -1,0 +1,32 @@
+// fluid-relax's input, validated: the numbers of the command line, the initial
+// vorticity (generated, or read from --init-file) and the step, or a UsageError naming
+// the flag (docs/bad-inputs.md).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <Eigen/Core>
+#include <filesystem>
+#include <string>
+
+#include "fluid_relax/options.h"
+
+namespace ddb::fluid {
+
+using Matrix = Eigen::MatrixXcd;
+
+/// Everything the run needs, validated.
+struct Settings {
+  Matrix W0;
+  double alpha = 0.0, h = 0.0;
+  bool default_h = false;
+  long steps = 0;
+  std::string init;  // random, l1, zonal or file
+  std::filesystem::path out;
+};
+
+/// Every check of the input (docs/bad-inputs.md) in the order the messages name them:
+/// the method, α, --steps or --t-end, W0 (--init-file read and checked, or generated),
+/// h (given or the default) and a first step that does not overflow.
+Settings settings(const CLI::App& cli, const Options& o);
+
+}  // namespace ddb::fluid

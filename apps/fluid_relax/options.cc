@@ -1,0 +1,70 @@
+#include "fluid_relax/options.h"
+
+#include <ddb/integrators/method_table.h>
+
+#include "common/cli.h"
+#include "common/format.h"
+
+namespace ddb::fluid {
+
+const std::vector<std::pair<std::string, std::string>>& initDescriptions() {
+  static const std::vector<std::pair<std::string, std::string>> inits{
+      {"random", "i.i.d. normal real and imaginary parts, projected to su(N)"},
+      {"l1", "W = U X3 U^H, U a random unitary: the orbit of the l = 1 element X3"},
+      {"zonal", "i diag(d), d normal: a steady state, [P, W] = 0"}};
+  return inits;
+}
+
+std::vector<std::pair<std::string, std::string>> fluidMethods() {
+  std::vector<std::pair<std::string, std::string>> methods;
+  for (const MethodInfo& m : kMethods) {
+    if ((m.groups & kMatrixGroups) != 0 && m.kind != MethodKind::kReference) {
+      methods.emplace_back(m.name, m.description);
+    }
+  }
+  return methods;
+}
+
+void addOptions(CLI::App& cli, Options& o) {
+  cli.add_option("--n", o.n, "resolution N, 2 <= N <= " + std::to_string(kMaxN))
+      ->capture_default_str();
+  cli.add_option("--alpha", o.alpha,
+                 "double-bracket coefficient (> 0 relaxes to lower energy, < 0 raises it)")
+      ->capture_default_str();
+  cli.add_option("--h", o.h,
+                 "step size (default " + app::number(kStepFactor) +
+                     " hbar/||P0||_2, P0 the initial stream matrix; recorded in summary.json)");
+  cli.add_option("--steps", o.steps, "number of steps (exactly one of --steps and --t-end)");
+  cli.add_option("--t-end", o.t_end,
+                 "final time: round(T/h) steps of the given --h, or with the default h the "
+                 "smallest step count whose equal steps are no longer than it");
+  cli.add_option("--seed", o.seed, "seed of the initial vorticity")
+      ->capture_default_str()
+      ->check(
+          [](const std::string& text) {
+            // CLI11 would wrap a negative seed around to 2^64 - 1 without a word.
+            return text.rfind('-', 0) != 0 ? std::string()
+                                           : text + " is negative; a seed is in [0, 2^64)";
+          },
+          "");
+  cli.add_option("--init", o.init, "initial vorticity (listed below)")->capture_default_str();
+  cli.add_option("--init-file", o.init_file,
+                 "read W0 from a CSV of N rows x 2N columns (row j: Re W[j,:] then Im W[j,:]); "
+                 "N is taken from the file");
+  cli.add_option("--method", o.method, "integrator (listed below)")->capture_default_str();
+  cli.add_option("--every", o.every, "write every K-th state and the last one to history.csv")
+      ->capture_default_str();
+  cli.add_option("--out", o.out, "output folder")->capture_default_str();
+  cli.add_flag("--plot", o.plot, "render PNG figures (python3 with matplotlib and scipy)");
+  app::addLogFlags(cli, o.log);
+  app::addVersionFlag(cli, kApp);
+  cli.footer(
+      "\nInitial vorticities (--init; all scaled to ||W||_F = sqrt(N), seeded by --seed):\n" +
+      app::describeChoices(initDescriptions()) + "\nMethods (--method):\n" +
+      app::describeChoices(fluidMethods()) +
+      "\nFiles in --out: history.csv, W_final.csv, omega_initial.csv, omega_final.csv, "
+      "summary.json\n(docs/file-formats.md).\nExit status: 0 ok, 1 a step failed or a "
+      "file could not be written, 2 bad input (nothing written).\n");
+}
+
+}  // namespace ddb::fluid

@@ -1,0 +1,46 @@
+// fluid-relax's command line (docs/file-formats.md, "fluid-relax"): the options and --help
+// with the initial vorticities and methods.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/logging.h"
+
+namespace ddb::fluid {
+
+constexpr const char* kApp = "fluid-relax";
+// The app's largest N, below SUN::kMaxN: a DDB step costs about 20 complex N×N products
+// (docs/conventions.md §4), some seconds each step at N = 1024 on two cores, and every
+// state's spectrum is computed for spectrum_drift.
+constexpr Eigen::Index kMaxN = 1024;
+constexpr long kMaxSteps = 1000000000L;
+// Default step: h = kStepFactor·ħ/‖P₀‖₂, the fixed point's contraction rate h‖P‖₂/ħ of
+// docs/conventions.md §2 kept small, so that a Legendre solve takes a few iterations.
+constexpr double kStepFactor = 0.02;
+
+/// --init's choices, with their descriptions for --help.
+const std::vector<std::pair<std::string, std::string>>& initDescriptions();
+
+/// The methods for the fluid: every entry of the method table for matrix groups but the
+/// dense reference, with the table's descriptions.
+std::vector<std::pair<std::string, std::string>> fluidMethods();
+
+/// The options as given (numbers as text where messages quote them).
+struct Options {
+  long n = 32, steps = 0, every = 1;
+  std::uint64_t seed = 1;
+  std::string alpha = "0.5", h, t_end, init = "random", init_file, method = "ddb-cay";
+  std::string out = "results-fluid";
+  bool plot = false;
+  app::LogFlags log;
+};
+
+/// Adds every option of Options, --version and the --help footer.
+void addOptions(CLI::App& cli, Options& o);
+
+}  // namespace ddb::fluid

@@ -1,0 +1,47 @@
+#include "fluid_relax/outputs.h"
+
+namespace ddb::fluid {
+
+HistoryCsv::HistoryCsv(const std::filesystem::path& path) : file_(path), row_(5) {
+  file_.write("t,energy,enstrophy,commutator_norm,spectrum_drift\n");
+}
+
+void HistoryCsv::write(double t, double energy, double enstrophy, double commutator_norm,
+                       double spectrum_drift) {
+  row_.put(t);
+  row_.put(energy);
+  row_.put(enstrophy);
+  row_.put(commutator_norm);
+  row_.put(spectrum_drift);
+  row_.writeTo(file_);
+}
+
+void writeMatrixCsv(const std::filesystem::path& path, const Eigen::MatrixXcd& W) {
+  app::AtomicFile file(path);
+  app::CsvRow row(static_cast<std::size_t>(2 * W.cols()));
+  for (Eigen::Index j = 0; j < W.rows(); ++j) {
+    for (Eigen::Index k = 0; k < W.cols(); ++k) row.put(W(j, k).real());
+    for (Eigen::Index k = 0; k < W.cols(); ++k) row.put(W(j, k).imag());
+    row.writeTo(file);
+  }
+  file.commit();
+}
+
+void writeOmegaCsv(const std::filesystem::path& path, const SphericalHarmonicBasis& basis,
+                   const Eigen::MatrixXcd& W) {
+  const Eigen::VectorXd omega = basis.coefficients(W);
+  app::AtomicFile file(path);
+  file.write("l,m,omega\n");
+  app::CsvRow row(3);
+  for (Eigen::Index l = 0; l < basis.size(); ++l) {
+    for (Eigen::Index m = -l; m <= l; ++m) {
+      row.put(static_cast<double>(l));
+      row.put(static_cast<double>(m));
+      row.put(omega(SphericalHarmonicBasis::index(l, m)));
+      row.writeTo(file);
+    }
+  }
+  file.commit();
+}
+
+}  // namespace ddb::fluid

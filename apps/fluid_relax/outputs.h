@@ -1,0 +1,38 @@
+// fluid-relax's CSV files (docs/file-formats.md, "fluid-relax"): history.csv as the run
+// goes, W_final.csv in the layout of --init-file, omega_initial.csv and omega_final.csv.
+#pragma once
+
+#include <ddb/systems/spherical_harmonic_basis.h>
+
+#include <Eigen/Core>
+#include <filesystem>
+
+#include "common/atomic_file.h"
+#include "common/csv_row.h"
+
+namespace ddb::fluid {
+
+/// history.csv: one row per written state, appended as the run goes.
+class HistoryCsv {
+ public:
+  /// Creates the file (through AtomicFile) with its header.
+  explicit HistoryCsv(const std::filesystem::path& path);
+  void write(double t, double energy, double enstrophy, double commutator_norm,
+             double spectrum_drift);
+  /// Completes the file under its name (AtomicFile::commit).
+  void commit() { file_.commit(); }
+
+ private:
+  app::AtomicFile file_;
+  app::CsvRow row_;
+};
+
+/// W in the layout of --init-file: row j is Re W[j, :] then Im W[j, :].
+void writeMatrixCsv(const std::filesystem::path& path, const Eigen::MatrixXcd& W);
+
+/// The real spherical-harmonic coefficients ω_lm of W (docs/conventions.md §2), one row
+/// "l,m,omega" each, for the figures.
+void writeOmegaCsv(const std::filesystem::path& path, const SphericalHarmonicBasis& basis,
+                   const Eigen::MatrixXcd& W);
+
+}  // namespace ddb::fluid
