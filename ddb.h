@@ -22,6 +22,7 @@
 #include <ddb/groups/sun.h>
 #include <ddb/integrators/composition.h>
 #include <ddb/integrators/ddb.h>
+#include <ddb/integrators/flow_rate.h>
 #include <ddb/integrators/matrix_cayley_transport.h>
 #include <ddb/integrators/matrix_legendre.h>
 #include <ddb/integrators/method_table.h>
