@@ -9,8 +9,9 @@
 // (I + a) p̃ (I − a) = M, Ad*_{cay(2a)} M = (I − a) p̃ (I + a) = M − 2[a, p̃]: one product
 // when the solver certified p̃ to rounding (MatrixLegendreSolver::frozenSolution), else
 // cay(2a) = 2(I − a)⁻¹ − I by one inverse and Uᴴ M U by two products. The second, with
-// dissipation: [p, a] = (ap)ᴴ − ap from the solver's a p, one inverse for cay(2b) and two
-// products. The workspaces are allocated when the size first appears, then reused.
+// dissipation: [p, a] = (ap)ᴴ − ap from the solver's a p, b = k♯([p, a]), and the same
+// identity with b, M − 2[b, q], by one inverse and three products (dissipate below). The
+// workspaces are allocated when the size first appears, then reused.
 #pragma once
 
 #include <ddb/core/detail/dense_inverse.h>
@@ -41,10 +42,7 @@ class MatrixCayleyTransport {
       cayleyOfTwice(a, rotation_);  // cay(hξ)
       conjugate(rotation_, mu);
     }
-    if (!half_.isZero(0.0)) {
-      cayleyOfTwice(half_, rotation_);  // cay(hφ)
-      conjugate(rotation_, mu);
-    }
+    if (!half_.isZero(0.0)) dissipate(half_, mu);
   }
 
  private:
@@ -57,6 +55,23 @@ class MatrixCayleyTransport {
     }
     out *= 2.0;
     out.diagonal().array() -= 1.0;
+  }
+
+  // mu ← C⁻¹ mu C with C = cay(2b), as the increment mu − 2[b, q], q = (I + b)⁻¹ mu (I − b)⁻¹
+  // (docs/conventions.md §2). Conjugating by the formed C puts the same rounding of C into
+  // every step of a steady flow, and the spectrum drifts linearly; the increment's rounding
+  // is relative to the correction, which vanishes there (docs/long-run.md, "Matrix groups").
+  // b is skew-Hermitian, so (I − b)⁻¹ = ((I + b)⁻¹)ᴴ, and [b, q] = bq − (bq)ᴴ as q is too.
+  void dissipate(const Dual& b, Dual& mu) {
+    rotation_ = b;
+    rotation_.diagonal().array() += 1.0;
+    if (!inverse_.invert(rotation_)) {
+      throw NonFiniteState("Cayley transport", -1, NAN, NAN, b, "Cayley argument (I + b singular)");
+    }
+    product_.noalias() = mu * rotation_.adjoint();  // mu (I − b)⁻¹
+    commutator_.noalias() = rotation_ * product_;   // q
+    product_.noalias() = b * commutator_;           // b q
+    mu -= 2.0 * (product_ - product_.adjoint());    // mu − 2[b, q]
   }
 
   // mu ← Uᴴ mu U.
