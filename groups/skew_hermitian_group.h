@@ -13,6 +13,7 @@
 
 #include <ddb/core/errors.h>
 #include <ddb/core/lie_group.h>
+#include <ddb/groups/skew_hermitian_eigenbasis.h>
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
@@ -58,15 +59,13 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
     return vee(m);
   }
 
-  /// exp(x) = V diag(e^{iλ}) Vᴴ from the eigenpairs of the Hermitian −ix: unitary
-  /// (orthogonal) to round-off, unlike a Padé approximant.
+  /// exp(x) = I + V diag(e^{iθ} − 1) Vᴴ from the eigenpairs of the Hermitian −ix: unitary
+  /// (orthogonal) to round-off, unlike a Padé approximant (skew_hermitian_eigenbasis.h).
   template <class X>
   static X exp(const X& x) {
-    const Eigen::SelfAdjointEigenSolver<Complex> eigen(toComplex(x) * std::complex<double>(0, -1));
-    const Eigen::VectorXcd phases =
-        eigen.eigenvalues().unaryExpr([](double l) { return std::polar(1.0, l); });
-    return fromComplex<X>(eigen.eigenvectors() * phases.asDiagonal() *
-                          eigen.eigenvectors().adjoint());
+    X g(x.rows(), x.cols());
+    eigenbasisOf(x).exponential(1.0, g);
+    return g;
   }
 
   /// log(g) = V diag(i arg λ) Vᴴ for unitary g (a normal matrix: its complex Schur form
@@ -117,6 +116,40 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
   static X AdDual(const X& g, const X& mu) {
     return g.adjoint() * mu * g;
   }
+  // The exponential's tangent maps in closed form (docs/conventions.md §2, "Matrix
+  // algebras"): ad_x multiplies entry (a, b) of x's eigenbasis by iδ, δ = θ_a − θ_b, and is
+  // skew-adjoint under the trace pairing, so with f(iη) = (e^{iη} − 1)/(iη)
+  //   dexp_x = f(ad_x),  dexp⁻¹_x = 1/f(ad_x),  (dexp⁻¹_x)* = 1/f(−ad_x).
+  // They shadow LieGroupBase's series (which stay the tests' independent reference).
+
+  /// dexp_x y = Σ_j ad_x^j y / (j+1)!.
+  template <class X>
+  static X dexp(const X& x, const X& y) {
+    X out(y.rows(), y.cols());
+    eigenbasisOf(x).apply(expm1OfIOverI, 1.0, y, out);
+    return out;
+  }
+  /// dexp⁻¹_x y = Σ_j B_j/j! ad_x^j y; poles where ad_x has an eigenvalue 2πik, k ≠ 0.
+  template <class X>
+  static X dexpInv(const X& x, const X& y) {
+    X out(y.rows(), y.cols());
+    eigenbasisOf(x).apply([](double eta) { return 1.0 / expm1OfIOverI(eta); }, 1.0, y, out);
+    return out;
+  }
+  /// (dexp⁻¹_x)* μ = Σ_j B_j/j! (ad*_x)^j μ.
+  template <class X>
+  static X dexpInvDual(const X& x, const X& mu) {
+    X out(mu.rows(), mu.cols());
+    eigenbasisOf(x).apply([](double eta) { return 1.0 / expm1OfIOverI(-eta); }, 1.0, mu, out);
+    return out;
+  }
+  /// The spectral radius of ad_x, max_ab |θ_a − θ_b|: exp is one-to-one on ad-radii below
+  /// π, and dexp⁻¹_x has its poles at 2π (integrators/injectivity_guard.h).
+  template <class X>
+  static double adRadius(const X& x) {
+    return eigenbasisOf(x).adRadius();
+  }
+
   /// dcay⁻¹_x y = (I − x/2) y (I + x/2), in u(N).
   template <class X>
   static X dcayInv(const X& x, const X& y) {
@@ -209,6 +242,12 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
   template <class X>
   static Complex toComplex(const X& x) {
     return x.template cast<std::complex<double>>();
+  }
+  template <class X>
+  static SkewHermitianEigenbasis<X> eigenbasisOf(const X& x) {
+    SkewHermitianEigenbasis<X> basis;
+    if (!basis.compute(x)) throwInvalid("x", "a matrix with non-finite entries", "must be finite");
+    return basis;
   }
   template <class X, class E>
   static X fromComplex(const E& e) {

@@ -7,8 +7,10 @@
 
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
+#include <ddb/groups/cayley.h>
 #include <ddb/integrators/legendre_method.h>
 #include <ddb/integrators/matrix_cayley_transport.h>
+#include <ddb/integrators/matrix_exponential_transport.h>
 
 #include <memory>
 #include <string>
@@ -44,13 +46,11 @@ class Ddb : public LegendreMethod<R> {
   }
 
   /// Matrix groups: the same step in place, through the solver's solution and the
-  /// preallocated Cayley transport (no allocation once the size is known).
+  /// preallocated transport of the retraction (no allocation once the size is known).
   void advance(Dual& mu, double t, double h) override {
     if constexpr (isDynamicGroup<G>) {
       this->legendre_.solveInPlace(FixedMomentum<G>{mu}, mu, t, h);
-      const auto& solver = this->legendre_;
-      transport_.apply(this->system_->metric(), solver.halfStep(), solver.halfStepTimesSolution(),
-                       solver.frozenSolution(), mu);
+      transport_.apply(this->system_->metric(), this->legendre_, h, mu);
     } else {
       mu = step(mu, t, h);
     }
@@ -58,7 +58,9 @@ class Ddb : public LegendreMethod<R> {
 
  private:
   struct NoTransport {};
-  std::conditional_t<isDynamicGroup<G>, MatrixCayleyTransport<G>, NoTransport> transport_;
+  using MatrixTransport = std::conditional_t<std::is_same_v<R, Cayley<G>>, MatrixCayleyTransport<G>,
+                                             MatrixExponentialTransport<R>>;
+  std::conditional_t<isDynamicGroup<G>, MatrixTransport, NoTransport> transport_;
 };
 
 }  // namespace ddb

@@ -3,8 +3,9 @@
 // SE(3)) is below π, and dexp⁻¹_x has its poles at 2π (docs/conventions.md §1): a DDB step
 // with adRadius(hξ) ≥ π has Legendre solutions on other branches, and the solver converges
 // to one of them without a word (`--scenario B --h 5` climbed to the maximum-energy state).
-// Cayley has no such limit (cay maps so(3) one-to-one onto SO(3) minus the half-turns), and
-// the matrix groups, which have no adRadius, have Cayley methods only (method_table.h).
+// Cayley has no such limit (cay maps so(3) one-to-one onto SO(3) minus the half-turns). On
+// the matrix groups the matrix-free solver checks the same limit on ξ's eigenbasis
+// (matrix_legendre.h), which it has at hand.
 #pragma once
 
 #include <ddb/core/errors.h>

@@ -1,12 +1,14 @@
-// The discrete Legendre equation of a DDB Cayley step on a matrix group (SO(N), SU(N)),
-// Hamiltonian form, solved matrix-free (docs/conventions.md §2 and §4):
-//   target = (I + a) p (I − a),  a = h ξ(p)/2,  ξ = ∂H/∂μ(p),
-// for p in u(N) (so(N)), not projected to su(N). First the fixed point
-//   p ← target − [a, p] + a p a                                  (two products)
+// The discrete Legendre equation of a DDB step on a matrix group (SO(N), SU(N)), Hamiltonian
+// form, solved matrix-free (docs/conventions.md §2 and §4):
+//   target = (dτ⁻¹_{hξ(p)})* p,  ξ = ∂H/∂μ(p),
+// for p in u(N) (so(N)), not projected to su(N). The Cayley map, with a = hξ/2:
+//   target = (I + a) p (I − a), by the fixed point p ← target − [a, p] + a p a (two products)
 // from the guess of a CorrectionPredictor (linear prediction from the last corrections);
 // when it contracts too slowly (h‖ξ‖ near 1), Newton–Krylov: GMRES on the exact
-// Jacobian–vector products (four products each). Workspaces are allocated on the first
-// solve of a size and reused: no iteration allocates.
+// Jacobian–vector products (four products each). The exponential (sweep() below): the fixed
+// point in ξ's eigenbasis, or with the series truncated after ad^order; no Newton fallback
+// (a slow sweep goes on while it contracts). Workspaces are allocated on the first solve of a
+// size and reused: no iteration allocates.
 //
 // Ceres (ceres::Problem, dense QR, the Jacobian assembled from the same exact
 // Jacobian–vector products, one per coordinate) solves the same equation in real
@@ -22,13 +24,17 @@
 #pragma once
 
 #include <ceres/ceres.h>
+#include <ddb/core/detail/bernoulli.h>
 #include <ddb/core/detail/matrix_free_gmres.h>
 #include <ddb/core/detail/tiny_solver.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/groups/cayley.h>
+#include <ddb/groups/exponential.h>
+#include <ddb/groups/skew_hermitian_eigenbasis.h>
 #include <ddb/integrators/correction_predictor.h>
+#include <ddb/integrators/injectivity_guard.h>
 #include <ddb/integrators/legendre_equation.h>
 #include <ddb/integrators/legendre_stats.h>
 
@@ -52,6 +58,12 @@ class MatrixLegendreSolver {
   using Algebra = typename G::template Algebra<double>;
   using Dual = typename G::template Dual<double>;
   static_assert(isDynamicGroup<G>, "MatrixLegendreSolver is the solver of matrix groups");
+  static constexpr bool kCayley = std::is_same_v<R, Cayley<G>>;
+  static constexpr bool kExactExponential = std::is_same_v<R, Exponential<G>>;
+  static constexpr bool kTruncatedExponential = std::is_same_v<R, TruncatedExponential<G>>;
+  static_assert(
+      kCayley || kExactExponential || kTruncatedExponential,
+      "the matrix-free Legendre solver implements the Cayley and exponential retractions");
 
   /// A fixed-point sweep that shrinks the update by less than this hands over to Newton.
   static constexpr double kSlowContraction = 0.5;
@@ -61,11 +73,9 @@ class MatrixLegendreSolver {
   static constexpr int kMaxForcedFixedPoint = 2000;
   static constexpr Eigen::Index kMaxCeresDimension = 64;
 
-  MatrixLegendreSolver(const LiePoissonSystem<G>& system, const R&, LegendreForm form,
+  MatrixLegendreSolver(const LiePoissonSystem<G>& system, const R& retraction, LegendreForm form,
                        SolverOptions options)
-      : system_(system), form_(form), options_(options) {
-    static_assert(std::is_same_v<R, Cayley<G>>,
-                  "the matrix-free Legendre solver implements the Cayley retraction");
+      : system_(system), retraction_(retraction), form_(form), options_(options) {
     if (form_ != LegendreForm::kHamiltonian) {
       throw InvalidArgument(
           "form = lagrangian is invalid: matrix groups use the Hamiltonian form (unknown p)");
@@ -110,7 +120,7 @@ class MatrixLegendreSolver {
       if constexpr (kFixed) {
         return target.momentum;
       } else {
-        target_ = target(xi_, p_);
+        target.evaluateInto(xi_, p_, target_);
         return target_;
       }
     };
@@ -121,12 +131,13 @@ class MatrixLegendreSolver {
     bool converged = false;
     const bool forced = strategy_ == MatrixLegendreStrategy::kFixedPoint;
     const bool fixed_point = strategy_ == MatrixLegendreStrategy::kAuto || forced;
-    const int budget = (forced || !kFixed) ? kMaxForcedFixedPoint : kMaxFixedPoint;
+    // Without a Newton fallback (the exponential) the sweeps go on while they contract.
+    const int budget = (forced || !kFixed || !kCayley) ? kMaxForcedFixedPoint : kMaxFixedPoint;
     int extra = 0;  // sweeps past the tolerance, for a certified frozen solution
     for (int k = 0; fixed_point && k < budget; ++k) {
       updateVelocity(h);
       const Dual& W = targetValue();
-      G::cayleyFixedPoint(W, a_, p_, ap_, apa_, next_);
+      sweep(W, h);
       const double update = (next_ - p_).norm();
       ++stats_.fixed_point;
       if (!std::isfinite(update)) {
@@ -147,9 +158,11 @@ class MatrixLegendreSolver {
         stats_.residual = error;
         if (contracting && error <= tolerance) {
           converged = true;
-          if (certifyFrozenSolution(W, update, scale) || extra++ == kMaxExtraSweeps) break;
-        } else if (!forced && k >= 2 && update > kSlowContraction * previous) {
-          break;  // contracting too slowly: Newton–Krylov takes over
+          if (!kCayley || certifyFrozenSolution(W, update, scale) || extra++ == kMaxExtraSweeps) {
+            break;
+          }
+        } else if (!forced && k >= 2 && update > (kCayley ? kSlowContraction : 1.0) * previous) {
+          break;  // contracting too slowly: Newton–Krylov takes over (exp: not contracting)
         }
       } else {
         // Other targets move with p: the accepted iterate is the next one.
@@ -165,7 +178,12 @@ class MatrixLegendreSolver {
       previous = update;
       p_.swap(next_);
     }
-    if constexpr (kFixed) {
+    if constexpr (!kCayley) {
+      if (strategy_ != MatrixLegendreStrategy::kAuto && !forced) {
+        throw InvalidArgument(std::string("strategy is invalid: the ") + R::kName +
+                              " retraction is solved by the fixed point only");
+      }
+    } else if constexpr (kFixed) {
       const bool newton = strategy_ == MatrixLegendreStrategy::kNewtonKrylov ||
                           (strategy_ == MatrixLegendreStrategy::kAuto && !converged);
       const bool ceres = strategy_ == MatrixLegendreStrategy::kCeres;
@@ -188,6 +206,7 @@ class MatrixLegendreSolver {
                              (stats_.newton > 0 ? "Newton" : "fixed point") + ")",
                          -1, t, h, stats_.residual, tolerance);
     }
+    if constexpr (!kCayley) checkInjectivity(t, h, kFixed && kExactExponential);
     // The most accurate solution at hand: p̃ when certified (it solves the frozen-a equation
     // to rounding), else the next iterate.
     predictor_.remember(!kFixed ? p_ : frozen_exact_ ? frozen_ : next_, near);
@@ -201,6 +220,8 @@ class MatrixLegendreSolver {
   /// p̃ with (I + a) p̃ (I − a) = M to rounding (see solveInPlace), or nullptr when the
   /// last solve could not certify it (the update then forms cay(2a)).
   const Dual* frozenSolution() const { return frozen_exact_ ? &frozen_ : nullptr; }
+  /// The exponential: the eigenbasis of ξ = velocity() after a solve.
+  SkewHermitianEigenbasis<Dual>& eigenbasis() { return eigenbasis_; }
 
  private:
   /// Sweeps past the tolerance, at most, to certify the frozen solution.
@@ -239,6 +260,49 @@ class MatrixLegendreSolver {
     frozen_ = M - t1_ + t1_.adjoint() + apa_;
     ++stats_.refinements;
     return frozen_exact_ = true;
+  }
+
+  // One sweep p ← F(p) (into next_) of a fixed point of target = (dτ⁻¹_{hξ(p)})* p, after
+  // updateVelocity:
+  //   Cayley: F(p) = W − [a, p] + a p a = p − r(p), r(p) = (I + a)p(I − a) − W;
+  //   exp: F(p) = ((dexp⁻¹_{hξ})*)⁻¹ W, which multiplies entry (a, b) of ξ's eigenbasis by
+  //     (e^{−iδ} − 1)/(−iδ), δ = h(θ_a − θ_b) (skew_hermitian_eigenbasis.h): p enters through
+  //     ξ only, so the sweep contracts at the rate of that dependence alone;
+  //   exp, series cut after ad^order (the paper's ddb-exp): F(p) = p − r(p) with
+  //     r(p) = Σ_{j≤order} B_j/j! (ad*_{hξ})^j p − W, ad*_x μ = [μ, x] = μx − (μx)ᴴ.
+  void sweep(const Dual& W, double h) {
+    if constexpr (kCayley) {
+      G::cayleyFixedPoint(W, a_, p_, ap_, apa_, next_);
+    } else if constexpr (kExactExponential) {
+      if (!eigenbasis_.compute(xi_)) {
+        next_.setConstant(NAN);  // ξ not finite: the update shows it
+        return;
+      }
+      eigenbasis_.apply([](double eta) { return expm1OfIOverI(-eta); }, h, W, next_);
+    } else {
+      next_ = W;
+      delta_ = p_;
+      for (int j = 1; j <= retraction_.order(); ++j) {
+        t1_.noalias() = delta_ * a_;  // ad*_{hξ} = 2 ad*_a
+        delta_ = 2.0 * (t1_ - t1_.adjoint());
+        next_ -= bernoulliOverFactorial(j) * delta_;
+      }
+    }
+  }
+
+  // The exponential's injectivity limit (integrators/injectivity_guard.h): a solution with
+  // h·adRadius(ξ) ≥ π lies on another branch; refused as on SO(3). The eigenbasis of ξ is
+  // current after a DDB solve with the closed form, recomputed otherwise.
+  void checkInjectivity(double t, double h, bool basis_current) {
+    if (!basis_current && !eigenbasis_.compute(xi_)) {
+      throw NonFiniteState("discrete Legendre equation (matrix-free)", -1, t, h, xi_, "velocity");
+    }
+    const double norm = h * eigenbasis_.adRadius();
+    if (norm >= InjectivityGuard<R>::kLimit) {
+      throw InjectivityLimit(std::string("DDB with the ") + R::kName + " retraction", norm,
+                             InjectivityGuard<R>::kLimit,
+                             InjectivityGuard<R>::kLimit / eigenbasis_.adRadius(), -1, t, h);
+    }
   }
 
   // ξ = ∂H/∂μ(p), a = hξ/2.
@@ -389,6 +453,7 @@ class MatrixLegendreSolver {
   }
 
   const LiePoissonSystem<G>& system_;
+  const R& retraction_;
   LegendreForm form_;
   SolverOptions options_;
   CorrectionPredictor<Dual> predictor_;
@@ -400,6 +465,7 @@ class MatrixLegendreSolver {
   Dual p_, next_, xi_, a_, ap_, apa_, frozen_, residual_, delta_, delta_a_, t1_, t2_, target_;
 
   MatrixFreeGmres<Dual> gmres_;
+  SkewHermitianEigenbasis<Dual> eigenbasis_;
 };
 
 }  // namespace ddb

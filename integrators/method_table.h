@@ -75,10 +75,10 @@ inline constexpr std::array<MethodInfo, 13> kMethods{{
    kFixedSizeGroups | kMatrixGroups, true, false, 1, 2,
    MethodKind::kDdb, RetractionKind::kCayley, SchemeKind::kNone, ""},
   {"ddb-exp", "DDB step with exp, dexp^-1 series truncated at order 2 as in the paper",
-   kFixedSizeGroups, true, false, 1, 2,
+   kFixedSizeGroups | kMatrixGroups, true, false, 1, 2,
    MethodKind::kDdb, RetractionKind::kTruncatedExponential2, SchemeKind::kNone, ""},
   {"ddb-exp-exact", "DDB step with exp and the closed-form dexp^-1",
-   kFixedSizeGroups, true, false, 1, 2,
+   kFixedSizeGroups | kMatrixGroups, true, false, 1, 2,
    MethodKind::kDdb, RetractionKind::kExponential, SchemeKind::kNone, ""},
   {"sddb-paper-cay", "the paper's symmetric DDB, Cayley (order 1 as written; Lagrangian only)",
    kFixedSizeGroups, true, true, 1, 2,
@@ -90,16 +90,16 @@ inline constexpr std::array<MethodInfo, 13> kMethods{{
    kFixedSizeGroups | kMatrixGroups, true, false, 2, 2,
    MethodKind::kSymmetricDdb, RetractionKind::kCayley, SchemeKind::kNone, ""},
   {"sddb-exp", "one-step symmetric DDB, exp (order 2)",
-   kFixedSizeGroups, true, false, 2, 2,
+   kFixedSizeGroups | kMatrixGroups, true, false, 2, 2,
    MethodKind::kSymmetricDdb, RetractionKind::kExponential, SchemeKind::kNone, ""},
   {"ddb4-cay", "triple jump of sddb-cay (order 4)",
    kFixedSizeGroups | kMatrixGroups, true, false, 4, 4,
    MethodKind::kComposition, RetractionKind::kNone, SchemeKind::kTripleJump, "sddb-cay"},
   {"ddb4-exp", "triple jump of sddb-exp (order 4)",
-   kFixedSizeGroups, true, false, 4, 4,
+   kFixedSizeGroups | kMatrixGroups, true, false, 4, 4,
    MethodKind::kComposition, RetractionKind::kNone, SchemeKind::kTripleJump, "sddb-exp"},
   {"ddb6-exp", "Yoshida's 7-stage composition of sddb-exp (order 6)",
-   kFixedSizeGroups, true, false, 6, 6,
+   kFixedSizeGroups | kMatrixGroups, true, false, 6, 6,
    MethodKind::kComposition, RetractionKind::kNone, SchemeKind::kYoshida6, "sddb-exp"},
   {"rk4", "classical Runge-Kutta, order 4 (does not keep Casimirs)",
    kFixedSizeGroups | kMatrixGroups, false, false, 4, 4,
@@ -181,22 +181,19 @@ template <class G>
 template <class G>
 using MethodPointer = std::unique_ptr<OneStepMethod<G>>;
 
-/// A DDB-family method M<R> with the entry's retraction. Matrix groups have the Cayley
-/// map only; the table says so, and makeMethod checks the table first.
+/// A DDB-family method M<R> with the entry's retraction.
 template <class G, template <class> class M, class... Args>
 MethodPointer<G> withRetraction(RetractionKind r, std::shared_ptr<const LiePoissonSystem<G>> system,
                                 Args... args) {
   if (r == RetractionKind::kCayley) {
     return std::make_unique<M<Cayley<G>>>(system, Cayley<G>(), args...);
   }
-  if constexpr (!isDynamicGroup<G>) {
-    if (r == RetractionKind::kExponential) {
-      return std::make_unique<M<Exponential<G>>>(system, Exponential<G>(), args...);
-    }
-    if (r == RetractionKind::kTruncatedExponential2) {
-      return std::make_unique<M<TruncatedExponential<G>>>(system, TruncatedExponential<G>(2),
-                                                          args...);
-    }
+  if (r == RetractionKind::kExponential) {
+    return std::make_unique<M<Exponential<G>>>(system, Exponential<G>(), args...);
+  }
+  if (r == RetractionKind::kTruncatedExponential2) {
+    return std::make_unique<M<TruncatedExponential<G>>>(system, TruncatedExponential<G>(2),
+                                                        args...);
   }
   throw std::logic_error("method table: a retraction the group has not");
 }

@@ -18,11 +18,14 @@
 #pragma once
 
 #include <ddb/core/detail/jet_jacobian.h>
+#include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/integrators/legendre_method.h>
+#include <ddb/integrators/matrix_conjugation.h>
 
 #include <memory>
 #include <string>
+#include <type_traits>
 
 namespace ddb {
 
@@ -62,14 +65,69 @@ class SymmetricDdb : public LegendreMethod<R> {
   std::string name() const override { return this->nameWith("sddb-"); }
 
   Dual step(const Dual& mu, double t, double h) override {
-    Dual p;
-    const HalfForceTarget<R> target{*this->system_, this->retraction_, mu, h};
-    const Algebra xi = this->legendre_.solve(target, mu, t, h, p);
-    const Algebra half = (0.5 * h) * this->system_->dissipation(xi, p);
-    const Algebra hxi = h * xi;
-    const auto kick = this->retraction_.tau(half);
-    return G::AdDual(G::compose(G::compose(kick, this->retraction_.tau(hxi)), kick), mu);
+    if constexpr (isDynamicGroup<G>) {
+      Dual next = mu;
+      advance(next, t, h);
+      return next;
+    } else {
+      Dual p;
+      const HalfForceTarget<R> target{*this->system_, this->retraction_, mu, h};
+      const Algebra xi = this->legendre_.solve(target, mu, t, h, p);
+      const Algebra half = (0.5 * h) * this->system_->dissipation(xi, p);
+      const Algebra hxi = h * xi;
+      const auto kick = this->retraction_.tau(half);
+      return G::AdDual(G::compose(G::compose(kick, this->retraction_.tau(hxi)), kick), mu);
+    }
   }
+
+  /// Matrix groups: the same step in place, each factor of Ad*_{τ(hφ/2) τ(hξ) τ(hφ/2)} applied
+  /// as an increment (matrix_conjugation.h), with preallocated workspaces.
+  void advance(Dual& mu, double t, double h) override {
+    if constexpr (isDynamicGroup<G>) {
+      this->legendre_.solveInPlace(MatrixTarget{*this, mu, h}, mu, t, h);
+      const auto& solver = this->legendre_;
+      matrix_.halfForce(*this->system_, solver.velocity(), solver.solution(), h);
+      matrix_.kick.prepare(matrix_.half);
+      matrix_.kick.apply(mu);
+      matrix_.drift = h * solver.velocity();
+      matrix_.flow.prepare(matrix_.drift);
+      matrix_.flow.apply(mu);
+      matrix_.kick.apply(mu);
+    } else {
+      mu = step(mu, t, h);
+    }
+  }
+
+ private:
+  // The workspaces of the matrix-group step.
+  struct MatrixWorkspace {
+    Dual product, commutator, half, drift;
+    MatrixConjugation<R> kick, flow;
+    /// half = hφ/2 with φ = k♯(ad*_ξ p) = k♯([p, ξ]); [p, ξ] = pξ − (pξ)ᴴ for skew-Hermitian p, ξ.
+    void halfForce(const LiePoissonSystem<G>& system, const Dual& xi, const Dual& p, double h) {
+      product.noalias() = p * xi;
+      commutator = product - product.adjoint();
+      system.metric().sharpInto(commutator, half);
+      half *= 0.5 * h;
+    }
+  };
+  struct NoWorkspace {};
+
+  /// The half-force target Ad*_{τ(hφ(ξ, p)/2)} μ, written into the solver's workspace.
+  struct MatrixTarget {
+    SymmetricDdb& method;
+    const Dual& mu;
+    double h;
+    void evaluateInto(const Dual& xi, const Dual& p, Dual& out) const {
+      MatrixWorkspace& w = method.matrix_;
+      w.halfForce(*method.system_, xi, p, h);
+      out = mu;
+      w.kick.prepare(w.half);
+      w.kick.apply(out);
+    }
+  };
+
+  std::conditional_t<isDynamicGroup<G>, MatrixWorkspace, NoWorkspace> matrix_;
 };
 
 template <class R>

@@ -107,9 +107,11 @@ TEST(NonFinite, OverflowingTargetIsANonFiniteResidual) {
 }
 
 TEST(NonFinite, MatrixFreeSolveOverflowIsANonFiniteIterate) {
+  // α = 1e308 alone no longer overflows: the dissipative factors are applied as increments,
+  // and cay(2b) of a huge b is finite. A huge state makes a h ξ p overflow in the first sweep.
   auto fluid = makeZeitlinFluid(4, 1e308);
   auto method = makeMethod<SUN>("sddb-cay", fluid);
-  const Eigen::MatrixXcd W0 = randomVorticity(4, 7);
+  const Eigen::MatrixXcd W0 = 1e200 * randomVorticity(4, 7);
   try {
     integrate(*method, W0, 0.0, 0.1, 3, [](long, double, const Eigen::MatrixXcd&) {});
     FAIL() << "no error";

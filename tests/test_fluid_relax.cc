@@ -238,7 +238,7 @@ TEST(FluidRelax, BadInputExitsTwoNamingTheFlagAndWritesNothing) {
       {"--t-end 0", "--t-end"},
       {"--t-end nan", "--t-end"},
       {"--init vortex --steps 2", "--init"},
-      {"--method ddb-exp --steps 2", "--method"},
+      {"--method sddb-paper-cay --steps 2", "--method"},
       {"--every 0 --steps 2", "--every"},
       {"--steps 2 --init-file " + (files / "missing.csv").string(), "--init-file"},
       {"--steps 2 --init-file " + files.string(), "--init-file"},  // a folder

@@ -1,0 +1,120 @@
+// SkewHermitianEigenbasis: the spectral calculus of a skew-Hermitian (real: skew-symmetric)
+// matrix x, on which the exponential retraction of SO(N) and SU(N) rests
+// (docs/conventions.md §2, "Matrix algebras"). x = V diag(iθ) Vᴴ, θ real ascending, from
+// the Hermitian −ix; in x's eigenbasis (Â = Vᴴ A V) ad_x multiplies entry (a, b) by
+// i(θ_a − θ_b). So every function of ad_x with real Taylor coefficients (dexp, dexp⁻¹, their
+// duals under the trace pairing, where ad_x is skew-adjoint, and Ad*_{exp x}) acts as
+//   A ↦ V [F ∘ Â] Vᴴ,  F_ab = f(θ_a − θ_b),
+// one decomposition and then four products per application, instead of a series in ad_x.
+// Such F has F_ba = conj(F_ab), so skew-Hermitian A map to skew-Hermitian results, to which
+// apply() projects its rounding (a Hermitian part would never be corrected: the eigensolver
+// reads one triangle). Workspaces are allocated when a size first appears, then reused.
+#pragma once
+
+#include <ddb/core/detail/hermitian_eigensolver.h>
+
+#include <Eigen/Core>
+#include <cmath>
+#include <complex>
+
+namespace ddb {
+
+/// e^{iη} − 1, without the cancellation of cos η − 1 at small η.
+inline std::complex<double> expm1OfI(double eta) {
+  const double s = std::sin(0.5 * eta);
+  return {-2.0 * s * s, std::sin(eta)};
+}
+
+/// (e^{iη} − 1)/(iη), 1 at η = 0: the factor of dexp_x (z = iη), an entire function.
+inline std::complex<double> expm1OfIOverI(double eta) {
+  if (eta == 0.0) return 1.0;
+  const double s = std::sin(0.5 * eta);
+  return {std::sin(eta) / eta, 2.0 * s * s / eta};
+}
+
+template <class Matrix>
+class SkewHermitianEigenbasis {
+ public:
+  using Complex = Eigen::MatrixXcd;
+  static constexpr bool kReal = !Eigen::NumTraits<typename Matrix::Scalar>::IsComplex;
+
+  /// Decomposes x. Returns false when x is not finite (the eigensolver did not converge).
+  bool compute(const Matrix& x) {
+    allocate(x.rows());
+    hermitian_ = x.template cast<std::complex<double>>() * std::complex<double>(0.0, -1.0);
+    return solver_.compute(hermitian_);
+  }
+
+  /// θ, ascending.
+  const Eigen::VectorXd& phases() const { return solver_.eigenvalues(); }
+  const Complex& vectors() const { return solver_.eigenvectors(); }
+  /// max_ab |θ_a − θ_b|: the spectral radius of ad_x.
+  double adRadius() const { return phases()(phases().size() - 1) - phases()(0); }
+
+  /// out = V [F ∘ (Vᴴ in V)] Vᴴ with F_ab = factor(scale (θ_a − θ_b)), i.e. f(scale ad_x) for
+  /// factor(η) = f(iη); `in` skew-Hermitian and factor(−η) = conj(factor(η)). out may be in.
+  template <class Factor>
+  void apply(const Factor& factor, double scale, const Matrix& in, Matrix& out) {
+    const Complex& V = vectors();
+    const Eigen::VectorXd& theta = phases();
+    if constexpr (kReal) {
+      hermitian_ = in.template cast<std::complex<double>>();
+      product_.noalias() = hermitian_ * V;
+    } else {
+      product_.noalias() = in * V;
+    }
+    hat_.noalias() = V.adjoint() * product_;
+    for (Eigen::Index b = 0; b < hat_.cols(); ++b) {
+      for (Eigen::Index a = 0; a < hat_.rows(); ++a) {
+        hat_(a, b) *= factor(scale * (theta(a) - theta(b)));
+      }
+    }
+    product_.noalias() = V * hat_;
+    hat_.noalias() = product_ * V.adjoint();
+    if constexpr (kReal) {
+      out = hat_.real();
+    } else {
+      out = hat_;
+    }
+    makeSkewHermitian(out);
+  }
+
+  /// out = exp(scale·x) = I + V diag(e^{i scale θ} − 1) Vᴴ: formed as V diag(e^{iθ}) Vᴴ it is
+  /// unitary only to a few ulps more (docs/conventions.md §2).
+  void exponential(double scale, Matrix& out) {
+    const Complex& V = vectors();
+    for (Eigen::Index a = 0; a < V.cols(); ++a) {
+      product_.col(a) = V.col(a) * expm1OfI(scale * phases()(a));
+    }
+    hat_.noalias() = product_ * V.adjoint();
+    hat_.diagonal().array() += 1.0;
+    if constexpr (kReal) {
+      out = hat_.real();
+    } else {
+      out = hat_;
+    }
+  }
+
+  /// m ← (m − mᴴ)/2 in place.
+  static void makeSkewHermitian(Matrix& m) {
+    for (Eigen::Index j = 0; j < m.cols(); ++j) {
+      for (Eigen::Index i = 0; i < j; ++i) {
+        const auto v = 0.5 * (m(i, j) - Eigen::numext::conj(m(j, i)));
+        m(i, j) = v;
+        m(j, i) = -Eigen::numext::conj(v);
+      }
+      m(j, j) = 0.5 * (m(j, j) - Eigen::numext::conj(m(j, j)));
+    }
+  }
+
+ private:
+  void allocate(Eigen::Index n) {
+    if (hat_.rows() == n) return;
+    for (Complex* m : {&hermitian_, &product_, &hat_}) m->setZero(n, n);
+  }
+
+  HermitianEigensolver solver_;
+  Complex hermitian_, product_, hat_;
+};
+
+}  // namespace ddb

@@ -1,0 +1,93 @@
+// MatrixConjugation<R>: μ ← Ad*_{τ(x)} μ = τ(x)ᴴ μ τ(x) on a matrix group (SO(N), SU(N)),
+// in place and as an increment of μ (docs/conventions.md §2, "Matrix algebras"):
+// prepare(x) once, then apply(μ) to any number of momenta. Conjugating by a formed τ(x)
+// puts the same rounding of τ(x) into every step of a steady flow and the spectrum drifts
+// linearly; the increment's rounding is relative to the change, which vanishes at a steady
+// state (docs/long-run.md, "Matrix groups").
+//   Cayley, τ(x) = cay(2b), b = x/2: with q = (I + b)⁻¹ μ (I − b)⁻¹,
+//     Ad*_{cay(2b)} μ = (I − b) q (I + b) = μ − 2[b, q]      (one inverse, three products);
+//   exp: Ad*_{exp x} multiplies entry (a, b) of x's eigenbasis by e^{−iδ}, δ = θ_a − θ_b:
+//     μ + V [(e^{−iδ} − 1) ∘ Vᴴ μ V] Vᴴ                      (a decomposition, four products).
+// Workspaces are allocated when a size first appears, then reused.
+#pragma once
+
+#include <ddb/core/detail/dense_inverse.h>
+#include <ddb/core/errors.h>
+#include <ddb/groups/cayley.h>
+#include <ddb/groups/exponential.h>
+#include <ddb/groups/skew_hermitian_eigenbasis.h>
+
+#include <Eigen/Core>
+#include <cmath>
+#include <type_traits>
+
+namespace ddb {
+
+template <class R, bool kExponential = std::is_base_of_v<Exponential<typename R::Group>, R>>
+class MatrixConjugation;
+
+/// The Cayley map.
+template <class R>
+class MatrixConjugation<R, false> {
+ public:
+  using G = typename R::Group;
+  using Dual = typename G::template Dual<double>;
+  static_assert(std::is_same_v<R, Cayley<G>>, "a matrix conjugation for Cayley or exp");
+
+  /// For τ(x) = cay(x): b = x/2 and (I + b)⁻¹. (I − b)⁻¹ = ((I + b)⁻¹)ᴴ as b is skew-Hermitian.
+  void prepare(const Dual& x) {
+    allocate(x);
+    half_ = 0.5 * x;
+    resolvent_ = half_;
+    resolvent_.diagonal().array() += 1.0;
+    if (!inverse_.invert(resolvent_)) {
+      throw NonFiniteState("Cayley conjugation", -1, NAN, NAN, x,
+                           "Cayley argument (I + x/2 singular)");
+    }
+  }
+
+  /// μ ← μ − 2[b, q], q = (I + b)⁻¹ μ (I − b)⁻¹; [b, q] = bq − (bq)ᴴ as q is skew-Hermitian.
+  void apply(Dual& mu) {
+    product_.noalias() = mu * resolvent_.adjoint();
+    q_.noalias() = resolvent_ * product_;
+    product_.noalias() = half_ * q_;
+    mu -= 2.0 * (product_ - product_.adjoint());
+  }
+
+ private:
+  void allocate(const Dual& like) {
+    if (half_.rows() == like.rows()) return;
+    for (Dual* m : {&half_, &resolvent_, &product_, &q_}) m->setZero(like.rows(), like.cols());
+  }
+
+  Dual half_, resolvent_, product_, q_;
+  DenseInverse<Dual> inverse_;
+};
+
+/// The exponential (closed form or truncated dexp⁻¹ alike: τ is exp).
+template <class R>
+class MatrixConjugation<R, true> {
+ public:
+  using G = typename R::Group;
+  using Dual = typename G::template Dual<double>;
+
+  /// x's eigenbasis.
+  void prepare(const Dual& x) {
+    if (!basis_.compute(x)) {
+      throw NonFiniteState("exponential conjugation", -1, NAN, NAN, x, "argument");
+    }
+  }
+  void apply(Dual& mu) { applyWith(basis_, 1.0, mu); }
+
+  /// μ ← Ad*_{exp(scale·y)} μ, given the eigenbasis of y.
+  void applyWith(SkewHermitianEigenbasis<Dual>& basis, double scale, Dual& mu) {
+    basis.apply([](double eta) { return expm1OfI(-eta); }, scale, mu, increment_);
+    mu += increment_;
+  }
+
+ private:
+  SkewHermitianEigenbasis<Dual> basis_;
+  Dual increment_;
+};
+
+}  // namespace ddb

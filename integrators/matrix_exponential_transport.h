@@ -1,0 +1,41 @@
+// The update of a DDB step with the exponential retraction on a matrix group, in place
+// (docs/conventions.md §2, "Matrix algebras"):
+//   M_{k+1} = Ad*_{exp(hξ) exp(hφ)} M_k = Ad*_{exp(hφ)} Ad*_{exp(hξ)} M_k,  φ = k♯([p, ξ]),
+// each factor applied as an increment of M in its argument's eigenbasis
+// (matrix_conjugation.h): the first in ξ's, which the Legendre solver leaves, the second,
+// with dissipation, in hφ's. The workspaces are allocated when the size first appears, then
+// reused.
+#pragma once
+
+#include <ddb/core/dissipation_metric.h>
+#include <ddb/integrators/matrix_conjugation.h>
+
+#include <Eigen/Core>
+
+namespace ddb {
+
+template <class R>
+class MatrixExponentialTransport {
+ public:
+  using G = typename R::Group;
+  using Dual = typename G::template Dual<double>;
+
+  /// mu ← Ad*_{exp(hξ) exp(hφ)} mu from the solver's p, ξ and ξ's eigenbasis.
+  template <class Solver>
+  void apply(const DissipationMetric<G>& metric, Solver& solver, double h, Dual& mu) {
+    conjugation_.applyWith(solver.eigenbasis(), h, mu);
+    product_.noalias() = solver.solution() * solver.velocity();
+    commutator_ = product_ - product_.adjoint();  // [p, ξ] = pξ − ξp, ξp = (pξ)ᴴ
+    metric.sharpInto(commutator_, phi_);
+    if (phi_.isZero(0.0)) return;
+    phi_ *= h;
+    conjugation_.prepare(phi_);
+    conjugation_.apply(mu);
+  }
+
+ private:
+  Dual product_, commutator_, phi_;
+  MatrixConjugation<R> conjugation_;
+};
+
+}  // namespace ddb
