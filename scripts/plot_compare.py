@@ -230,7 +230,8 @@ def slope_guides(ax, curves, orders):
         txt = "slope 1: O(h)" if p == 1 else f"slope {p}: O(h$^{p}$)"
         ax.annotate(txt, (h[-1], c * h[-1] ** p), xytext=(4, 0 if p == 1 else -4),
                     textcoords="offset points", fontsize=9, color="0.15",
-                    ha="left", va="top" if p != 1 else "bottom")
+                    ha="left", va="top" if p != 1 else "bottom",
+                    bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.85))
 
 
 def plot_sweep(out, path, summary):

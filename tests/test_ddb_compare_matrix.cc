@@ -112,6 +112,9 @@ void expectMethodsMatchTheLibrary(const fs::path& out,
     // The spectrum drift, from Eigen's eigensolver here: equal to round-off of the spectra.
     EXPECT_NEAR(entry["casimir_drift"].get<double>(), direct_run.drift_max, 1e-14);
     const ddb::MethodInfo* info = ddb::findMethod(name);
+    EXPECT_EQ(entry["order"], summary["parameters"]["alpha"] == 0.0
+                                  ? info->order_without_dissipation
+                                  : info->order);
     if (info->keeps_casimirs) {
       EXPECT_LT(entry["casimir_drift"].get<double>(), 1e-13);
     }
@@ -252,6 +255,29 @@ TEST(DdbCompareMatrix, SweepWritesAFallingErrorForEveryMethod) {
   for (const auto& [method, e] : errors) {
     ASSERT_EQ(e.size(), 3u) << method;
     EXPECT_LT(e[2], e[0]) << method;
+  }
+}
+
+TEST(DdbCompareMatrix, WithoutDissipationTheOrdersAreTheTablesOrdersAtAlphaZero) {
+  const fs::path out = freshFolder("alpha0");
+  ASSERT_EQ(
+      run("--quiet --system zeitlin --n 3 --alpha 0 --t-end 0.3 --repeat 1 --out " + out.string())
+          .status,
+      0);
+  expectMethodsMatchTheLibrary<ddb::SUN>(out, ddb::makeZeitlinFluid(3, 0.0),
+                                         ddb::randomVorticity(3, 1), 0.1, 3);
+}
+
+TEST(DdbCompareMatrix, PlotDrawsTheCasimirSweepAndWorkPrecisionFigures) {
+  for (const std::string system : {"manakov", "zeitlin"}) {
+    const fs::path out = freshFolder("plot-" + system);
+    const AppResult r =
+        run("--quiet --system " + system +
+            " --n 3 --t-end 0.5 --repeat 1 --sweep-h 0.05:0.1:2 --plot --out " + out.string());
+    ASSERT_EQ(r.status, 0) << system << ": " << r.output;
+    for (const std::string figure : {"casimir_vs_t", "error_vs_h", "work_precision"}) {
+      EXPECT_TRUE(fs::is_regular_file(out / (figure + ".png"))) << system << " " << figure;
+    }
   }
 }
 
