@@ -5,9 +5,9 @@
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 
-#include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/cli.h"
@@ -18,10 +18,12 @@ namespace ddb::compare {
 
 namespace {
 
-// Said in every message that refuses an N for being too large.
-const std::string kWhyMaxN =
-    "the reference (RKF 7(8), tol 1e-13) costs O(N^3) per evaluation and would take too long "
-    "above";
+/// Said in every message that refuses an N for being too large.
+std::string whyMaxN() {
+  return "the reference (RKF 7(8), tol 1e-13) costs O(N^3) per evaluation and would take too "
+         "long above " +
+         std::to_string(kMaxMatrixN);
+}
 
 /// The flags of the other systems, refused on a matrix system.
 void rejectOtherSystemsFlags(const CLI::App& cli, const std::string& context) {
@@ -41,8 +43,7 @@ long resolution(const CLI::App& cli, const Options& o, long fallback) {
   const long n = givenOr(cli, o, fallback);
   if (n < 2 || n > kMaxMatrixN) {
     app::usageError("--n", std::to_string(n),
-                    "must be in [2, " + std::to_string(kMaxMatrixN) + "]: " + kWhyMaxN + " " +
-                        std::to_string(kMaxMatrixN));
+                    "must be in [2, " + std::to_string(kMaxMatrixN) + "]: " + whyMaxN());
   }
   return n;
 }
@@ -52,9 +53,8 @@ long resolution(const CLI::App& cli, const Options& o, long fallback) {
 Eigen::MatrixXd readMomentumFile(const CLI::App& cli, const Options& o) {
   const std::string& path = o.mu0_file;
   const auto bad = [&](const std::string& why) { app::usageError("--mu0-file", path, why); };
-  const auto rows = app::readNumberCsv(
-      "--mu0-file", path, static_cast<std::size_t>(kMaxMatrixN),
-      "N <= " + std::to_string(kMaxMatrixN) + ": " + kWhyMaxN + " " + std::to_string(kMaxMatrixN));
+  const auto rows = app::readNumberCsv("--mu0-file", path, static_cast<std::size_t>(kMaxMatrixN),
+                                       "N <= " + std::to_string(kMaxMatrixN) + ": " + whyMaxN());
   const auto n = static_cast<Eigen::Index>(rows.size());
   if (n < 2) bad(std::to_string(n) + " rows; N must be >= 2");
   Eigen::MatrixXd M(n, n);
@@ -111,7 +111,7 @@ Problem<SON> manakovProblem(const CLI::App& cli, const Options& o) {
   p.system = makeManakovBody(J, p.alpha);
   p.mu0 = M0;
   p.t_end = kMatrixDefaultTEnd;
-  const bool custom = !o.mu0_file.empty() || n != kManakovDefaultN || o.seed != 1 ||
+  const bool custom = !o.mu0_file.empty() || n != kManakovDefaultN || o.seed != Options().seed ||
                       J != defaultManakovJ(n) || p.alpha != kMatrixDefaultAlpha;
   p.scenario = custom ? "custom" : "none";
   p.parameters["n"] = n;
@@ -128,14 +128,14 @@ Problem<SUN> zeitlinProblem(const CLI::App& cli, const Options& o) {
   for (const char* flag : {"--j", "--mu0-file"}) app::rejectIfGiven(cli, flag, context);
   app::InitialVorticity initial =
       app::initialVorticity(cli, {givenOr(cli, o, kZeitlinDefaultN), o.seed, o.init, o.init_file},
-                            {kMaxMatrixN, kWhyMaxN + " " + std::to_string(kMaxMatrixN)});
+                            {kMaxMatrixN, whyMaxN()});
   Problem<SUN> p;
   p.alpha = optionalNumber("--alpha", o.alpha, kMatrixDefaultAlpha);
   p.system = makeZeitlinFluid(initial.W.rows(), p.alpha);
   p.mu0 = std::move(initial.W);
   p.t_end = kMatrixDefaultTEnd;
-  const bool custom = initial.init != "random" || p.mu0.rows() != kZeitlinDefaultN || o.seed != 1 ||
-                      p.alpha != kMatrixDefaultAlpha;
+  const bool custom = initial.init != "random" || p.mu0.rows() != kZeitlinDefaultN ||
+                      o.seed != Options().seed || p.alpha != kMatrixDefaultAlpha;
   p.scenario = custom ? "custom" : "none";
   p.parameters["n"] = p.mu0.rows();
   p.parameters["alpha"] = p.alpha;

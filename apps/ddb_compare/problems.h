@@ -58,7 +58,7 @@ std::string unresolvable(const Problem<G>& p, double t_end) {
     rate = flowRate(*p.system, p.mu0);
   }
   if (rate * t_end <= static_cast<double>(kMaxSteps)) return "";
-  const char* what = isDynamicGroup<G> ? "4|dH/dmu|_2 (1 + 2|alpha||mu0|_2)" : "|df/dmu|_inf";
+  const char* what = isDynamicGroup<G> ? "4|dH/dmu|_2 (1 + 3|alpha||mu0|_2)" : "|df/dmu|_inf";
   return fmt::format(
       "the flow's rate {} = {:.3g} at mu0 exceeds 1e9/t-end = {:.3g}: no integrator "
       "resolves it in 1e9 steps",
