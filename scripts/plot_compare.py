@@ -4,8 +4,9 @@
 Usage: plot_compare.py OUT_DIR
 
 Always:  casimir_vs_t.png   relative Casimir drift |C(t) - C(0)| / |C(0)|, every method
-Sweep:   error_vs_h.png (with slope guides h, h^2, h^4), work_precision.png
-                                                     (if error_vs_h.csv exists)
+                            (matrix systems: the spectrum's |lambda(t) - lambda(0)| / |lambda(0)|)
+Sweep:   error_vs_h.png (with slope guides h^p for the orders p of the methods, taken
+         from summary.json), work_precision.png     (if error_vs_h.csv exists)
 Rigid body with an isolated minimum (Scenarios A, B):
          sphere_trajectory.png (with the limit points +-|M0| e_i),
          distance_to_limit_points.png, error_vs_reference.png
@@ -56,6 +57,30 @@ GROUPS = [
 ORDER = [m for _, ms in GROUPS for m in ms]
 NOTE_ZEROS = "exact zeros cannot be drawn on a log axis and are left out"
 NORM_REF = r"$\Vert M_N - M_N^{\mathrm{ref}}\Vert$"
+MATRIX_SYSTEMS = {"manakov": "M", "zeitlin": "W"}
+
+
+def describe(summary):
+    """'manakov, N = 5, α = 0.5, h = 0.1' or 'rigid-body, scenario A, α = 0.5, h = 0.1'."""
+    system, p = summary["system"], summary.get("parameters", {})
+    parts = [system]
+    if system in MATRIX_SYSTEMS:
+        parts.append(f"N = {p['n']}")
+        if system == "zeitlin":
+            parts.append(f"init {p['init']}")
+    elif summary.get("scenario") not in (None, "none"):
+        parts.append(f"scenario {summary['scenario']}")
+    if "alpha" in p:
+        parts.append(f"α = {p['alpha']:g}")
+    return ", ".join(parts)
+
+
+def error_label(summary):
+    """The final error's symbol: ‖M_N − M_N^ref‖ (Frobenius for a matrix state)."""
+    letter = MATRIX_SYSTEMS.get(summary["system"])
+    if letter is None:
+        return NORM_REF
+    return rf"$\Vert {letter}_N - {letter}_N^{{\mathrm{{ref}}}}\Vert_F$"
 
 
 def style(name, index=0, dense=True):
@@ -121,14 +146,21 @@ def footnote(fig, text):
     fig.text(0.01, -0.01, text, fontsize=8, color="0.3", ha="left", va="top")
 
 
-def plot_casimirs(out, traj):
+def plot_casimirs(out, traj, summary):
     """Relative Casimir drift of every method (the Casimir value itself, a flat line
-    at |M0| for every Casimir-preserving method, says nothing more)."""
+    at |M0| for every Casimir-preserving method, says nothing more). A matrix system's
+    CSV holds the spectrum's relative drift itself (column casimir_drift)."""
     fig, ax = plt.subplots(figsize=(9.5, 5))
     names = sort_methods(traj)
     any_zero = False
+    matrix = summary["system"] in MATRIX_SYSTEMS
     for i, name in enumerate(names):
         d = traj[name]
+        if matrix:
+            ts, ys, zeros = positive(d["t"][1:], d["casimir_drift"][1:])
+            any_zero |= zeros > 0
+            ax.semilogy(ts, ys, label=name, **style(name, i))
+            continue
         for col in [k for k in d if k.startswith("casimir")]:
             c0 = d[col][0]
             scale = abs(c0) if c0 != 0 else 1.0
@@ -142,8 +174,21 @@ def plot_casimirs(out, traj):
                 xytext=(3, 0), textcoords="offset points", fontsize=8, color="0.3",
                 va="center", ha="left")
     ax.set_xlabel("time t")
-    ax.set_ylabel(r"relative Casimir drift  $|C(t) - C(0)|\,/\,|C(0)|$,  $C = \Vert M\Vert$")
-    ax.set_title("Casimir drift: DDB keeps ‖M‖ to round-off, Runge–Kutta methods drift")
+    where = f"{describe(summary)}, h = {summary['h']:g}"
+    if matrix:
+        letter = MATRIX_SYSTEMS[summary["system"]]
+        ax.set_ylabel(r"relative spectrum drift  $\Vert\lambda(t) - \lambda(0)\Vert\,/\,"
+                      r"\Vert\lambda(0)\Vert$")
+        ax.set_title(f"Casimir drift ({where}):\nDDB keeps the spectrum λ of {letter} "
+                     "to round-off, Runge–Kutta methods drift")
+    elif summary["system"] == "rigid-body":
+        ax.set_ylabel(r"relative Casimir drift  $|C(t) - C(0)|\,/\,|C(0)|$,  $C = \Vert M\Vert$")
+        ax.set_title(f"Casimir drift ({where}):\n"
+                     "DDB keeps ‖M‖ to round-off, Runge–Kutta methods drift")
+    else:
+        ax.set_ylabel(r"relative Casimir drift  $|C_i(t) - C_i(0)|\,/\,|C_i(0)|$")
+        ax.set_title(f"Casimir drift ({where}):\n"
+                     "DDB keeps both Casimirs to round-off, Runge–Kutta methods drift")
     ax.grid(True, which="major", alpha=0.3)
     grouped_legend(ax, names)
     if any_zero:
@@ -151,21 +196,17 @@ def plot_casimirs(out, traj):
     save(fig, out, "casimir_vs_t.png")
 
 
-METHOD_ORDER = {"ddb-cay": 1, "ddb-exp": 1, "ddb-exp-exact": 1, "sddb-paper-cay": 1,
-                "sddb-paper-exp": 1, "sddb-cay": 2, "sddb-exp": 2, "ddb4-cay": 4,
-                "ddb4-exp": 4, "rk4": 4, "lobatto3c": 4}
-
-
-def slope_guides(ax, curves):
-    """Slope guides h^p, p = 1, 2, 4, one decade of h long, each next to the methods of
-    that order: O(h) above them, O(h^2) and O(h^4) below them (factor 4), at the
+def slope_guides(ax, curves, orders):
+    """Slope guides h^p, one for each order p > 0 of the methods (`orders`: method ->
+    order, from summary.json), one decade of h long, each next to the methods of that
+    order: O(h) above them, higher orders below them (factor 4), at the
     smallest step sizes where those methods are still above round-off (error > 30 x the smallest error
     of the figure)."""
     import numpy as np
 
     floor = 30 * min(e for c in curves.values() for _, e in c) if curves else 0.0
-    for p in (1, 2, 4):
-        group = {m: dict(c) for m, c in curves.items() if METHOD_ORDER.get(m) == p}
+    for p in sorted({orders.get(m, 0) for m in curves} - {0}):
+        group = {m: dict(c) for m, c in curves.items() if orders.get(m) == p}
         if not group:
             continue
         hs = sorted(set.intersection(*[set(g) for g in group.values()]))
@@ -189,10 +230,14 @@ def slope_guides(ax, curves):
         txt = "slope 1: O(h)" if p == 1 else f"slope {p}: O(h$^{p}$)"
         ax.annotate(txt, (h[-1], c * h[-1] ** p), xytext=(4, 0 if p == 1 else -4),
                     textcoords="offset points", fontsize=9, color="0.15",
-                    ha="left", va="top" if p != 1 else "bottom")
+                    ha="left", va="top" if p != 1 else "bottom",
+                    bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.85))
 
 
-def plot_sweep(out, path, title):
+def plot_sweep(out, path, summary):
+    title = describe(summary)
+    orders = {m: e.get("order", 0) for m, e in summary["methods"].items()}
+    err = "error in the final state  " + error_label(summary)
     rows = list(csv.DictReader(open(path, newline="")))
     methods = sort_methods({r["method"] for r in rows})
     fig, ax = plt.subplots(figsize=(9.5, 6))
@@ -211,14 +256,15 @@ def plot_sweep(out, path, title):
         ax.loglog([p[0] for p in pts], [p[1] for p in pts], label=m, **s)
         ax2.loglog([p[2] for p in pts], [p[1] for p in pts], label=m, **s)
         curves[m] = [(p[0], p[1]) for p in pts]
-    slope_guides(ax, curves)
+    slope_guides(ax, curves, orders)
+    t_end = summary["t_end_requested"]
     ax.set_xlabel("step size h")
-    ax.set_ylabel("error in the final momentum  " + NORM_REF)
-    ax.set_title(f"Convergence: final error vs step size ({title})\n"
-                 "grey bars: slopes 1, 2, 4 (orders of the methods); the flat tail at small h is round-off")
-    ax2.set_xlabel("CPU time per run (s, median)")
-    ax2.set_ylabel("error in the final momentum  " + NORM_REF)
-    ax2.set_title(f"Work–precision: final error vs cost ({title})\n"
+    ax.set_ylabel(err)
+    ax.set_title(f"Convergence: error at t = {t_end:g} vs step size ({title})\n"
+                 "grey bars: slopes of the methods' orders; a flat tail at small h is round-off")
+    ax2.set_xlabel("wall time per run (s)")
+    ax2.set_ylabel(err)
+    ax2.set_title(f"Work–precision: error at t = {t_end:g} vs cost ({title})\n"
                   "one point per step size; lower left is better")
     for a in (ax, ax2):
         a.grid(True, which="major", alpha=0.3)
@@ -380,11 +426,10 @@ def main():
         path = os.path.join(out, name + ".csv")
         if os.path.exists(path):
             traj[name] = read_csv(path)
-    plot_casimirs(out, traj)
+    plot_casimirs(out, traj, summary)
     sweep = os.path.join(out, "error_vs_h.csv")
-    title = f"{summary['system']}, scenario {summary['scenario']}"
     if os.path.exists(sweep):
-        plot_sweep(out, sweep, title)
+        plot_sweep(out, sweep, summary)
     if summary["system"] == "rigid-body":
         plot_rigid_body(out, traj, summary)
 

@@ -98,6 +98,11 @@ TEST(BadInputs, EveryRowOfTheTableExitsTwoWithItsMessageAndWritesNothing) {
   std::ofstream(tmp / "file") << "a regular file\n";
   // A valid 2x2 W (skew-Hermitian, traceless) with entries of 1e200.
   std::ofstream(tmp / "huge.csv") << "0,1e200,1e200,0\n-1e200,0,0,-1e200\n";
+  // For --mu0-file: a real skew 2x2 M with entries of 1e200, a 3x3 that is symmetric, and
+  // two rows of three numbers (neither N x N nor N x 2N).
+  std::ofstream(tmp / "huge-m.csv") << "0,1e200\n-1e200,0\n";
+  std::ofstream(tmp / "symmetric.csv") << "0,1,2\n1,0,3\n2,3,0\n";
+  std::ofstream(tmp / "rect.csv") << "0,1,2\n-1,0,3\n";
 
   const std::map<std::string, std::string> programs{{"ddb-compare", DDB_COMPARE_PATH},
                                                     {"fluid-relax", FLUID_RELAX_PATH}};

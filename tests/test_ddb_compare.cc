@@ -5,12 +5,17 @@
 // I/O errors (exit status 1 naming the file) and constant memory on long runs.
 #include <ddb/integrators/method_table.h>
 #include <ddb/systems/heavy_top.h>
+#include <ddb/systems/manakov_body.h>
 #include <ddb/systems/rigid_body.h>
+#include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_initial_conditions.h>
 #include <gmock/gmock.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <Eigen/Eigenvalues>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -182,9 +187,10 @@ TEST(DdbCompare, HelpListsEveryMethodSystemScenarioAndDefault) {
     return std::regex_search(r.output, std::regex("\n  " + name + " +[A-Za-z(]"));
   };
   for (const auto& method : ddb::methodNames()) EXPECT_TRUE(hasLine(method)) << method;
-  for (const std::string system : {"rigid-body", "heavy-top", "kirchhoff"}) {
+  for (const std::string system : {"rigid-body", "heavy-top", "kirchhoff", "manakov", "zeitlin"}) {
     EXPECT_TRUE(hasLine(system)) << system;
   }
+  for (const std::string init : {"random", "l1", "zonal"}) EXPECT_TRUE(hasLine(init)) << init;
   for (const std::string scenario : {"A", "B", "C"}) EXPECT_TRUE(hasLine(scenario)) << scenario;
   // Defaults of docs/file-formats.md and of the paper's scenarios (Section 5).
   for (const std::string text :

@@ -78,6 +78,19 @@ TEST(Determinism, DdbCompareWritesTheSameFilesTwice) {
   expectSameFilesApartFromRuntimes(first, second);
 }
 
+TEST(Determinism, DdbCompareOnMatrixGroupsWritesTheSameFilesTwice) {
+  // Every method of the table for matrix groups, and a sweep, on both matrix systems.
+  for (const std::string system : {"manakov --j 1,1.5,2.5,3", "zeitlin --init l1"}) {
+    const std::string arguments =
+        "--quiet --system " + system + " --n 4 --t-end 1 --repeat 2 --sweep-h 0.05:0.1:2 --out ";
+    const fs::path first = freshFolder("ddb_determinism_matrix_", "first");
+    const fs::path second = freshFolder("ddb_determinism_matrix_", "second");
+    ASSERT_EQ(runProgram(DDB_COMPARE_PATH, arguments + first.string()).status, 0) << system;
+    ASSERT_EQ(runProgram(DDB_COMPARE_PATH, arguments + second.string()).status, 0) << system;
+    expectSameFilesApartFromRuntimes(first, second);
+  }
+}
+
 // A comma-decimal locale in the environment changes no byte of any file: numbers are
 // formatted and parsed without the locale (apps/common/format.h, cli.h).
 constexpr const char* kCommaLocale = "de_DE.UTF-8";
@@ -118,6 +131,16 @@ TEST(Determinism, DdbCompareIgnoresTheLocale) {
                                "--quiet --system heavy-top --t-end 1 --mgl 0.75 --repeat 1 "
                                "--method ddb-cay,reference",
                                "heavy_top");
+}
+
+TEST(Determinism, DdbCompareOnMatrixGroupsIgnoresTheLocale) {
+  if (!commaLocaleInstalled()) {
+    GTEST_SKIP() << kCommaLocale << " is not installed (Debian: locales-all)";
+  }
+  expectSameFilesInBothLocales(DDB_COMPARE_PATH,
+                               "--quiet --system manakov --n 3 --j 1,1.5,2.5 --alpha 0.25 "
+                               "--t-end 0.5 --repeat 1",
+                               "manakov");
 }
 
 TEST(Determinism, FluidRelaxIgnoresTheLocale) {

@@ -110,6 +110,17 @@ void rejectIfGiven(const CLI::App& cli, const std::string& flag, const std::stri
   usageError(flag, value, "does not apply to " + context);
 }
 
+void addSeedOption(CLI::App& cli, std::uint64_t& seed, const std::string& description) {
+  cli.add_option("--seed", seed, description)
+      ->capture_default_str()
+      ->check(
+          [](const std::string& text) {
+            return text.rfind('-', 0) != 0 ? std::string()
+                                           : text + " is negative; a seed is in [0, 2^64)";
+          },
+          "");
+}
+
 std::string projectVersion() { return DDB_VERSION; }
 
 void addVersionFlag(CLI::App& cli, const std::string& app) {

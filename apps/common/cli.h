@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 #include <Eigen/Core>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -48,6 +49,10 @@ std::string describeChoices(const std::vector<std::pair<std::string, std::string
 /// Throws a UsageError naming `flag` if it was given although it does not apply to
 /// `context` (a flag that would be silently ignored is bad input).
 void rejectIfGiven(const CLI::App& cli, const std::string& flag, const std::string& context);
+
+/// Adds `--seed` (default 1) with `description`; a negative value is refused, which
+/// CLI11 would otherwise wrap around to 2^64 - 1 without a word.
+void addSeedOption(CLI::App& cli, std::uint64_t& seed, const std::string& description);
 
 /// The project version from CMake ("0.2.0").
 std::string projectVersion();

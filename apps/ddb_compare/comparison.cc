@@ -1,5 +1,6 @@
 #include "ddb_compare/comparison.h"
 
+#include <ddb/core/group_traits.h>
 #include <ddb/integrators/method_table.h>
 #include <ddb/integrators/reference.h>
 #include <ddb/integrators/run.h>
@@ -8,11 +9,13 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <type_traits>
 
 #include "common/atomic_file.h"
 #include "common/energy_rises.h"
 #include "common/exit_status.h"
 #include "common/progress.h"
+#include "common/spectrum_drift.h"
 #include "ddb_compare/report.h"
 
 namespace ddb::compare {
@@ -28,6 +31,45 @@ std::string failedLabel(const RunResult<G>& run) {
   return "FAILED at step " + std::to_string(run.failed_step);
 }
 
+/// The method's order at α (MethodInfo: with α = 0 the order without dissipation).
+int orderAt(const std::string& name, double alpha) {
+  const MethodInfo* method = findMethod(name);
+  return alpha == 0.0 ? method->order_without_dissipation : method->order;
+}
+
+/// casimir_drift as docs/file-formats.md defines it, over every state shown to
+/// observe(). On fixed-size groups it is runMethod's own (Casimir by Casimir).
+template <class G, bool = isDynamicGroup<G>>
+class DriftWatch {
+ public:
+  using Dual = typename G::template Dual<double>;
+
+  explicit DriftWatch(const Dual&) {}
+  void observe(const Dual&) {}
+  double of(const RunResult<G>& run) const { return run.casimir_drift; }
+};
+
+/// On matrix groups, the spectrum's relative change (app::SpectrumDrift), which runMethod
+/// does not give: it compares the eigenvalues one by one.
+template <class G>
+class DriftWatch<G, true> {
+ public:
+  using Dual = typename G::template Dual<double>;
+
+  explicit DriftWatch(const Dual& mu0) : spectrum_(mu0) {}
+  void observe(const Dual& mu) {
+    current_ = spectrum_(mu);
+    max_ = std::max(max_, current_);
+  }
+  /// The drift of the state last observed.
+  const double& current() const { return current_; }
+  double of(const RunResult<G>&) const { return max_; }
+
+ private:
+  app::SpectrumDrift<G> spectrum_;
+  double current_ = 0.0, max_ = 0.0;
+};
+
 }  // namespace
 
 template <class G>
@@ -38,7 +80,7 @@ int runComparison(const Options& o, const Settings& s, const Problem<G>& problem
     if (methodApplies(name, *problem.system)) {
       names.push_back(name);
     } else if (!o.methods.empty()) {
-      app::usageError("--method", name, "does not apply to " + problem.system->name());
+      app::usageError("--method", name, "does not apply to " + o.system);
     }
   }
   std::vector<std::unique_ptr<OneStepMethod<G>>> methods;
@@ -71,15 +113,24 @@ int runComparison(const Options& o, const Settings& s, const Problem<G>& problem
     RunOptions options;
     options.progress = [&](long done, long total) { progress.update(name, done, total); };
     app::AtomicFile csv_file(s.out / (name + ".csv"));
-    TrajectoryCsv<G> csv(csv_file, system);
-    // Every state passes the energy check; only every K-th reaches the file.
-    EveryKth<typename G::template Dual<double>, TrajectoryCsv<G>> rows(o.every, csv);
+    DriftWatch<G> drift(problem.mu0);
+    using Csv = std::conditional_t<isDynamicGroup<G>, MatrixTrajectoryCsv<G>, TrajectoryCsv<G>>;
+    Csv csv = [&] {
+      if constexpr (isDynamicGroup<G>) {
+        return Csv(csv_file, system, drift.current());
+      } else {
+        return Csv(csv_file, system);
+      }
+    }();
+    // Every state passes the energy and drift checks; only every K-th reaches the file.
+    EveryKth<typename G::template Dual<double>, Csv> rows(o.every, csv);
     const bool watch_energy =
         app::EnergyRises::applies(findMethod(name)->keeps_casimirs, problem.alpha);
     app::EnergyRises rises;
     const RunResult<G> run = runMethod(*methods[m], system, problem.mu0, s.h, s.steps, options,
                                        [&](long k, double t, const auto& mu) {
                                          if (watch_energy) rises.observe(k, t, system.energy(mu));
+                                         drift.observe(mu);
                                          rows(k, t, mu);
                                        });
     rows.finish();
@@ -104,7 +155,8 @@ int runComparison(const Options& o, const Settings& s, const Problem<G>& problem
 
     MethodResult result;
     result.name = name;
-    result.final = run.final;
+    result.final = stateJson(run.final);
+    result.order = orderAt(name, problem.alpha);
     result.energy_final = system.energy(run.final);
     result.steps = run.steps;
     result.t_final = run.t_final;
@@ -112,11 +164,11 @@ int runComparison(const Options& o, const Settings& s, const Problem<G>& problem
     result.ok = run.ok();
     if (run.ok()) {
       result.err_final = reference.ok() ? (run.final - reference.final).norm() : NAN;
-      result.casimir_drift = run.casimir_drift;
+      result.casimir_drift = drift.of(run);
       result.runtime_s = runtime;
       result.timed_runs = timed_runs;
       spdlog::info("{:14s} err_final {:.3e}  casimir drift {:.3e}  runtime {:.3g} s", name,
-                   result.err_final, run.casimir_drift, runtime);
+                   result.err_final, result.casimir_drift, runtime);
     } else {
       any_failed = true;
       result.failed_step = run.failed_step;
@@ -143,14 +195,17 @@ int runComparison(const Options& o, const Settings& s, const Problem<G>& problem
                                   names[m];
         RunOptions options;
         options.progress = [&](long done, long total) { progress.update(label, done, total); };
-        const RunResult<G> run = runMethod(*methods[m], system, problem.mu0, hs[i], n, options);
+        DriftWatch<G> drift(problem.mu0);
+        const RunResult<G> run =
+            runMethod(*methods[m], system, problem.mu0, hs[i], n, options,
+                      [&](long, double, const auto& mu) { drift.observe(mu); });
         const bool ok = run.ok() && exact.ok();
         if (!run.ok()) {
           progress.clear();
           spdlog::warn("sweep {} h={} {}: {}", names[m], hs[i], failedLabel(run), run.failure);
         }
         sweep.add(names[m], hs[i], ok ? (run.final - exact.final).norm() : NAN,
-                  run.ok() ? run.casimir_drift : NAN, run.ok() ? run.runtime_s : NAN);
+                  run.ok() ? drift.of(run) : NAN, run.ok() ? run.runtime_s : NAN);
       }
     }
     progress.clear();
@@ -158,7 +213,7 @@ int runComparison(const Options& o, const Settings& s, const Problem<G>& problem
   }
 
   app::Json summary;  // the head of summary.json; the report adds the methods
-  summary["system"] = system.name();
+  summary["system"] = o.system;
   summary["scenario"] = problem.scenario;
   if (!problem.scenario_base.empty()) summary["scenario_base"] = problem.scenario_base;
   summary["version"] = app::projectVersion();
@@ -175,5 +230,7 @@ int runComparison(const Options& o, const Settings& s, const Problem<G>& problem
 
 template int runComparison<SO3>(const Options&, const Settings&, const Problem<SO3>&);
 template int runComparison<SE3>(const Options&, const Settings&, const Problem<SE3>&);
+template int runComparison<SON>(const Options&, const Settings&, const Problem<SON>&);
+template int runComparison<SUN>(const Options&, const Settings&, const Problem<SUN>&);
 
 }  // namespace ddb::compare

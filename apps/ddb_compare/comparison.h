@@ -6,6 +6,8 @@
 
 #include <ddb/groups/se3.h>
 #include <ddb/groups/so3.h>
+#include <ddb/groups/son.h>
+#include <ddb/groups/sun.h>
 
 #include "ddb_compare/options.h"
 #include "ddb_compare/problems.h"
@@ -20,5 +22,7 @@ int runComparison(const Options& o, const Settings& s, const Problem<G>& problem
 
 extern template int runComparison<SO3>(const Options&, const Settings&, const Problem<SO3>&);
 extern template int runComparison<SE3>(const Options&, const Settings&, const Problem<SE3>&);
+extern template int runComparison<SON>(const Options&, const Settings&, const Problem<SON>&);
+extern template int runComparison<SUN>(const Options&, const Settings&, const Problem<SUN>&);
 
 }  // namespace ddb::compare

@@ -1,5 +1,6 @@
 // ddb-compare: compares integrators on the paper's rigid-body scenarios (Section 5;
-// docs/conventions.md §3) and on the heavy top and Kirchhoff body, with the command line
+// docs/conventions.md §3), on the heavy top and Kirchhoff body, and on the matrix groups'
+// Manakov body and Zeitlin fluid (docs/conventions.md §2), with the command line
 // and files of docs/file-formats.md. Exit status (apps/common/exit_status.h): 2 for bad
 // input, checked in full before anything is written; 1 if a method failed (its valid
 // prefix is still written and it is marked FAILED) or a file could not be written.
@@ -12,6 +13,7 @@
 #include "common/logging.h"
 #include "common/plot.h"
 #include "ddb_compare/comparison.h"
+#include "ddb_compare/matrix_problems.h"
 #include "ddb_compare/options.h"
 #include "ddb_compare/problems.h"
 
@@ -53,7 +55,22 @@ int runCompare(int argc, char** argv) {
   const auto se3 = [&](const Options& options) {
     return asUsageError([&] { return se3Problem(cli, options); });
   };
-  int status = o.system == "rigid-body" ? checkAndCompare(o, rigidBody) : checkAndCompare(o, se3);
+  const auto manakov = [&](const Options& options) {
+    return asUsageError([&] { return manakovProblem(cli, options); });
+  };
+  const auto zeitlin = [&](const Options& options) {
+    return asUsageError([&] { return zeitlinProblem(cli, options); });
+  };
+  int status = 0;
+  if (o.system == "rigid-body") {
+    status = checkAndCompare(o, rigidBody);
+  } else if (o.system == "manakov") {
+    status = checkAndCompare(o, manakov);
+  } else if (o.system == "zeitlin") {
+    status = checkAndCompare(o, zeitlin);
+  } else {
+    status = checkAndCompare(o, se3);
+  }
   if (o.plot) status = std::max(status, app::runPlotScript(DDB_PLOT_SCRIPT, o.out));
   return status;
 }

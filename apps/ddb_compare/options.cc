@@ -8,6 +8,8 @@
 #include <cmath>
 
 #include "common/format.h"
+#include "common/initial_vorticity.h"
+#include "ddb_compare/matrix_problems.h"
 
 namespace ddb::compare {
 
@@ -37,14 +39,33 @@ std::string helpFooter() {
            return app::describeChoices(lines);
          }() +
          "\nMethods (--method; default: every method that applies to the system):\n" +
-         app::describeChoices(methodDescriptions()) + "\nDefaults of the other systems (t-end " +
+         app::describeChoices(methodDescriptions()) + "On manakov and zeitlin: " +
+         [] {
+           std::string names;
+           for (const auto& name : methodNames(kMatrixGroups)) {
+             names += (names.empty() ? "" : ", ") + name;
+           }
+           return names;
+         }() +
+         "\n\nDefaults of the other systems (heavy-top and kirchhoff: t-end " +
          shortList(top.t_end) + "):\n  heavy-top  inertia " + shortList(top.inertia) + ", mgl " +
          shortList(top.mgl) + ", chi " + shortList(top.chi) + ", mu0 " + shortList(top.mu0) +
          ", metric " + shortList(top.metric) + ", alpha " + shortList(top.alpha) +
          "\n  kirchhoff  inertia " + shortList(kirchhoff.inertia) + ", mass " +
          shortList(kirchhoff.mass) + ", mu0 " + shortList(kirchhoff.mu0) + ", metric " +
          shortList(kirchhoff.metric) + ", alpha " + shortList(kirchhoff.alpha) +
-         "\n\nA parameter that differs from the scenario's is recorded in summary.json, whose "
+         "\n  manakov    n " + std::to_string(kManakovDefaultN) +
+         ", j_i = 1 + (i-1)/(n-1) (1 to 2), M0 the real part of the seeded random vorticity "
+         "scaled to |M0|_F = sqrt(n), alpha " +
+         shortList(kMatrixDefaultAlpha) + ", t-end " + shortList(kMatrixDefaultTEnd) +
+         "\n  zeitlin    n " + std::to_string(kZeitlinDefaultN) + ", init random, alpha " +
+         shortList(kMatrixDefaultAlpha) + ", t-end " + shortList(kMatrixDefaultTEnd) +
+         "\n  manakov and zeitlin: 2 <= n <= " + std::to_string(kMaxMatrixN) +
+         " (the reference's cost grows as n^3); seed 1\n"
+         "\nInitial vorticities (--init, zeitlin; scaled to ||W||_F = sqrt(n), seeded by "
+         "--seed):\n" +
+         app::describeChoices(app::initDescriptions()) +
+         "\nA parameter that differs from the scenario's is recorded in summary.json, whose "
          "scenario is then \"custom\".\nExit status: 0 ok, 1 a method failed or a file could not "
          "be written, 2 bad input (nothing written).\n";
 }
@@ -55,13 +76,16 @@ const std::vector<std::pair<std::string, std::string>>& systemDescriptions() {
   static const std::vector<std::pair<std::string, std::string>> systems{
       {"rigid-body", "free rigid body on so(3)*, K = alpha I (paper, Section 5)"},
       {"heavy-top", "heavy top on se(3)*, Hamiltonian-form DDB, K = alpha diag(metric)"},
-      {"kirchhoff", "rigid body in ideal fluid on se(3)*, K = alpha diag(metric)"}};
+      {"kirchhoff", "rigid body in ideal fluid on se(3)*, K = alpha diag(metric)"},
+      {"manakov", "SO(N) generalised rigid body (Manakov) on so(N)*, K = alpha I"},
+      {"zeitlin", "Zeitlin's SU(N) fluid on the sphere, K = alpha I"}};
   return systems;
 }
 
 void addOptions(CLI::App& cli, Options& o) {
   const RigidBodyScenario& a = rigidBodyScenarios().front();
-  cli.add_option("--system", o.system, "rigid-body | heavy-top | kirchhoff (listed below)")
+  cli.add_option("--system", o.system,
+                 "rigid-body | heavy-top | kirchhoff | manakov | zeitlin (listed below)")
       ->capture_default_str();
   cli.add_option("--scenario", o.scenario, "A | B | C, rigid body only (listed below)")
       ->capture_default_str();
@@ -70,7 +94,8 @@ void addOptions(CLI::App& cli, Options& o) {
   cli.add_option("--h", o.h, "step size")->capture_default_str();
   cli.add_option("--t-end", o.t_end,
                  "final time (default: the scenario's, A 30, B and C 250; other systems " +
-                     shortList(HeavyTopSetup().t_end) +
+                     shortList(HeavyTopSetup().t_end) + ", manakov and zeitlin " +
+                     shortList(kMatrixDefaultTEnd) +
                      "); rounded to a whole number of steps, with a warning");
   cli.add_option("--every", o.every, "write every K-th state and the last one to <method>.csv")
       ->capture_default_str();
@@ -102,6 +127,22 @@ void addOptions(CLI::App& cli, Options& o) {
   cli.add_option(
       "--mass", o.mass,
       "Kirchhoff: added masses m1,m2,m3 (default " + shortList(KirchhoffSetup().mass) + ")");
+  cli.add_option("--n", o.n,
+                 "manakov, zeitlin: N of SO(N) or SU(N), 2 <= N <= " + std::to_string(kMaxMatrixN) +
+                     " (default manakov " + std::to_string(kManakovDefaultN) + ", zeitlin " +
+                     std::to_string(kZeitlinDefaultN) + ")");
+  cli.add_option("--j", o.j,
+                 "manakov: J1,...,JN > 0, inertia operator J Omega + Omega J (default "
+                 "J_i = 1 + (i-1)/(N-1))");
+  cli.add_option("--mu0-file", o.mu0_file,
+                 "manakov: initial momentum M0 from a CSV of N rows x N columns, real "
+                 "skew-symmetric (default: seeded by --seed)");
+  app::addSeedOption(cli, o.seed, "manakov, zeitlin: seed of the initial state");
+  cli.add_option("--init", o.init, "zeitlin: initial vorticity (listed below)")
+      ->capture_default_str();
+  cli.add_option("--init-file", o.init_file,
+                 "zeitlin: W0 from a CSV of N rows x 2N columns (row j: Re W[j,:] then "
+                 "Im W[j,:]), fluid-relax's layout");
   app::addLogFlags(cli, o.log);
   app::addVersionFlag(cli, kApp);
   cli.footer(helpFooter());

@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 #include <Eigen/Core>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -28,6 +29,10 @@ constexpr int kMaxRepeat = 1000;
 struct Options {
   std::string system = "rigid-body", scenario = "A", methods, out = "results", sweep;
   std::string h = "0.1", t_end, alpha, mgl, inertia, omega0, mu0, chi, metric, mass;
+  // The matrix systems (manakov, zeitlin); --n's default is the system's.
+  long n = 0;
+  std::uint64_t seed = 1;
+  std::string j, mu0_file, init = "random", init_file;
   bool plot = false;
   int repeat = 5;
   long every = 1;

@@ -17,12 +17,20 @@ void requirePositiveEntries(const std::string& flag, const std::string& text,
   if ((v.array() <= 0).any()) app::usageError(flag, text, "entries must be > 0");
 }
 
+/// The flags of the matrix systems, refused on the others.
+void rejectMatrixSystemsFlags(const CLI::App& cli, const std::string& context) {
+  for (const char* flag : {"--n", "--j", "--mu0-file", "--seed", "--init", "--init-file"}) {
+    app::rejectIfGiven(cli, flag, context);
+  }
+}
+
 }  // namespace
 
 Problem<SO3> rigidBodyProblem(const CLI::App& cli, const Options& o) {
   for (const char* flag : {"--mgl", "--chi", "--mu0", "--metric", "--mass"}) {
     app::rejectIfGiven(cli, flag, "--system rigid-body");
   }
+  rejectMatrixSystemsFlags(cli, "--system rigid-body");
   app::requireChoice("--scenario", o.scenario, scenarioNames());
   const RigidBodyScenario& base = rigidBodyScenario(o.scenario);
   RigidBodyScenario used = base;
@@ -44,6 +52,7 @@ Problem<SO3> rigidBodyProblem(const CLI::App& cli, const Options& o) {
 Problem<SE3> se3Problem(const CLI::App& cli, const Options& o) {
   const std::string context = "--system " + o.system;
   for (const char* flag : {"--scenario", "--omega0"}) app::rejectIfGiven(cli, flag, context);
+  rejectMatrixSystemsFlags(cli, context);
   const bool top = o.system == "heavy-top";
   for (const char* flag :
        top ? std::vector<const char*>{"--mass"} : std::vector<const char*>{"--mgl", "--chi"}) {

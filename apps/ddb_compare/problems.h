@@ -4,6 +4,7 @@
 // flow (docs/bad-inputs.md, "Decisions").
 #pragma once
 
+#include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/groups/se3.h>
 #include <ddb/groups/so3.h>
@@ -11,13 +12,16 @@
 #include <spdlog/spdlog.h>
 
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "common/cli.h"
+#include "common/exit_status.h"
 #include "common/json.h"
+#include "ddb_compare/matrix_flow_rate.h"
 #include "ddb_compare/options.h"
 
 namespace ddb::compare {
@@ -43,14 +47,22 @@ Problem<SE3> se3Problem(const CLI::App& cli, const Options& o);
 /// Why the reference cannot follow the flow from μ₀ to t_end in at most kMaxSteps of
 /// its time scale 1/rate, or "" if it can. An overflowing or extremely stiff problem
 /// (α = 1e308, 𝕀 = 1e-300, μ₀ = 1e200) would otherwise run for hours or fail at step 0.
+/// The rate is flowRate()'s on fixed-size groups, matrixFlowRate()'s bound on matrix
+/// groups.
 template <class G>
 std::string unresolvable(const Problem<G>& p, double t_end) {
-  const double rate = flowRate(*p.system, p.mu0);
+  double rate = 0.0;
+  if constexpr (isDynamicGroup<G>) {
+    rate = matrixFlowRate(*p.system, p.mu0, p.alpha);
+  } else {
+    rate = flowRate(*p.system, p.mu0);
+  }
   if (rate * t_end <= static_cast<double>(kMaxSteps)) return "";
+  const char* what = isDynamicGroup<G> ? "4|dH/dmu|_2 (1 + 3|alpha||mu0|_2)" : "|df/dmu|_inf";
   return fmt::format(
-      "the flow's rate |df/dmu|_inf = {:.3g} at mu0 exceeds 1e9/t-end = {:.3g}: no integrator "
+      "the flow's rate {} = {:.3g} at mu0 exceeds 1e9/t-end = {:.3g}: no integrator "
       "resolves it in 1e9 steps",
-      rate, static_cast<double>(kMaxSteps) / t_end);
+      what, rate, static_cast<double>(kMaxSteps) / t_end);
 }
 
 /// Bad input if the problem cannot be resolved (unresolvable()), naming the first given
@@ -64,18 +76,30 @@ void requireResolvable(const Options& o, const Problem<G>& problem, const MakePr
   const std::string why = unresolvable(problem, horizon(o, problem.t_end));
   if (why.empty()) return;
   const std::vector<std::pair<const char*, std::string Options::*>> flags{
-      {"--alpha", &Options::alpha},   {"--inertia", &Options::inertia},
-      {"--omega0", &Options::omega0}, {"--mu0", &Options::mu0},
-      {"--mgl", &Options::mgl},       {"--chi", &Options::chi},
-      {"--metric", &Options::metric}, {"--mass", &Options::mass},
+      {"--alpha", &Options::alpha},
+      {"--inertia", &Options::inertia},
+      {"--omega0", &Options::omega0},
+      {"--mu0", &Options::mu0},
+      {"--mgl", &Options::mgl},
+      {"--chi", &Options::chi},
+      {"--metric", &Options::metric},
+      {"--mass", &Options::mass},
+      {"--j", &Options::j},
+      {"--mu0-file", &Options::mu0_file},
+      {"--init-file", &Options::init_file},
       {"--t-end", &Options::t_end}};
   const std::pair<const char*, std::string Options::*>* blamed = nullptr;
   for (const auto& flag : flags) {
     if ((o.*flag.second).empty()) continue;
     Options reverted = o;
     (reverted.*flag.second).clear();
-    const auto fixed = make(reverted);
-    if (unresolvable(fixed, horizon(reverted, fixed.t_end)).empty()) {
+    // Without the flag the rest may not fit (--j's count is --mu0-file's N): not this one.
+    std::optional<Problem<G>> fixed;
+    try {
+      fixed = make(reverted);
+    } catch (const app::UsageError&) {
+    }
+    if (fixed && unresolvable(*fixed, horizon(reverted, fixed->t_end)).empty()) {
       blamed = &flag;
       break;
     }

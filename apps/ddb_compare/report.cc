@@ -12,7 +12,8 @@ Report::Report(int repeat)
 
 void Report::add(const MethodResult& r) {
   app::Json& entry = methods_[r.name];
-  entry["final"] = app::jsonArray(r.final);
+  entry["final"] = r.final;
+  entry["order"] = r.order;
   entry["energy_final"] = r.energy_final;
   entry["steps"] = r.steps;
   entry["t_final"] = r.t_final;

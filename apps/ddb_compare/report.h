@@ -6,6 +6,7 @@
 #include <ddb/core/lie_poisson_system.h>
 
 #include <Eigen/Core>
+#include <complex>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -51,10 +52,41 @@ class TrajectoryCsv {
   app::CsvRow row_;
 };
 
+/// <method>.csv rows of a matrix state (SO(N), SU(N); docs/file-formats.md): t, energy,
+/// the spectrum's relative drift and ‖μ‖_F. The N² entries are not written: the final
+/// state is in summary.json.
+template <class G>
+class MatrixTrajectoryCsv {
+ public:
+  using Dual = typename G::template Dual<double>;
+
+  /// `drift`: the spectrum drift of the state passed to operator(), kept by the caller,
+  /// which computes it for every state (casimir_drift is a maximum over all of them).
+  MatrixTrajectoryCsv(app::AtomicFile& file, const LiePoissonSystem<G>& system, const double& drift)
+      : file_(file), system_(system), drift_(drift), row_(4) {
+    file_.write("t,energy,casimir_drift,norm\n");
+  }
+
+  void operator()(long, double t, const Dual& mu) {
+    row_.put(t);
+    row_.put(system_.energy(mu));
+    row_.put(drift_);
+    row_.put(mu.norm());
+    row_.writeTo(file_);
+  }
+
+ private:
+  app::AtomicFile& file_;
+  const LiePoissonSystem<G>& system_;
+  const double& drift_;
+  app::CsvRow row_;
+};
+
 /// What summary.json and runtime_table.md say of one method.
 struct MethodResult {
   std::string name;
-  Eigen::VectorXd final;
+  app::Json final;  // the state: numbers, or {"re": rows, "im": rows} for a matrix
+  int order = 0;    // the method table's order at the run's α
   double energy_final = 0.0;
   long steps = 0;
   double t_final = 0.0;
@@ -65,6 +97,23 @@ struct MethodResult {
   double err_final = 0.0, casimir_drift = 0.0, runtime_s = 0.0;
   int timed_runs = 1;
 };
+
+/// A state for summary.json: its numbers, or for a matrix {"re": N rows, "im": N rows}
+/// (im all zeros for a real matrix).
+template <class Derived>
+app::Json stateJson(const Eigen::MatrixBase<Derived>& mu) {
+  if constexpr (Derived::ColsAtCompileTime == 1) {
+    return app::jsonArray(mu);
+  } else {
+    app::Json re = app::Json::array(), im = app::Json::array();
+    for (Eigen::Index i = 0; i < mu.rows(); ++i) {
+      const Eigen::VectorXcd row = mu.row(i).transpose().template cast<std::complex<double>>();
+      re.push_back(app::jsonArray(row.real()));
+      im.push_back(app::jsonArray(row.imag()));
+    }
+    return app::Json{{"re", re}, {"im", im}};
+  }
+}
 
 /// summary.json's "methods" and "runtime_table" and runtime_table.md, method by method.
 class Report {

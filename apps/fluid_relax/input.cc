@@ -1,96 +1,20 @@
 #include "fluid_relax/input.h"
 
-#include <ddb/core/errors.h>
 #include <ddb/groups/sun.h>
 #include <ddb/systems/zeitlin_fluid.h>
-#include <ddb/systems/zeitlin_initial_conditions.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <vector>
+#include <utility>
 
 #include "common/cli.h"
 #include "common/exit_status.h"
+#include "common/initial_vorticity.h"
 
 namespace ddb::fluid {
 
 namespace {
-
-namespace fs = std::filesystem;
-
-/// The text of a cell with surrounding blanks removed.
-std::string trimmed(const std::string& text) {
-  const auto begin = text.find_first_not_of(" \t");
-  if (begin == std::string::npos) return "";
-  return text.substr(begin, text.find_last_not_of(" \t") + 1 - begin);
-}
-
-/// W0 from --init-file: N rows of 2N numbers (docs/file-formats.md), N in [2, kMaxN],
-/// skew-Hermitian and traceless to 1e-12 relative (SUN::requireState) and not zero.
-Matrix readInitFile(const std::string& path) {
-  const auto bad = [&](const std::string& why) { app::usageError("--init-file", path, why); };
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) bad("not a readable file");
-  std::ifstream in(path);
-  if (!in) bad("cannot be opened");
-  std::vector<std::vector<double>> rows;
-  for (std::string line; std::getline(in, line);) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (trimmed(line).empty()) continue;
-    if (static_cast<Eigen::Index>(rows.size()) == kMaxN) {
-      bad("more than " + std::to_string(kMaxN) + " rows (N <= " + std::to_string(kMaxN) + ")");
-    }
-    rows.emplace_back();
-    for (const auto& cell : app::split(line)) {
-      rows.back().push_back(app::parseNumber("--init-file", path, trimmed(cell)));
-    }
-  }
-  if (in.bad()) bad("read error");
-  const auto n = static_cast<Eigen::Index>(rows.size());
-  if (n < 2) bad(std::to_string(n) + " rows; N must be >= 2");
-  Matrix W(n, n);
-  for (Eigen::Index j = 0; j < n; ++j) {
-    const auto& row = rows[static_cast<std::size_t>(j)];
-    if (static_cast<Eigen::Index>(row.size()) != 2 * n) {
-      bad("row " + std::to_string(j + 1) + " has " + std::to_string(row.size()) +
-          " columns; N = " + std::to_string(n) + " rows need 2N = " + std::to_string(2 * n));
-    }
-    for (Eigen::Index k = 0; k < n; ++k) {
-      W(j, k) = {row[static_cast<std::size_t>(k)], row[static_cast<std::size_t>(n + k)]};
-    }
-  }
-  try {
-    SUN::requireState("W", W);
-  } catch (const InvalidArgument& e) {
-    bad(e.what());
-  }
-  if (W.norm() == 0.0) bad("W is zero");
-  return W;
-}
-
-Matrix initialVorticity(const CLI::App& cli, const Options& o, std::string& init) {
-  if (!o.init_file.empty()) {
-    app::rejectIfGiven(cli, "--init", "--init-file");
-    app::rejectIfGiven(cli, "--seed", "--init-file");
-    Matrix W = readInitFile(o.init_file);
-    if (cli.count("--n") > 0 && W.rows() != o.n) {
-      app::usageError("--n", std::to_string(o.n),
-                      "--init-file " + o.init_file + " has N = " + std::to_string(W.rows()));
-    }
-    init = "file";
-    return W;
-  }
-  if (o.n < 2 || o.n > kMaxN) {
-    app::usageError("--n", std::to_string(o.n), "must be in [2, " + std::to_string(kMaxN) + "]");
-  }
-  app::requireChoice("--init", o.init, app::namesOf(initDescriptions()));
-  init = o.init;
-  if (o.init == "random") return randomVorticity(o.n, o.seed);
-  if (o.init == "l1") return l1Vorticity(o.n, o.seed);
-  return zonalVorticity(o.n, o.seed);
-}
 
 /// Bad input if the first step would overflow: the DDB step squares its dissipative part
 /// h|α|‖P₀‖₂‖W₀‖₂/ħ, which past √(largest double) ≈ 1e154 becomes inf and then NaN
@@ -134,7 +58,10 @@ Settings settings(const CLI::App& cli, const Options& o) {
     app::usageError("--steps", std::to_string(o.steps), "must be in [1, 1e9]");
   }
   if (o.every < 1) app::usageError("--every", std::to_string(o.every), "must be >= 1");
-  s.W0 = initialVorticity(cli, o, s.init);
+  app::InitialVorticity initial =
+      app::initialVorticity(cli, {o.n, o.seed, o.init, o.init_file}, {kMaxN, ""});
+  s.W0 = std::move(initial.W);
+  s.init = initial.init;
 
   double t_end = 0.0;
   if (by_time) {

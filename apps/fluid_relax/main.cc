@@ -19,6 +19,7 @@
 #include "common/logging.h"
 #include "common/plot.h"
 #include "common/progress.h"
+#include "common/spectrum_drift.h"
 #include "fluid_relax/input.h"
 #include "fluid_relax/options.h"
 #include "fluid_relax/outputs.h"
@@ -27,18 +28,6 @@ namespace {
 
 using namespace ddb;
 using namespace ddb::fluid;
-
-/// ‖spec(W) − spec(W₀)‖/‖spec(W₀)‖, spectra sorted (SUN::casimirs).
-class SpectrumDrift {
- public:
-  explicit SpectrumDrift(const Matrix& W0) : initial_(SUN::casimirs(W0)) {}
-  double operator()(const Matrix& W) const {
-    return (SUN::casimirs(W) - initial_).norm() / initial_.norm();
-  }
-
- private:
-  Eigen::VectorXd initial_;
-};
 
 int relax(const Options& o, const Settings& s) {
   const Eigen::Index n = s.W0.rows();
@@ -54,7 +43,7 @@ int relax(const Options& o, const Settings& s) {
   spdlog::info("N = {}, alpha = {}, {} init{}, {}: {} steps of h = {}{} to t = {}", n, s.alpha,
                s.init, s.init == "file" ? " " + o.init_file : "", o.method, s.steps, s.h,
                s.default_h ? " (default)" : "", static_cast<double>(s.steps) * s.h);
-  const SpectrumDrift spectrumDrift(s.W0);
+  const app::SpectrumDrift<SUN> spectrumDrift(s.W0);
   double drift = 0.0, drift_max = 0.0;
   long iterations_total = 0, iterations_max = 0;
 

@@ -4,16 +4,9 @@
 
 #include "common/cli.h"
 #include "common/format.h"
+#include "common/initial_vorticity.h"
 
 namespace ddb::fluid {
-
-const std::vector<std::pair<std::string, std::string>>& initDescriptions() {
-  static const std::vector<std::pair<std::string, std::string>> inits{
-      {"random", "i.i.d. normal real and imaginary parts, projected to su(N)"},
-      {"l1", "W = U X3 U^H, U a random unitary: the orbit of the l = 1 element X3"},
-      {"zonal", "i diag(d), d normal: a steady state, [P, W] = 0"}};
-  return inits;
-}
 
 std::vector<std::pair<std::string, std::string>> fluidMethods() {
   std::vector<std::pair<std::string, std::string>> methods;
@@ -38,15 +31,7 @@ void addOptions(CLI::App& cli, Options& o) {
   cli.add_option("--t-end", o.t_end,
                  "final time: round(T/h) steps of the given --h, or with the default h the "
                  "smallest step count whose equal steps are no longer than it");
-  cli.add_option("--seed", o.seed, "seed of the initial vorticity")
-      ->capture_default_str()
-      ->check(
-          [](const std::string& text) {
-            // CLI11 would wrap a negative seed around to 2^64 - 1 without a word.
-            return text.rfind('-', 0) != 0 ? std::string()
-                                           : text + " is negative; a seed is in [0, 2^64)";
-          },
-          "");
+  app::addSeedOption(cli, o.seed, "seed of the initial vorticity");
   cli.add_option("--init", o.init, "initial vorticity (listed below)")->capture_default_str();
   cli.add_option("--init-file", o.init_file,
                  "read W0 from a CSV of N rows x 2N columns (row j: Re W[j,:] then Im W[j,:]); "
@@ -60,7 +45,7 @@ void addOptions(CLI::App& cli, Options& o) {
   app::addVersionFlag(cli, kApp);
   cli.footer(
       "\nInitial vorticities (--init; all scaled to ||W||_F = sqrt(N), seeded by --seed):\n" +
-      app::describeChoices(initDescriptions()) + "\nMethods (--method):\n" +
+      app::describeChoices(app::initDescriptions()) + "\nMethods (--method):\n" +
       app::describeChoices(fluidMethods()) +
       "\nFiles in --out: history.csv, W_final.csv, omega_initial.csv, omega_final.csv, "
       "summary.json\n(docs/file-formats.md).\nExit status: 0 ok, 1 a step failed or a "

@@ -23,9 +23,6 @@ constexpr long kMaxSteps = 1000000000L;
 // docs/conventions.md §2 kept small, so that a Legendre solve takes a few iterations.
 constexpr double kStepFactor = 0.02;
 
-/// --init's choices, with their descriptions for --help.
-const std::vector<std::pair<std::string, std::string>>& initDescriptions();
-
 /// The methods for the fluid: every entry of the method table for matrix groups but the
 /// dense reference, with the table's descriptions.
 std::vector<std::pair<std::string, std::string>> fluidMethods();
