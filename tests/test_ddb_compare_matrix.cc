@@ -254,6 +254,10 @@ TEST(DdbCompareMatrix, SweepWritesAFallingErrorForEveryMethod) {
   EXPECT_EQ(errors.size(), ddb::methodNames(ddb::kMatrixGroups).size() - 1);  // no reference
   for (const auto& [method, e] : errors) {
     ASSERT_EQ(e.size(), 3u) << method;
+    if (e[0] < 1e-12) {  // already at the round-off plateau at the largest h (ddb6-exp)
+      EXPECT_LT(e[2], 1e-12) << method;
+      continue;
+    }
     EXPECT_LT(e[2], e[0]) << method;
   }
 }
