@@ -1,6 +1,6 @@
-// A DDB Cayley step on a matrix group allocates nothing once its workspaces exist
-// (docs/conventions.md §4), and which other methods still do: every malloc of this binary
-// is counted (tools/malloc_counter.h).
+// A DDB Cayley step and a Lobatto IIIC step on a matrix group allocate nothing once their
+// workspaces exist (docs/conventions.md §4), and which other methods still do: every malloc
+// of this binary is counted (tools/malloc_counter.h).
 #include <ddb/integrators/method_table.h>
 #include <ddb/systems/manakov_body.h>
 #include <ddb/systems/zeitlin_fluid.h>
@@ -41,10 +41,30 @@ TEST(Allocations, DdbCayleyOnSoNAllocatesNothingPerStep) {
   EXPECT_EQ(allocationsPerStep<SON>(makeManakovBody(J, 0.5), M, 0.05), 0);
 }
 
+// Lobatto IIIC's matrix-free stage solver, on its fixed-point path and forced onto
+// Newton–Krylov (whose GMRES basis is sized at the first step).
+TEST(Allocations, Lobatto3cOnSuNAndSoNAllocatesNothingPerStep) {
+  Eigen::VectorXd J(5);
+  J << 0.3, 0.5, 0.8, 1.1, 1.7;
+  const Eigen::MatrixXd M = SON::vee(Eigen::MatrixXd(Eigen::MatrixXd::Random(5, 5)));
+  EXPECT_EQ(
+      allocationsPerStep<SUN>(makeZeitlinFluid(16, 0.5), randomVorticity(16, 1), 0.01, "lobatto3c"),
+      0);
+  EXPECT_EQ(allocationsPerStep<SON>(makeManakovBody(J, 0.5), M, 0.05, "lobatto3c"), 0);
+  MatrixFreeImplicitRungeKutta<SON, 3> newton(makeManakovBody(J, 0.5), kLobattoIIIC3);
+  newton.setNewtonOnly(true);
+  Eigen::MatrixXd mu = M;
+  newton.advance(mu, 0.0, 0.05);
+  const long before = tools::mallocCount();
+  for (int k = 1; k < 11; ++k) newton.advance(mu, k * 0.05, 0.05);
+  EXPECT_GT(newton.newtonSteps(), 0);
+  EXPECT_EQ(tools::mallocCount() - before, 0);
+}
+
 // Which matrix-group methods step without allocating, as OneStepMethod::advance's comment
-// says: ddb-cay alone so far (issue 24 brings the rest to zero; this test then changes).
-// RK4 returns its stages by value, so the counter must see its allocations.
-TEST(Allocations, OnlyDdbCayleyStepsWithoutAllocatingOnMatrixGroups) {
+// says: ddb-cay and lobatto3c so far (issue 24 brings the rest to zero; this test then
+// changes). RK4 returns its stages by value, so the counter must see its allocations.
+TEST(Allocations, OnlyDdbCayleyAndLobattoStepWithoutAllocatingOnMatrixGroups) {
   Eigen::VectorXd J(5);
   J << 0.3, 0.5, 0.8, 1.1, 1.7;
   const Eigen::MatrixXd M = SON::vee(Eigen::MatrixXd(Eigen::MatrixXd::Random(5, 5)));
@@ -52,7 +72,7 @@ TEST(Allocations, OnlyDdbCayleyStepsWithoutAllocatingOnMatrixGroups) {
     const long fluid =
         allocationsPerStep<SUN>(makeZeitlinFluid(16, 0.5), randomVorticity(16, 1), 0.01, name);
     const long body = allocationsPerStep<SON>(makeManakovBody(J, 0.5), M, 0.05, name);
-    if (name == "ddb-cay") {
+    if (name == "ddb-cay" || name == "lobatto3c") {
       EXPECT_EQ(fluid, 0) << name;
       EXPECT_EQ(body, 0) << name;
     } else {

@@ -108,16 +108,17 @@ TEST(MethodTable, RowsMatchWhatTheMethodsDoOnSON) {
   Sampler sampler(8);
   const Eigen::Matrix4d a = sampler.vector<Eigen::Matrix4d>();
   const Eigen::MatrixXd M0 = a - a.transpose();
-  checkRows<SON>(makeManakovBody(J, 0.5), M0, 0.2);
+  // h = 0.3: at 0.2 Lobatto IIIC's drift (7.1e-11) falls between the two bounds.
+  checkRows<SON>(makeManakovBody(J, 0.5), M0, 0.3);
 }
 
 TEST(MethodTable, NamesNotInTheTableAreRefusedByName) {
   const RigidBodyScenario& a = rigidBodyScenario("A");
   EXPECT_THAT([&] { makeMethod<SO3>("ddb-cayley", a.system()); },
               ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("ddb-cayley")));
-  EXPECT_THAT([&] { makeMethod<SUN>("lobatto3c", makeZeitlinFluid(4, 0.5)); },
+  EXPECT_THAT([&] { makeMethod<SUN>("ddb-exp", makeZeitlinFluid(4, 0.5)); },
               ::testing::ThrowsMessage<InvalidArgument>(
-                  ::testing::HasSubstr("ddb-cay, sddb-cay, ddb4-cay, rk4, reference")));
+                  ::testing::HasSubstr("ddb-cay, sddb-cay, ddb4-cay, rk4, lobatto3c, reference")));
   EXPECT_FALSE(methodApplies("ddb-cayley", *a.system()));
 }
 
