@@ -24,6 +24,7 @@
 #include <ddb/integrators/ddb.h>
 #include <ddb/integrators/flow_rate.h>
 #include <ddb/integrators/matrix_cayley_transport.h>
+#include <ddb/integrators/matrix_free_runge_kutta.h>
 #include <ddb/integrators/matrix_legendre.h>
 #include <ddb/integrators/method_table.h>
 #include <ddb/integrators/one_step_method.h>

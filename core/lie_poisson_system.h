@@ -17,6 +17,23 @@
 
 namespace ddb {
 
+/// The workspaces of a matrix-group system's in-place evaluations (vectorFieldInto and its
+/// derivative): no evaluation allocates once resize() has run for the state's size.
+template <class G>
+struct MatrixFieldWorkspace {
+  using Matrix = typename G::template Dual<double>;
+  // At μ: P μ, ξ, the commutator [Pμ, ξ], φ, ξ + φ. Along v: P v, δξ, δ[Pμ, ξ], δφ, δ(ξ + φ).
+  Matrix argument, xi, commutator, phi, forced, direction, dxi, dcommutator, dphi, dforced;
+
+  void resize(Eigen::Index n) {
+    if (argument.rows() == n) return;
+    for (Matrix* m : {&argument, &xi, &commutator, &phi, &forced, &direction, &dxi, &dcommutator,
+                      &dphi, &dforced}) {
+      m->setZero(n, n);
+    }
+  }
+};
+
 template <class G>
 class LiePoissonSystem {
   static_assert(sizeof(GroupTraits<G>) > 0, "checks G's minimum API (core/group_traits.h)");
@@ -59,10 +76,30 @@ class LiePoissonSystem {
   double energy(const Dual& mu) const { return hamiltonian_->value(mu); }
   Casimirs casimirs(const Dual& mu) const { return G::casimirs(mu); }
 
-  /// ξ = ∂H/∂μ (double or Jet).
+  /// ξ = ∂H/∂μ (double or Jet). On matrix groups ξ = P ∂H/∂μ(P μ) with P = G::projectToAlgebra:
+  /// the Hamiltonian sees an element of the algebra (su(N): the DDB Legendre unknown's trace
+  /// stays in the solve) and ξ is in the algebra whatever H returns (docs/conventions.md §2,
+  /// "Systems on matrix groups").
   template <class T>
   AlgebraT<T> velocity(const DualT<T>& mu) const {
     return velocityOf(*hamiltonian_, mu);
+  }
+
+  /// Matrix groups, in place: ξ = P ∂H/∂μ(P p) into xi, P p into `argument` (both of p's size).
+  void velocityInto(const Dual& p, Dual& argument, Algebra& xi) const {
+    static_assert(isDynamicGroup<G>, "the in-place evaluations are for matrix groups");
+    velocityAt(*hamiltonian_, p, argument, xi);
+  }
+
+  /// Matrix groups, in place: the derivative of velocity() along v, P D²H(P p)[P v], given
+  /// `argument` = P p from velocityInto; `direction` is a workspace.
+  void velocityDerivativeInto(const Dual& argument, const Dual& v, Dual& direction,
+                              Algebra& out) const {
+    static_assert(isDynamicGroup<G>, "the in-place evaluations are for matrix groups");
+    direction = v;
+    G::projectToAlgebra(direction);
+    hamiltonian_->hessianTimesInto(argument, direction, out);
+    G::projectToAlgebra(out);
   }
 
   /// φ(ξ) = k♯(ad*_ξ μ), where μ is the momentum paired with ξ (double or Jet).
@@ -83,6 +120,28 @@ class LiePoissonSystem {
     }
   }
 
+  /// Matrix groups, in place: μ̇ = P ad*_{ξ+φ}(P μ), the vector field on the algebra (the
+  /// argument projected like the Hamiltonian's, the result too, so that explicit and implicit
+  /// Runge–Kutta states stay on it). `w` is sized by w.resize(N) and keeps what the
+  /// derivative at this μ needs.
+  void vectorFieldInto(const Dual& mu, MatrixFieldWorkspace<G>& w, Dual& out) const {
+    fieldInto(*hamiltonian_, *metric_, mu, w, out);
+  }
+
+  /// Matrix groups, in place: Df(μ)[v] at the μ of the last vectorFieldInto with `w`, by the
+  /// linearised brackets: with x = ξ + φ, δξ = P D²H(Pμ)[Pv] and
+  /// δx = δξ + k♯([Pv, ξ] + [Pμ, δξ]), Df(μ)[v] = P([Pv, x] + [Pμ, δx]). Eight products.
+  void vectorFieldDerivativeInto(const Dual& v, MatrixFieldWorkspace<G>& w, Dual& out) const {
+    velocityDerivativeInto(w.argument, v, w.direction, w.dxi);  // P v and δξ
+    bracketInto(w.direction, w.xi, w.dcommutator);
+    addBracket(w.argument, w.dxi, w.dcommutator);
+    metric_->sharpInto(w.dcommutator, w.dphi);
+    w.dforced = w.dxi + w.dphi;
+    bracketInto(w.direction, w.forced, out);
+    addBracket(w.argument, w.dforced, out);
+    G::projectToAlgebra(out);
+  }
+
  protected:
   /// μ̇ at a double μ. TypedLiePoissonSystem overrides it to call its Hamiltonian and metric
   /// through their concrete types.
@@ -92,7 +151,15 @@ class LiePoissonSystem {
   // concrete ones in TypedLiePoissonSystem.
   template <class H, class T>
   static AlgebraT<T> velocityOf(const H& hamiltonian, const DualT<T>& mu) {
-    return liftGradient(hamiltonian, mu);
+    if constexpr (isDynamicGroup<G>) {
+      static_assert(std::is_same_v<T, double>, "matrix groups are evaluated in double");
+      Dual argument(mu.rows(), mu.cols());
+      Algebra xi(mu.rows(), mu.cols());
+      velocityAt(hamiltonian, mu, argument, xi);
+      return xi;
+    } else {
+      return liftGradient(hamiltonian, mu);
+    }
   }
   template <class K, class T>
   static AlgebraT<T> dissipationOf(const K& metric, const AlgebraT<T>& xi, const DualT<T>& mu) {
@@ -101,9 +168,50 @@ class LiePoissonSystem {
   }
   template <class H, class K, class T>
   static DualT<T> vectorFieldOf(const H& hamiltonian, const K& metric, const DualT<T>& mu) {
-    const AlgebraT<T> xi = velocityOf(hamiltonian, mu);
-    const AlgebraT<T> forced = xi + dissipationOf(metric, xi, mu);
-    return G::adDual(forced, mu);
+    if constexpr (isDynamicGroup<G>) {
+      MatrixFieldWorkspace<G> w;
+      w.resize(mu.rows());
+      Dual out(mu.rows(), mu.cols());
+      fieldInto(hamiltonian, metric, mu, w, out);
+      return out;
+    } else {
+      const AlgebraT<T> xi = velocityOf(hamiltonian, mu);
+      const AlgebraT<T> forced = xi + dissipationOf(metric, xi, mu);
+      return G::adDual(forced, mu);
+    }
+  }
+
+  // Matrix groups: ξ = P ∂H/∂μ(Pμ), with Pμ into `argument`. The one place where a matrix
+  // group's Hamiltonian is evaluated (docs/conventions.md §2, "Systems on matrix groups").
+  template <class H>
+  static void velocityAt(const H& hamiltonian, const Dual& mu, Dual& argument, Algebra& xi) {
+    argument = mu;
+    G::projectToAlgebra(argument);
+    hamiltonian.gradientInto(argument, xi);
+    G::projectToAlgebra(xi);
+  }
+
+  // Matrix groups: eq. (3.4) on the algebra, f(μ) = P ad*_{ξ+φ}(Pμ), ξ = P ∂H/∂μ(Pμ),
+  // φ = k♯(ad*_ξ Pμ), with ad*_x μ = [μ, x]. Four products, none allocating.
+  template <class H, class K>
+  static void fieldInto(const H& hamiltonian, const K& metric, const Dual& mu,
+                        MatrixFieldWorkspace<G>& w, Dual& out) {
+    velocityAt(hamiltonian, mu, w.argument, w.xi);
+    bracketInto(w.argument, w.xi, w.commutator);
+    metric.sharpInto(w.commutator, w.phi);
+    w.forced = w.xi + w.phi;
+    bracketInto(w.argument, w.forced, out);
+    G::projectToAlgebra(out);
+  }
+
+  // out = [a, b] = ab − ba, and out += [a, b], without temporaries.
+  static void bracketInto(const Dual& a, const Dual& b, Dual& out) {
+    out.noalias() = a * b;
+    out.noalias() -= b * a;
+  }
+  static void addBracket(const Dual& a, const Dual& b, Dual& out) {
+    out.noalias() += a * b;
+    out.noalias() -= b * a;
   }
 
  private:

@@ -3,13 +3,16 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
+#include <limits>
 #include <type_traits>
 
 namespace ddb {
 
 /// f: Domain → R with gradient in Codomain (the dual space of Domain).
-/// hessianTimes(x, v) = D(∇f)(x)[v] is all the implicit solvers need, so no
-/// dim × dim matrix is ever required of a large algebra.
+/// A subclass must provide value and gradient; hessianTimes(x, v) = D(∇f)(x)[v] is
+/// optional. It is all the Newton-type solvers need, so no dim × dim matrix is ever
+/// required of a large algebra.
 template <class Domain, class Codomain>
 class SmoothFunction {
  public:
@@ -19,7 +22,22 @@ class SmoothFunction {
   virtual ~SmoothFunction() = default;
   virtual double value(const Domain& x) const = 0;
   virtual Codomain gradient(const Domain& x) const = 0;
-  virtual Codomain hessianTimes(const Domain& x, const Domain& v) const = 0;
+  /// D(∇f)(x)[v]. The default is the central difference of `gradient` along v with the step
+  /// s = ∛u·‖x‖/‖v‖ (u the unit rounding; ‖x‖ → 1 at x = 0), whose truncation and rounding
+  /// errors balance at about u^{2/3} ≈ 4e-11 relative. Only Newton-type solves use it (the
+  /// matrix groups' Newton–Krylov fallbacks, the small solvers' Jacobians), and they judge
+  /// convergence on the exact residual: an approximate derivative costs iterations, not
+  /// accuracy (docs/conventions.md §4, "Derivatives"). Override it with the formula where
+  /// Newton runs often, e.g. at large h on matrix groups.
+  virtual Codomain hessianTimes(const Domain& x, const Domain& v) const {
+    const double norm_v = v.norm();
+    const double norm_x = x.norm();
+    const double s = norm_v > 0.0 ? std::cbrt(std::numeric_limits<double>::epsilon()) *
+                                        (norm_x > 0.0 ? norm_x : 1.0) / norm_v
+                                  : 1.0;
+    const Domain plus = x + s * v, minus = x - s * v;
+    return Codomain((gradient(plus) - gradient(minus)) / (2.0 * s));
+  }
 
   /// In-place forms for large (matrix) algebras, `out` already of x's size: the
   /// matrix-free solvers call these so that no iteration allocates. The defaults

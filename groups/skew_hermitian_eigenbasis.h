@@ -32,6 +32,20 @@ inline std::complex<double> expm1OfIOverI(double eta) {
   return {std::sin(eta) / eta, 2.0 * s * s / eta};
 }
 
+/// m ← (m − mᴴ)/2 in place: skew-Hermitian bit for bit (entry (j, i) is −conj of entry
+/// (i, j), the diagonal imaginary, zero for real m).
+template <class M>
+void makeSkewHermitian(M& m) {
+  for (Eigen::Index j = 0; j < m.cols(); ++j) {
+    for (Eigen::Index i = 0; i < j; ++i) {
+      const typename M::Scalar v = 0.5 * (m(i, j) - Eigen::numext::conj(m(j, i)));
+      m(i, j) = v;
+      m(j, i) = -Eigen::numext::conj(v);
+    }
+    m(j, j) = 0.5 * (m(j, j) - Eigen::numext::conj(m(j, j)));
+  }
+}
+
 template <class Matrix>
 class SkewHermitianEigenbasis {
  public:
@@ -92,18 +106,6 @@ class SkewHermitianEigenbasis {
       out = hat_.real();
     } else {
       out = hat_;
-    }
-  }
-
-  /// m ← (m − mᴴ)/2 in place.
-  static void makeSkewHermitian(Matrix& m) {
-    for (Eigen::Index j = 0; j < m.cols(); ++j) {
-      for (Eigen::Index i = 0; i < j; ++i) {
-        const auto v = 0.5 * (m(i, j) - Eigen::numext::conj(m(j, i)));
-        m(i, j) = v;
-        m(j, i) = -Eigen::numext::conj(v);
-      }
-      m(j, j) = 0.5 * (m(j, j) - Eigen::numext::conj(m(j, j)));
     }
   }
 

@@ -93,6 +93,26 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
     return std::max(std::abs(spectrum(0)), std::abs(spectrum(spectrum.size() - 1)));
   }
 
+  /// The orthogonal projection onto the algebra, in place: the skew-Hermitian part with the
+  /// trace removed (su(N)), the skew-symmetric part for real matrices (so(N)). It is what a
+  /// system hands its Hamiltonian, where the DDB Legendre unknown carries a trace, and what it
+  /// makes of the ξ the Hamiltonian returns (docs/conventions.md §2, "Systems on matrix
+  /// groups"). The result is skew-Hermitian bit for bit (entry (j, i) is −conj of entry
+  /// (i, j), the diagonal imaginary), and sums and real multiples of such matrices stay so:
+  /// an explicit step keeps its state on the algebra up to a trace of rounding size.
+  template <class X>
+  static void projectToAlgebra(X& x) {
+    using Scalar = typename X::Scalar;
+    const Eigen::Index n = x.rows();
+    makeSkewHermitian(x);  // the real diagonal is now zero
+    if constexpr (Eigen::NumTraits<Scalar>::IsComplex) {
+      double trace = 0.0;
+      for (Eigen::Index i = 0; i < n; ++i) trace += x(i, i).imag();
+      const double mean = trace / double(n);
+      for (Eigen::Index i = 0; i < n; ++i) x(i, i) = Scalar(0.0, x(i, i).imag() - mean);
+    }
+  }
+
   // ---- Closed forms shadowing the deduced API ----
   template <class X>
   static X inverse(const X& g) {

@@ -7,8 +7,10 @@
 // when it contracts too slowly (h‖ξ‖ near 1), Newton–Krylov: GMRES on the exact
 // Jacobian–vector products (four products each). The exponential (sweep() below): the fixed
 // point in ξ's eigenbasis, or with the series truncated after ad^order; no Newton fallback
-// (a slow sweep goes on while it contracts). Workspaces are allocated on the first solve of a
-// size and reused: no iteration allocates.
+// (a slow sweep goes on while it contracts). ξ(p) is the system's velocity
+// (LiePoissonSystem::velocityInto): the Hamiltonian sees the algebra part of p, whose trace
+// stays in the solve. Workspaces are allocated on the first solve of a size and reused: no
+// iteration allocates.
 //
 // Ceres (ceres::Problem, dense QR, the Jacobian assembled from the same exact
 // Jacobian–vector products, one per coordinate) solves the same equation in real
@@ -230,7 +232,7 @@ class MatrixLegendreSolver {
   void allocate(const Dual& like) {
     if (p_.rows() == like.rows() && p_.cols() == like.cols()) return;
     for (Dual* m : {&p_, &next_, &xi_, &a_, &ap_, &apa_, &frozen_, &residual_, &delta_, &delta_a_,
-                    &t1_, &t2_, &target_}) {
+                    &t1_, &t2_, &target_, &argument_, &direction_}) {
       m->setZero(like.rows(), like.cols());
     }
     predictor_.reset();
@@ -305,10 +307,17 @@ class MatrixLegendreSolver {
     }
   }
 
-  // ξ = ∂H/∂μ(p), a = hξ/2.
+  // ξ = ∂H/∂μ(p) as the system evaluates it (at the algebra part of p, projected onto the
+  // algebra: LiePoissonSystem::velocityInto), a = hξ/2.
   void updateVelocity(double h) {
-    system_.hamiltonian().gradientInto(p_, xi_);
+    system_.velocityInto(p_, argument_, xi_);
     a_ = (0.5 * h) * xi_;
+  }
+
+  // δa = (h/2) Dξ(p)[v] at the p of the last updateVelocity.
+  void halfStepDerivative(const Dual& v, double h, Dual& out) {
+    system_.velocityDerivativeInto(argument_, v, direction_, out);
+    out *= 0.5 * h;
   }
 
   // Newton on r(p) = (I + a)p(I − a) − W with GMRES on J δ = −r.
@@ -325,8 +334,7 @@ class MatrixLegendreSolver {
       residual_ = -residual_;
       delta_.setZero();
       const auto jacobian = [&](const Dual& v, Dual& out) {
-        system_.hamiltonian().hessianTimesInto(p_, v, delta_a_);
-        delta_a_ *= 0.5 * h;
+        halfStepDerivative(v, h, delta_a_);
         G::cayleyLinearised(a_, p_, v, delta_a_, t1_, t2_, out);
       };
       // Inexact Newton: GMRES to 1e-4 of the current residual (never below a tenth of
@@ -405,8 +413,7 @@ class MatrixLegendreSolver {
           unit[static_cast<std::size_t>(k)] = 1.0;
           fromCoordinates(unit.data(), s.delta_);
           unit[static_cast<std::size_t>(k)] = 0.0;
-          s.system_.hamiltonian().hessianTimesInto(s.p_, s.delta_, s.delta_a_);
-          s.delta_a_ *= 0.5 * h_;
+          s.halfStepDerivative(s.delta_, h_, s.delta_a_);
           G::cayleyLinearised(s.a_, s.p_, s.delta_, s.delta_a_, s.t1_, s.t2_, s.next_);
           toCoordinates(s.next_, column.data());
           for (int i = 0; i < n; ++i) jacobians[0][i * n + k] = column[static_cast<std::size_t>(i)];
@@ -463,6 +470,7 @@ class MatrixLegendreSolver {
   MatrixLegendreStrategy strategy_ = MatrixLegendreStrategy::kAuto;
   LegendreStats stats_;
   Dual p_, next_, xi_, a_, ap_, apa_, frozen_, residual_, delta_, delta_a_, t1_, t2_, target_;
+  Dual argument_, direction_;  // the algebra parts of p and of a Newton direction
 
   MatrixFreeGmres<Dual> gmres_;
   SkewHermitianEigenbasis<Dual> eigenbasis_;

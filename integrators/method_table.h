@@ -12,6 +12,7 @@
 #include <ddb/groups/exponential.h>
 #include <ddb/integrators/composition.h>
 #include <ddb/integrators/ddb.h>
+#include <ddb/integrators/matrix_free_runge_kutta.h>
 #include <ddb/integrators/reference.h>
 #include <ddb/integrators/runge_kutta.h>
 #include <ddb/integrators/symmetric_ddb.h>
@@ -105,7 +106,7 @@ inline constexpr std::array<MethodInfo, 13> kMethods{{
    kFixedSizeGroups | kMatrixGroups, false, false, 4, 4,
    MethodKind::kExplicitRk4, RetractionKind::kNone, SchemeKind::kNone, ""},
   {"lobatto3c", "Lobatto IIIC, 3 stages, order 4 (does not keep Casimirs)",
-   kFixedSizeGroups, false, false, 4, 4,
+   kFixedSizeGroups | kMatrixGroups, false, false, 4, 4,
    MethodKind::kLobattoIIIC, RetractionKind::kNone, SchemeKind::kNone, ""},
   {"reference", "adaptive Runge-Kutta-Fehlberg 7(8), tolerance 1e-13",
    kFixedSizeGroups | kMatrixGroups, false, false, 0, 0,
@@ -243,10 +244,11 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(const MethodInfo& method,
     case MethodKind::kExplicitRk4:
       return std::make_unique<ExplicitRungeKutta<G, 4>>(system, kClassicalRk4);
     case MethodKind::kLobattoIIIC:
-      if constexpr (!isDynamicGroup<G>) {
+      if constexpr (isDynamicGroup<G>) {
+        return std::make_unique<MatrixFreeImplicitRungeKutta<G, 3>>(system, kLobattoIIIC3);
+      } else {
         return std::make_unique<ImplicitRungeKutta<G, 3>>(system, kLobattoIIIC3);
       }
-      break;
     case MethodKind::kReference:
       return std::make_unique<ReferenceSolver<G>>(system);
   }

@@ -24,8 +24,8 @@ class OneStepMethod {
   /// μ(t + h) from μ(t). Throws SolveFailure (step index -1) if an implicit solve fails.
   virtual Dual step(const Dual& mu, double t, double h) = 0;
   /// μ ← μ(t + h) in place; integrate() calls this. A method that overrides it can step
-  /// without allocating (an N×N state returned by value allocates): on matrix groups `Ddb`
-  /// and `Composition` do, the others not yet (tests/test_allocations.cc checks both).
+  /// without allocating (an N×N state returned by value allocates): on matrix groups every
+  /// method of the table does (tests/test_allocations.cc checks each).
   virtual void advance(Dual& mu, double t, double h) { mu = step(mu, t, h); }
 };
 

@@ -39,8 +39,14 @@ struct OdeintSystem {
   using Scalar = typename Dual::Scalar;
   static constexpr int kReals = sizeof(Scalar) / sizeof(double);
   using State = typename detail::OdeintState<G>::type;
+  /// Matrix groups: the kept workspaces of the in-place field (LiePoissonSystem::vectorFieldInto).
+  struct Workspace {
+    Dual input, output;
+    MatrixFieldWorkspace<G> field;
+  };
   const LiePoissonSystem<G>& system;
   Eigen::Index rows, cols;
+  Workspace* workspace = nullptr;  // matrix groups only
 
   static auto map(State& x, Eigen::Index rows, Eigen::Index cols) {
     return Eigen::Map<Dual>(reinterpret_cast<Scalar*>(x.data()), rows, cols);
@@ -49,7 +55,13 @@ struct OdeintSystem {
     return Eigen::Map<const Dual>(reinterpret_cast<const Scalar*>(x.data()), rows, cols);
   }
   void operator()(const State& x, State& dxdt, double) const {
-    map(dxdt, rows, cols) = system.vectorField(Dual(map(x, rows, cols)));
+    if constexpr (isDynamicGroup<G>) {
+      workspace->input = map(x, rows, cols);
+      system.vectorFieldInto(workspace->input, workspace->field, workspace->output);
+      map(dxdt, rows, cols) = workspace->output;
+    } else {
+      map(dxdt, rows, cols) = system.vectorField(Dual(map(x, rows, cols)));
+    }
   }
 };
 
@@ -89,10 +101,21 @@ class ReferenceSolver : public OneStepMethod<G> {
   }
 
   Dual step(const Dual& mu, double t, double h) override {
+    Dual next = mu;
+    advance(next, t, h);
+    return next;
+  }
+
+  /// In place; on matrix groups the state, its saved copy and the field's workspaces are kept
+  /// (no allocation once the size is known, as odeint's own stepper states).
+  void advance(Dual& mu, double t, double h) override {
     namespace odeint = boost::numeric::odeint;
-    const OdeintSystem<G> rhs{*system_, mu.rows(), mu.cols()};
-    State x;
-    if constexpr (isDynamicGroup<G>) x.resize(std::size_t(mu.size() * OdeintSystem<G>::kReals));
+    State& x = state_;
+    if constexpr (isDynamicGroup<G>) {
+      x.resize(std::size_t(mu.size() * OdeintSystem<G>::kReals));
+      workspace_.field.resize(mu.rows());
+    }
+    const OdeintSystem<G> rhs{*system_, mu.rows(), mu.cols(), &workspace_};
     OdeintSystem<G>::map(x, mu.rows(), mu.cols()) = mu;
     const double end = t + h;
     double time = t;
@@ -115,7 +138,8 @@ class ReferenceSolver : public OneStepMethod<G> {
       const bool last = time + dt >= end;
       double trial = last ? end - time : dt;
       const double before = trial;
-      const State saved = x;
+      State& saved = saved_;
+      saved = x;
       const bool accepted = stepper_.try_step(rhs, x, time, trial) == odeint::success;
       const bool finite =
           std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); });
@@ -136,7 +160,7 @@ class ReferenceSolver : public OneStepMethod<G> {
       }
     }
     dt_ = dt;
-    return OdeintSystem<G>::map(static_cast<const State&>(x), mu.rows(), mu.cols());
+    mu = OdeintSystem<G>::map(static_cast<const State&>(x), mu.rows(), mu.cols());
   }
 
  private:
@@ -154,6 +178,8 @@ class ReferenceSolver : public OneStepMethod<G> {
   Controlled stepper_;
   double dt_ = 0.0;
   long substeps_ = 0;
+  State state_{}, saved_{};
+  typename OdeintSystem<G>::Workspace workspace_;
 };
 
 #pragma GCC diagnostic pop

@@ -6,6 +6,7 @@
 
 #include <ddb/core/detail/tiny_solver.h>
 #include <ddb/core/errors.h>
+#include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/integrators/butcher_tableau.h>
 #include <ddb/integrators/one_step_method.h>
@@ -13,6 +14,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <type_traits>
 
 namespace ddb {
 
@@ -30,30 +32,61 @@ class ExplicitRungeKutta : public OneStepMethod<G> {
   }
   std::string name() const override { return tableau_.name; }
 
+  Dual step(const Dual& mu, double t, double h) override {
+    Dual next = mu;
+    advance(next, t, h);
+    return next;
+  }
+
+  /// In place. Matrix groups evaluate the vector field into kept workspaces
+  /// (LiePoissonSystem::vectorFieldInto): no allocation once the size is known.
+  void advance(Dual& mu, double, double h) override {
+    if constexpr (isDynamicGroup<G>) {
+      MatrixStages& w = matrix_;
+      w.field.resize(mu.rows());
+      runStages(mu, h, w.slopes, w.stage, w.sum,
+                [&](const Dual& x, Dual& out) { system_->vectorFieldInto(x, w.field, out); });
+    } else {
+      std::array<Dual, S> slopes;
+      Dual stage, sum;
+      runStages(mu, h, slopes, stage, sum,
+                [&](const Dual& x, Dual& out) { out = system_->vectorField(x); });
+    }
+  }
+
+ private:
   // The stage loops are unrolled (the tableau stays data): the slopes of a small system then
   // stay in registers between vector-field evaluations (docs/design.md, "Explicit steps"). The
   // operations and their order are those of the plain loops (the same roundings without
   // floating-point contraction).
-  Dual step(const Dual& mu, double, double h) override {
-    std::array<Dual, S> k;
+  template <class Field>
+  EIGEN_ALWAYS_INLINE void runStages(Dual& mu, double h, std::array<Dual, S>& k, Dual& stage,
+                                     Dual& sum, const Field& field) {
 #pragma GCC unroll 16
     for (int i = 0; i < S; ++i) {
-      Dual stage = mu;
+      stage = mu;
 #pragma GCC unroll 16
       for (int j = 0; j < i; ++j) {
         if (tableau_.a[i][j] != 0.0) stage += (h * tableau_.a[i][j]) * k[j];
       }
-      k[i] = system_->vectorField(stage);
+      field(stage, k[i]);
     }
-    Dual sum = tableau_.b[0] * k[0];
+    sum = tableau_.b[0] * k[0];
 #pragma GCC unroll 16
     for (int i = 1; i < S; ++i) sum += tableau_.b[i] * k[i];
-    return mu + h * sum;
+    mu += h * sum;
   }
 
- private:
+  struct MatrixStages {
+    std::array<Dual, S> slopes;
+    Dual stage, sum;
+    MatrixFieldWorkspace<G> field;
+  };
+  struct NoStages {};
+
   std::shared_ptr<const LiePoissonSystem<G>> system_;
   ButcherTableau<S> tableau_;
+  std::conditional_t<isDynamicGroup<G>, MatrixStages, NoStages> matrix_;
 };
 
 template <class G, int S>

@@ -108,7 +108,9 @@ TEST(MethodTable, RowsMatchWhatTheMethodsDoOnSON) {
   Sampler sampler(8);
   const Eigen::Matrix4d a = sampler.vector<Eigen::Matrix4d>();
   const Eigen::MatrixXd M0 = a - a.transpose();
-  checkRows<SON>(makeManakovBody(J, 0.5), M0, 0.2);
+  // h = 0.3: at 0.2 Lobatto IIIC is accurate enough that its drift falls between the two
+  // bounds (docs/design.md, "Lobatto IIIC on matrix groups").
+  checkRows<SON>(makeManakovBody(J, 0.5), M0, 0.3);
 }
 
 TEST(MethodTable, NamesNotInTheTableAreRefusedByName) {
