@@ -51,11 +51,7 @@ class Composition : public OneStepMethod<G> {
   std::string name() const override { return name_; }
   void reset() override { base_->reset(); }
 
-  Dual step(const Dual& mu, double t, double h) override {
-    Dual state = mu;
-    advance(state, t, h);
-    return state;
-  }
+  Dual step(const Dual& mu, double t, double h) override { return this->stepInPlace(mu, t, h); }
   void advance(Dual& mu, double t, double h) override {
     for (double gamma : scheme_.coefficients) {
       base_->advance(mu, t, gamma * h);

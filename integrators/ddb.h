@@ -33,9 +33,7 @@ class Ddb : public LegendreMethod<R> {
 
   Dual step(const Dual& mu, double t, double h) override {
     if constexpr (isDynamicGroup<G>) {
-      Dual next = mu;
-      advance(next, t, h);
-      return next;
+      return this->stepInPlace(mu, t, h);
     } else {
       Dual p;
       const Algebra xi = this->legendre_.solve(mu, t, h, p);

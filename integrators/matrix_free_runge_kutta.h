@@ -54,11 +54,7 @@ class MatrixFreeImplicitRungeKutta : public OneStepMethod<G> {
   int fixedPointSweeps() const { return sweeps_; }
   int newtonSteps() const { return newton_; }
 
-  Dual step(const Dual& mu, double t, double h) override {
-    Dual next = mu;
-    advance(next, t, h);
-    return next;
-  }
+  Dual step(const Dual& mu, double t, double h) override { return this->stepInPlace(mu, t, h); }
 
   void advance(Dual& mu, double t, double h) override {
     allocate(mu.rows());

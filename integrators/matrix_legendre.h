@@ -158,7 +158,11 @@ class MatrixLegendreSolver {
         const bool contracting = rate < kSlowContraction;
         const double error = contracting ? update / (1.0 - rate) : update;
         stats_.residual = error;
-        if (contracting && error <= tolerance) {
+        // A sweep stalled at rounding level is not contracting: Cayley hands it to Newton,
+        // whose first check accepts a residual within the tolerance; the exponential, which
+        // has no Newton step, applies that check here (its error is then the update, p's
+        // residual).
+        if ((contracting || !kCayley) && error <= tolerance) {
           converged = true;
           if (!kCayley || certifyFrozenSolution(W, update, scale) || extra++ == kMaxExtraSweeps) {
             break;

@@ -27,6 +27,14 @@ class OneStepMethod {
   /// without allocating (an N×N state returned by value allocates): on matrix groups every
   /// method of the table does (tests/test_allocations.cc checks each).
   virtual void advance(Dual& mu, double t, double h) { mu = step(mu, t, h); }
+
+ protected:
+  /// step() of a method whose advance() is the in-place step.
+  Dual stepInPlace(const Dual& mu, double t, double h) {
+    Dual next = mu;
+    advance(next, t, h);
+    return next;
+  }
 };
 
 /// Advances `steps` steps of size h from (t0, mu0); observer(k, t_k, mu_k) sees k = 0..steps.

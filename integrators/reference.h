@@ -100,11 +100,7 @@ class ReferenceSolver : public OneStepMethod<G> {
     substeps_ = 0;
   }
 
-  Dual step(const Dual& mu, double t, double h) override {
-    Dual next = mu;
-    advance(next, t, h);
-    return next;
-  }
+  Dual step(const Dual& mu, double t, double h) override { return this->stepInPlace(mu, t, h); }
 
   /// In place; on matrix groups the state, its saved copy and the field's workspaces are kept
   /// (no allocation once the size is known, as odeint's own stepper states).

@@ -32,11 +32,7 @@ class ExplicitRungeKutta : public OneStepMethod<G> {
   }
   std::string name() const override { return tableau_.name; }
 
-  Dual step(const Dual& mu, double t, double h) override {
-    Dual next = mu;
-    advance(next, t, h);
-    return next;
-  }
+  Dual step(const Dual& mu, double t, double h) override { return this->stepInPlace(mu, t, h); }
 
   /// In place. Matrix groups evaluate the vector field into kept workspaces
   /// (LiePoissonSystem::vectorFieldInto): no allocation once the size is known.

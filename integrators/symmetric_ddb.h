@@ -66,9 +66,7 @@ class SymmetricDdb : public LegendreMethod<R> {
 
   Dual step(const Dual& mu, double t, double h) override {
     if constexpr (isDynamicGroup<G>) {
-      Dual next = mu;
-      advance(next, t, h);
-      return next;
+      return this->stepInPlace(mu, t, h);
     } else {
       Dual p;
       const HalfForceTarget<R> target{*this->system_, this->retraction_, mu, h};
