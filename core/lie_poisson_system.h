@@ -108,6 +108,17 @@ class LiePoissonSystem {
     return dissipationOf(*metric_, xi, mu);
   }
 
+  /// Matrix groups, in place: out = scale·φ, φ = k♯(ad*_ξ p) = k♯([p, ξ]), with
+  /// [p, ξ] = pξ − (pξ)ᴴ as p and ξ are skew-Hermitian (one product; `product` and
+  /// `commutator` are workspaces of p's size).
+  void dissipationInto(const Dual& p, const Algebra& xi, double scale, Dual& product,
+                       Dual& commutator, Algebra& out) const {
+    product.noalias() = p * xi;
+    commutator = product - product.adjoint();
+    metric_->sharpInto(commutator, out);
+    out *= scale;
+  }
+
   /// μ̇ = ad*_{ξ + φ(ξ)} μ (double or Jet). In double through fieldAt: one virtual call in a
   /// TypedLiePoissonSystem with `final` parts, three in one built by LiePoissonSystem's own
   /// constructor.

@@ -48,7 +48,7 @@ class Ddb : public LegendreMethod<R> {
   void advance(Dual& mu, double t, double h) override {
     if constexpr (isDynamicGroup<G>) {
       this->legendre_.solveInPlace(FixedMomentum<G>{mu}, mu, t, h);
-      transport_.apply(this->system_->metric(), this->legendre_, h, mu);
+      transport_.apply(*this->system_, this->legendre_, h, mu);
     } else {
       mu = step(mu, t, h);
     }

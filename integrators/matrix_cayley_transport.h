@@ -14,8 +14,8 @@
 // appears, then reused.
 #pragma once
 
-#include <ddb/core/dissipation_metric.h>
 #include <ddb/core/errors.h>
+#include <ddb/core/lie_poisson_system.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/integrators/matrix_conjugation.h>
 
@@ -32,16 +32,15 @@ class MatrixCayleyTransport {
   /// mu ← Uᴴ mu U with U = cay(2a) cay(2 k♯([p, a])), from the solver's a, its product a p
   /// and, when certified, its frozen solution p̃ (MatrixLegendreSolver).
   template <class Solver>
-  void apply(const DissipationMetric<G>& metric, const Solver& solver, double, Dual& mu) {
+  void apply(const LiePoissonSystem<G>& system, const Solver& solver, double, Dual& mu) {
     const Dual& a = solver.halfStep();
     const Dual* frozen = solver.frozenSolution();
     allocate(a);
     const Dual& ap = solver.halfStepTimesSolution();
-    commutator_ = ap.adjoint() - ap;       // [p, a] = pa − ap, pa = (ap)ᴴ
-    metric.sharpInto(commutator_, half_);  // hφ/2
+    commutator_ = ap.adjoint() - ap;                // [p, a] = pa − ap, pa = (ap)ᴴ
+    system.metric().sharpInto(commutator_, half_);  // hφ/2
     if (frozen != nullptr) {
-      product_.noalias() = a * (*frozen);
-      mu -= 2.0 * (product_ - product_.adjoint());  // mu − 2[a, p̃]
+      conjugation_.applyWithSolution(a, *frozen, mu);
     } else {
       product_ = 2.0 * a;  // hξ
       conjugation_.prepare(product_);

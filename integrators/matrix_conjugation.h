@@ -46,11 +46,19 @@ class MatrixConjugation<R, false> {
     }
   }
 
-  /// μ ← μ − 2[b, q], q = (I + b)⁻¹ μ (I − b)⁻¹; [b, q] = bq − (bq)ᴴ as q is skew-Hermitian.
+  /// μ ← μ − 2[b, q], q = (I + b)⁻¹ μ (I − b)⁻¹.
   void apply(Dual& mu) {
     product_.noalias() = mu * resolvent_.adjoint();
     q_.noalias() = resolvent_ * product_;
-    product_.noalias() = half_ * q_;
+    applyWithSolution(half_, q_, mu);
+  }
+
+  /// μ ← Ad*_{cay(2b)} μ = μ − 2[b, q] given q with (I + b) q (I − b) = μ (a Legendre
+  /// solver's certified frozen solution): one product, [b, q] = bq − (bq)ᴴ as q is
+  /// skew-Hermitian. No prepare() needed.
+  void applyWithSolution(const Dual& b, const Dual& q, Dual& mu) {
+    if (product_.rows() != b.rows()) product_.setZero(b.rows(), b.cols());
+    product_.noalias() = b * q;
     mu -= 2.0 * (product_ - product_.adjoint());
   }
 

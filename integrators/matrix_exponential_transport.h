@@ -7,7 +7,7 @@
 // reused.
 #pragma once
 
-#include <ddb/core/dissipation_metric.h>
+#include <ddb/core/lie_poisson_system.h>
 #include <ddb/integrators/matrix_conjugation.h>
 
 #include <Eigen/Core>
@@ -22,13 +22,10 @@ class MatrixExponentialTransport {
 
   /// mu ← Ad*_{exp(hξ) exp(hφ)} mu from the solver's p, ξ and ξ's eigenbasis.
   template <class Solver>
-  void apply(const DissipationMetric<G>& metric, Solver& solver, double h, Dual& mu) {
+  void apply(const LiePoissonSystem<G>& system, Solver& solver, double h, Dual& mu) {
     conjugation_.applyWith(solver.eigenbasis(), h, mu);
-    product_.noalias() = solver.solution() * solver.velocity();
-    commutator_ = product_ - product_.adjoint();  // [p, ξ] = pξ − ξp, ξp = (pξ)ᴴ
-    metric.sharpInto(commutator_, phi_);
+    system.dissipationInto(solver.solution(), solver.velocity(), h, product_, commutator_, phi_);
     if (phi_.isZero(0.0)) return;
-    phi_ *= h;
     conjugation_.prepare(phi_);
     conjugation_.apply(mu);
   }

@@ -35,12 +35,14 @@
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/exponential.h>
 #include <ddb/groups/skew_hermitian_eigenbasis.h>
+#include <ddb/integrators/anderson_acceleration.h>
 #include <ddb/integrators/correction_predictor.h>
 #include <ddb/integrators/injectivity_guard.h>
 #include <ddb/integrators/legendre_equation.h>
 #include <ddb/integrators/legendre_stats.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -73,6 +75,8 @@ class MatrixLegendreSolver {
   static constexpr int kMaxNewton = 12;
   static constexpr int kMaxKrylov = 200;
   static constexpr int kMaxForcedFixedPoint = 2000;
+  /// Mixed sweeps of a moving target without a new smallest update that end the solve.
+  static constexpr int kStallSweeps = 10;
   static constexpr Eigen::Index kMaxCeresDimension = 64;
 
   MatrixLegendreSolver(const LiePoissonSystem<G>& system, const R& retraction, LegendreForm form,
@@ -85,7 +89,7 @@ class MatrixLegendreSolver {
   }
 
   void reset() {
-    predictor_.reset();
+    forgetPredictions();
     rate_ = NAN;
   }
   LegendreForm form() const { return form_; }
@@ -110,12 +114,14 @@ class MatrixLegendreSolver {
   /// it also leaves the product a p = halfStepTimesSolution() and certifies, when it can,
   /// frozenSolution(): p̃ = (I + a)⁻¹ M (I − a)⁻¹ for this a to rounding, with which the
   /// update Ad*_{cay(2a)} M = M − 2[a, p̃] costs one product (matrix_cayley_transport.h).
+  /// For a target that moves with p, target() is its value W at the solution, and (Cayley)
+  /// frozenSolution() solves (I + a) p̃ (I − a) = W when certified; with the exponential,
+  /// eigenbasis() is ξ's.
   template <class Target>
   void solveInPlace(const Target& target, const Dual& near, double t, double h) {
     constexpr bool kFixed = std::is_same_v<Target, FixedMomentum<G>>;
     allocate(near);
-    if (h != h_) predictor_.reset();  // corrections scale with h: only same-h ones extrapolate
-    h_ = h;
+    CorrectionPredictor<Dual>& predictor = predictorFor(h);
     stats_ = LegendreStats{};
     frozen_exact_ = false;
     const auto targetValue = [&]() -> const Dual& {
@@ -126,7 +132,7 @@ class MatrixLegendreSolver {
         return target_;
       }
     };
-    predictor_.predict(near, p_);
+    predictor.predict(near, p_);
     const double scale = near.norm();
     const double tolerance = options_.relative_tolerance * scale;
     double previous = INFINITY;
@@ -136,6 +142,9 @@ class MatrixLegendreSolver {
     // Without a Newton fallback (the exponential) the sweeps go on while they contract.
     const int budget = (forced || !kFixed || !kCayley) ? kMaxForcedFixedPoint : kMaxFixedPoint;
     int extra = 0;  // sweeps past the tolerance, for a certified frozen solution
+    anderson_.reset();
+    double smallest = INFINITY;  // the smallest update of a moving target's sweeps, and when
+    int smallest_at = 0;
     for (int k = 0; fixed_point && k < budget; ++k) {
       updateVelocity(h);
       const Dual& W = targetValue();
@@ -150,8 +159,8 @@ class MatrixLegendreSolver {
       // and the next one ρ/(1 − ρ)·update; ρ is measured from the last two updates (on a
       // first sweep it is the last solve's: the rate belongs to the map near the solution
       // and moves with the state, docs/design.md).
-      const double rate = std::isfinite(previous) ? update / previous : rate_;
       if constexpr (kFixed) {
+        const double rate = std::isfinite(previous) ? update / previous : rate_;
         // DDB's update uses a = a(p) of this iterate p, so p itself must be within the
         // tolerance; the next iterate then serves the exact update (frozenSolution).
         if (std::isfinite(previous)) rate_ = rate;
@@ -171,15 +180,30 @@ class MatrixLegendreSolver {
           break;  // contracting too slowly: Newton–Krylov takes over (exp: not contracting)
         }
       } else {
-        // Other targets move with p: the accepted iterate is the next one.
-        const double error = rate < 0.5 ? update * rate / (1.0 - rate) : update;
-        stats_.residual = error;
-        if (error <= tolerance) {
-          p_.swap(next_);
-          updateVelocity(h);
+        // Other targets move with p. The accepted iterate is p itself, whose ξ, a, target
+        // and (exp) eigenbasis are at hand for the step (target()), and its residual is the
+        // update, the measure Newton accepts on. The sweeps are mixed (Anderson), which
+        // removes the slowly contracting directions a plain sweep leaves (docs/design.md,
+        // "The symmetric DDB's fixed point").
+        stats_.residual = update;
+        if (update <= tolerance) {
           converged = true;
+          if constexpr (kCayley) certifyFrozenSolution(target_, update, scale);
           break;
         }
+        // Mixed residuals need not fall every sweep, but kStallSweeps without a new smallest
+        // one is a solve stalled (at rounding above the tolerance, or diverging): it fails
+        // now instead of after the whole budget.
+        if (update < smallest) {
+          smallest = update;
+          smallest_at = k;
+        } else if (k - smallest_at >= kStallSweeps) {
+          break;
+        }
+        anderson_.mix(p_, next_);
+        previous = update;
+        p_.swap(next_);
+        continue;
       }
       previous = update;
       p_.swap(next_);
@@ -212,13 +236,15 @@ class MatrixLegendreSolver {
                              (stats_.newton > 0 ? "Newton" : "fixed point") + ")",
                          -1, t, h, stats_.residual, tolerance);
     }
-    if constexpr (!kCayley) checkInjectivity(t, h, kFixed && kExactExponential);
+    if constexpr (!kCayley) checkInjectivity(t, h, kExactExponential);
     // The most accurate solution at hand: p̃ when certified (it solves the frozen-a equation
     // to rounding), else the next iterate.
-    predictor_.remember(!kFixed ? p_ : frozen_exact_ ? frozen_ : next_, near);
+    predictor.remember(!kFixed ? p_ : frozen_exact_ ? frozen_ : next_, near);
   }
 
   const Dual& solution() const { return p_; }
+  /// The target's value at solution(), after a solve of a target that moves with p.
+  const Dual& target() const { return target_; }
   const Algebra& velocity() const { return xi_; }
   const Algebra& halfStep() const { return a_; }
   /// a p, after a solve of DDB's target.
@@ -239,7 +265,33 @@ class MatrixLegendreSolver {
                     &t1_, &t2_, &target_, &argument_, &direction_}) {
       m->setZero(like.rows(), like.cols());
     }
-    predictor_.reset();
+    forgetPredictions();
+  }
+
+  // Corrections scale with h, so only same-h ones extrapolate: one predictor per step size,
+  // enough for the distinct sub-steps of a composition (a triple jump has two, Yoshida's
+  // seven stages four), each reused the next time its h comes; the least recently used
+  // one is replaced by a new h.
+  CorrectionPredictor<Dual>& predictorFor(double h) {
+    std::size_t slot = 0;
+    for (std::size_t i = 0; i < kPredictors; ++i) {
+      if (predictor_h_[i] == h) {
+        slot = i;
+        break;
+      }
+      if (last_used_[i] < last_used_[slot]) slot = i;
+    }
+    if (predictor_h_[slot] != h) {
+      predictors_[slot].reset();
+      predictor_h_[slot] = h;
+    }
+    last_used_[slot] = ++clock_;
+    return predictors_[slot];
+  }
+  void forgetPredictions() {
+    for (auto& predictor : predictors_) predictor.reset();
+    predictor_h_.fill(NAN);
+    last_used_.fill(0);
   }
 
   // With a = a(p) frozen, (I + a) p̃ (I − a) = M is linear in p̃, next = M − [a, p] + a p a
@@ -467,8 +519,12 @@ class MatrixLegendreSolver {
   const R& retraction_;
   LegendreForm form_;
   SolverOptions options_;
-  CorrectionPredictor<Dual> predictor_;
-  double h_ = NAN;     // the step of the predictor's corrections
+  static constexpr std::size_t kPredictors = 4;
+  std::array<CorrectionPredictor<Dual>, kPredictors> predictors_;
+  std::array<double, kPredictors> predictor_h_{NAN, NAN, NAN, NAN};  // their step sizes
+  std::array<long, kPredictors> last_used_{};
+  long clock_ = 0;
+  AndersonAcceleration<Dual> anderson_;
   double rate_ = NAN;  // the contraction rate last measured
   bool frozen_exact_ = false;
   MatrixLegendreStrategy strategy_ = MatrixLegendreStrategy::kAuto;

@@ -79,17 +79,26 @@ class SymmetricDdb : public LegendreMethod<R> {
   }
 
   /// Matrix groups: the same step in place, each factor of Ad*_{τ(hφ/2) τ(hξ) τ(hφ/2)} applied
-  /// as an increment (matrix_conjugation.h), with preallocated workspaces.
+  /// as an increment (matrix_conjugation.h), with preallocated workspaces. The solver accepts
+  /// the p at which it evaluated the target last, so the first factor applied to μ is the
+  /// target's value, the kick is still prepared at that p's φ, and the middle factor uses what
+  /// the solve left: the frozen solution (Cayley, one product) or ξ's eigenbasis (exp).
   void advance(Dual& mu, double t, double h) override {
     if constexpr (isDynamicGroup<G>) {
-      this->legendre_.solveInPlace(MatrixTarget{*this, mu, h}, mu, t, h);
-      const auto& solver = this->legendre_;
-      matrix_.halfForce(*this->system_, solver.velocity(), solver.solution(), h);
-      matrix_.kick.prepare(matrix_.half);
-      matrix_.kick.apply(mu);
-      matrix_.drift = h * solver.velocity();
-      matrix_.flow.prepare(matrix_.drift);
-      matrix_.flow.apply(mu);
+      auto& solver = this->legendre_;
+      solver.solveInPlace(MatrixTarget{*this, mu, h}, mu, t, h);
+      mu = solver.target();
+      if constexpr (std::is_same_v<R, Cayley<G>>) {
+        if (const Dual* frozen = solver.frozenSolution()) {
+          matrix_.flow.applyWithSolution(solver.halfStep(), *frozen, mu);
+        } else {
+          applyFlow(solver.velocity(), h, mu);
+        }
+      } else if constexpr (std::is_same_v<R, Exponential<G>>) {
+        matrix_.flow.applyWith(solver.eigenbasis(), h, mu);
+      } else {
+        applyFlow(solver.velocity(), h, mu);
+      }
       matrix_.kick.apply(mu);
     } else {
       mu = step(mu, t, h);
@@ -101,29 +110,30 @@ class SymmetricDdb : public LegendreMethod<R> {
   struct MatrixWorkspace {
     Dual product, commutator, half, drift;
     MatrixConjugation<R> kick, flow;
-    /// half = hφ/2 with φ = k♯(ad*_ξ p) = k♯([p, ξ]); [p, ξ] = pξ − (pξ)ᴴ for skew-Hermitian p, ξ.
-    void halfForce(const LiePoissonSystem<G>& system, const Dual& xi, const Dual& p, double h) {
-      product.noalias() = p * xi;
-      commutator = product - product.adjoint();
-      system.metric().sharpInto(commutator, half);
-      half *= 0.5 * h;
-    }
   };
   struct NoWorkspace {};
 
-  /// The half-force target Ad*_{τ(hφ(ξ, p)/2)} μ, written into the solver's workspace.
+  /// The half-force target Ad*_{τ(hφ(ξ, p)/2)} μ, written into the solver's workspace; the
+  /// kick stays prepared at this p's φ.
   struct MatrixTarget {
     SymmetricDdb& method;
     const Dual& mu;
     double h;
     void evaluateInto(const Dual& xi, const Dual& p, Dual& out) const {
       MatrixWorkspace& w = method.matrix_;
-      w.halfForce(*method.system_, xi, p, h);
+      method.system_->dissipationInto(p, xi, 0.5 * h, w.product, w.commutator, w.half);
       out = mu;
       w.kick.prepare(w.half);
       w.kick.apply(out);
     }
   };
+
+  /// μ ← Ad*_{τ(hξ)} μ, τ(hξ) formed from ξ.
+  void applyFlow(const Dual& xi, double h, Dual& mu) {
+    matrix_.drift = h * xi;
+    matrix_.flow.prepare(matrix_.drift);
+    matrix_.flow.apply(mu);
+  }
 
   std::conditional_t<isDynamicGroup<G>, MatrixWorkspace, NoWorkspace> matrix_;
 };

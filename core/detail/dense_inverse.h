@@ -7,19 +7,14 @@
 // (docs/design.md, "Measured, and what it decided").
 #pragma once
 
+#include <ddb/core/detail/lapack.h>
+
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <algorithm>
 #include <complex>
 #include <type_traits>
 #include <vector>
-
-#ifdef DDB_USE_LAPACK
-// LAPACKE's own prototypes (Debian liblapacke-dev) instead of hand-declared ones: the integer
-// type is its lapack_int (set by LAPACK_ILP64, as the LAPACK it is built against needs), and
-// its complex type, whatever an includer chose, is layout-compatible with std::complex.
-#include <lapacke.h>
-#endif
 
 namespace ddb {
 
@@ -61,11 +56,6 @@ class DenseInverse {
   }
 
  private:
-#ifdef DDB_USE_LAPACK
-  static lapack_complex_double* lapackData(std::complex<double>* z) {
-    return reinterpret_cast<lapack_complex_double*>(z);
-  }
-#endif
   void allocate(Eigen::Index n) {
     if (size_ == n) return;
     size_ = n;

@@ -7,15 +7,13 @@
 // back-transformation allocates on every call.
 #pragma once
 
+#include <ddb/core/detail/lapack.h>
+
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <complex>
 #include <vector>
-
-#ifdef DDB_USE_LAPACK
-#include <lapacke.h>
-#endif
 
 namespace ddb {
 
@@ -49,12 +47,6 @@ class HermitianEigensolver {
   const Matrix& eigenvectors() const { return vectors_; }
 
  private:
-#ifdef DDB_USE_LAPACK
-  static lapack_complex_double* lapackData(std::complex<double>* z) {
-    return reinterpret_cast<lapack_complex_double*>(z);
-  }
-#endif
-
   void allocate(Eigen::Index n) {
     if (size_ == n) return;
     size_ = n;
