@@ -118,6 +118,12 @@ class LiePoissonSystem {
     metric_->sharpInto(commutator, out);
     out *= scale;
   }
+  /// The same at ξ = (2/h)a given the product ap = a p: out = hφ/2 = k♯([p, a]) with
+  /// [p, a] = (ap)ᴴ − ap. No product.
+  void halfStepDissipationInto(const Dual& ap, Dual& commutator, Algebra& out) const {
+    commutator = ap.adjoint() - ap;
+    metric_->sharpInto(commutator, out);
+  }
 
   /// μ̇ = ad*_{ξ + φ(ξ)} μ (double or Jet). In double through fieldAt: one virtual call in a
   /// TypedLiePoissonSystem with `final` parts, three in one built by LiePoissonSystem's own

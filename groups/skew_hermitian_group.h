@@ -210,6 +210,11 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
   template <class X>
   static void cayleyFixedPoint(const X& W, const X& a, const X& p, X& ap, X& apa, X& out) {
     ap.noalias() = a * p;
+    cayleyFixedPointGiven(W, a, ap, apa, out);
+  }
+  /// The same map given the product ap = a p already formed. One product.
+  template <class X>
+  static void cayleyFixedPointGiven(const X& W, const X& a, const X& ap, X& apa, X& out) {
     apa.noalias() = ap * a;
     out = W - ap + ap.adjoint() + apa;
   }

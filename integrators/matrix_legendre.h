@@ -114,7 +114,8 @@ class MatrixLegendreSolver {
   /// it also leaves the product a p = halfStepTimesSolution() and certifies, when it can,
   /// frozenSolution(): p̃ = (I + a)⁻¹ M (I − a)⁻¹ for this a to rounding, with which the
   /// update Ad*_{cay(2a)} M = M − 2[a, p̃] costs one product (matrix_cayley_transport.h).
-  /// For a target that moves with p, target() is its value W at the solution, and (Cayley)
+  /// A target that moves with p is evaluated after ξ(p), a = hξ/2 and (Cayley) a p =
+  /// halfStepTimesSolution() of that p. target() is its value W at the solution, and (Cayley)
   /// frozenSolution() solves (I + a) p̃ (I − a) = W when certified; with the exponential,
   /// eigenbasis() is ξ's.
   template <class Target>
@@ -147,6 +148,7 @@ class MatrixLegendreSolver {
     int smallest_at = 0;
     for (int k = 0; fixed_point && k < budget; ++k) {
       updateVelocity(h);
+      if constexpr (kCayley) ap_.noalias() = a_ * p_;  // before the target, which may use it
       const Dual& W = targetValue();
       sweep(W, h);
       const double update = (next_ - p_).norm();
@@ -321,7 +323,7 @@ class MatrixLegendreSolver {
   }
 
   // One sweep p ← F(p) (into next_) of a fixed point of target = (dτ⁻¹_{hξ(p)})* p, after
-  // updateVelocity:
+  // updateVelocity (and for Cayley ap_ = a p):
   //   Cayley: F(p) = W − [a, p] + a p a = p − r(p), r(p) = (I + a)p(I − a) − W;
   //   exp: F(p) = ((dexp⁻¹_{hξ})*)⁻¹ W, which multiplies entry (a, b) of ξ's eigenbasis by
   //     (e^{−iδ} − 1)/(−iδ), δ = h(θ_a − θ_b) (skew_hermitian_eigenbasis.h): p enters through
@@ -330,7 +332,7 @@ class MatrixLegendreSolver {
   //     r(p) = Σ_{j≤order} B_j/j! (ad*_{hξ})^j p − W, ad*_x μ = [μ, x] = μx − (μx)ᴴ.
   void sweep(const Dual& W, double h) {
     if constexpr (kCayley) {
-      G::cayleyFixedPoint(W, a_, p_, ap_, apa_, next_);
+      G::cayleyFixedPointGiven(W, a_, ap_, apa_, next_);
     } else if constexpr (kExactExponential) {
       if (!eigenbasis_.compute(xi_)) {
         next_.setConstant(NAN);  // ξ not finite: the update shows it
