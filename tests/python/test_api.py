@@ -1,5 +1,9 @@
 """The module's contract: Casimirs against independent formulas, the method table, `every`,
 failed solves as ddb.SolveFailure with the valid prefix, and bad arguments as ValueError."""
+import sys
+import threading
+import time
+
 import numpy as np
 import pytest
 
@@ -192,3 +196,29 @@ def test_help_explains_every_argument():
     doc = ddb.integrate.__doc__
     for argument in ("system:", "method:", "mu0:", "h:", "steps:", "every:", "SolveFailure"):
         assert argument in doc
+
+
+def test_integrate_releases_the_gil():
+    # With no forced thread switches, the main thread can wake from its sleep during the
+    # worker's integrate() only if integrate() released the GIL.
+    a = ddb.scenario("A")
+    started, done = threading.Event(), threading.Event()
+
+    def work():
+        started.set()
+        ddb.integrate(a.system(), "ddb-cay", a.mu0, 0.1, 3_000_000, every=100_000)
+        done.set()
+
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1000.0)
+    try:
+        worker = threading.Thread(target=work)
+        worker.start()
+        while not started.is_set():
+            time.sleep(0.001)
+        time.sleep(0.01)
+        woke_during_the_run = not done.is_set()
+        worker.join()
+    finally:
+        sys.setswitchinterval(interval)
+    assert woke_during_the_run
