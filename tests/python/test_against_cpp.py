@@ -17,8 +17,11 @@ def final_state(entry):
     return np.array(final)
 
 
-def check_every_method(summary, system, mu0):
-    assert sorted(summary["methods"]) == sorted(system.methods())
+def check_methods(summary, system, mu0, every_method=True):
+    """Each method ddb-compare ran (every one that applies, if `every_method`) gives its final
+    state bit for bit."""
+    if every_method:
+        assert sorted(summary["methods"]) == sorted(system.methods())
     for name, entry in summary["methods"].items():
         assert entry["status"] == "ok", name
         t, states = ddb.integrate(system, name, mu0, summary["h"], summary["steps"])
@@ -34,7 +37,7 @@ def test_rigid_body_scenario_a(ddb_compare, tmp_path):
     summary = ddb_compare(tmp_path, "--system", "rigid-body", "--scenario", "A", "--h", "0.1",
                           "--t-end", "3")
     a = ddb.scenario("A")
-    check_every_method(summary, a.system(), a.mu0)
+    check_methods(summary, a.system(), a.mu0)
 
 
 def test_rigid_body_custom_parameters(ddb_compare, tmp_path):
@@ -42,25 +45,19 @@ def test_rigid_body_custom_parameters(ddb_compare, tmp_path):
                           "--alpha", "0.3", "--omega0", "0.4,-0.2,0.9", "--h", "0.07",
                           "--t-end", "2.1", "--method", "ddb-cay,sddb-exp,ddb6-exp,lobatto3c")
     system = ddb.rigid_body([2, 1.5, 0.7], 0.3)
-    check_every_method_named(summary, system, np.array([2, 1.5, 0.7]) * [0.4, -0.2, 0.9])
-
-
-def check_every_method_named(summary, system, mu0):
-    for name, entry in summary["methods"].items():
-        _, states = ddb.integrate(system, name, mu0, summary["h"], summary["steps"])
-        np.testing.assert_array_equal(states[-1], final_state(entry), err_msg=name)
+    check_methods(summary, system, np.array([2, 1.5, 0.7]) * [0.4, -0.2, 0.9], False)
 
 
 def test_heavy_top(ddb_compare, tmp_path):
     summary = ddb_compare(tmp_path, "--system", "heavy-top", "--h", "0.1", "--t-end", "2")
     setup = ddb.HeavyTopSetup()
-    check_every_method(summary, ddb.heavy_top(), setup.mu0)
+    check_methods(summary, ddb.heavy_top(), setup.mu0)
     assert setup.system().name == "heavy-top"
 
 
 def test_kirchhoff(ddb_compare, tmp_path):
     summary = ddb_compare(tmp_path, "--system", "kirchhoff", "--h", "0.1", "--t-end", "2")
-    check_every_method(summary, ddb.kirchhoff(), ddb.KirchhoffSetup().mu0)
+    check_methods(summary, ddb.kirchhoff(), ddb.KirchhoffSetup().mu0)
 
 
 def test_manakov_from_a_file(ddb_compare, tmp_path):
@@ -73,17 +70,17 @@ def test_manakov_from_a_file(ddb_compare, tmp_path):
     summary = ddb_compare(tmp_path / "out", "--system", "manakov", "--mu0-file", str(path),
                           "--j", ",".join(map(repr, J)), "--alpha", "0.4", "--h", "0.05",
                           "--t-end", "0.5")
-    check_every_method(summary, ddb.manakov(J, 0.4), m0)
+    check_methods(summary, ddb.manakov(J, 0.4), m0)
 
 
 def test_zeitlin_seeded_random_vorticity(ddb_compare, tmp_path):
     summary = ddb_compare(tmp_path, "--system", "zeitlin", "--n", "6", "--init", "random",
                           "--seed", "3", "--alpha", "0.5", "--h", "0.05", "--t-end", "0.3")
-    check_every_method(summary, ddb.zeitlin(6, 0.5), ddb.zeitlin_vorticity("random", 6, 3))
+    check_methods(summary, ddb.zeitlin(6, 0.5), ddb.zeitlin_vorticity("random", 6, 3))
 
 
 @pytest.mark.parametrize("kind", ["l1", "zonal"])
 def test_zeitlin_other_initial_vorticities(ddb_compare, tmp_path, kind):
     summary = ddb_compare(tmp_path, "--system", "zeitlin", "--n", "5", "--init", kind, "--seed",
                           "11", "--h", "0.1", "--t-end", "0.2", "--method", "ddb-cay,rk4")
-    check_every_method_named(summary, ddb.zeitlin(5, 0.5), ddb.zeitlin_vorticity(kind, 5, 11))
+    check_methods(summary, ddb.zeitlin(5, 0.5), ddb.zeitlin_vorticity(kind, 5, 11), False)
