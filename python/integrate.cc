@@ -43,13 +43,7 @@ py::tuple integrateOn(const SystemPointer<G>& system, Eigen::Index n, const std:
     };
     EveryKth<Dual<G>, decltype(sink)> thinned(every, sink);
     try {
-      // every = 1 keeps every state: straight to the sink, without EveryKth's k % every
-      // (an integer division per step, measurable on a rigid-body DDB step; docs/python.md).
-      if (every == 1) {
-        integrate(*method, mu0, 0.0, h, steps, sink);
-      } else {
-        integrate(*method, mu0, 0.0, h, steps, thinned);
-      }
+      integrate(*method, mu0, 0.0, h, steps, thinned);
     } catch (const SolveFailure& f) {
       failure = FailureRecord::of(f);
     }
