@@ -1,0 +1,22 @@
+// The `ddb` Python module: the library's systems, the method table and integrate() on
+// NumPy arrays (README, "Python"; docs/python.md).
+#include <pybind11/pybind11.h>
+
+#include "bindings.h"
+
+PYBIND11_MODULE(ddb, m) {
+  m.doc() =
+      "Lie-Poisson systems with double-bracket dissipation, integrated by the DDB methods "
+      "(energy decays, Casimirs kept) and their peers, at C++ speed. Build a system "
+      "(rigid_body, heavy_top, kirchhoff, manakov, zeitlin, user_system), pick a method by "
+      "its name (methods()) and call integrate(). See docs/python.md.";
+  m.attr("__version__") = DDB_VERSION;
+  ddb::python::bindErrors(m);
+  ddb::python::bindSystem(m);
+  ddb::python::bindSystems(m);
+  ddb::python::bindScenarios(m);
+  ddb::python::bindZeitlin(m);
+  ddb::python::bindUserSystem(m);
+  ddb::python::bindMethods(m);
+  ddb::python::bindIntegrate(m);
+}

@@ -1,0 +1,134 @@
+// Zeitlin's fluid on SU(N) (systems/zeitlin_fluid.h): the system with its diagnostics
+// (energy E, enstrophy Z, ||[P, W]||, the spherical-harmonic coefficients omega_lm) and
+// the apps' initial vorticities (random, l1, zonal with a seed).
+#include <ddb/systems/spherical_harmonic_basis.h>
+#include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_initial_conditions.h>
+#include <pybind11/eigen.h>
+
+#include <memory>
+#include <string>
+
+#include "arguments.h"
+#include "bindings.h"
+#include "states.h"
+#include "system.h"
+
+namespace py = pybind11;
+
+namespace ddb::python {
+
+namespace {
+
+/// The fluid: a System on SU(N) that keeps its Hamiltonian's type for the diagnostics.
+class ZeitlinFluid : public System {
+ public:
+  ZeitlinFluid(Eigen::Index n, double alpha) : ZeitlinFluid(makeZeitlinFluid(checked(n), alpha)) {}
+
+  const ZeitlinHamiltonian& hamiltonian() const { return hamiltonian_; }
+  const ZeitlinDiagnostics& diagnostics() const { return diagnostics_; }
+  const SphericalHarmonicBasis& basis() const { return basis_; }
+
+ private:
+  explicit ZeitlinFluid(const SystemPointer<SUN>& system)
+      : ZeitlinFluid(system, dynamic_cast<const ZeitlinHamiltonian&>(system->hamiltonian())) {}
+  ZeitlinFluid(const SystemPointer<SUN>& system, const ZeitlinHamiltonian& hamiltonian)
+      : System(system, hamiltonian.laplacian().size()),
+        hamiltonian_(hamiltonian),
+        diagnostics_(hamiltonian),
+        basis_(hamiltonian.laplacian()) {}
+  static Eigen::Index checked(Eigen::Index n) {
+    detail::requireResolution(n);
+    return n;
+  }
+
+  // Owned by the system the base holds.
+  const ZeitlinHamiltonian& hamiltonian_;
+  ZeitlinDiagnostics diagnostics_;
+  SphericalHarmonicBasis basis_;
+};
+
+/// f(W) of one state (a float) or of each of a stack (an array).
+template <class F>
+py::object perState(const ZeitlinFluid& fluid, py::handle states, F&& f) {
+  return mapStates<SUN>(states, fluid.n(), true, [&](const Eigen::MatrixXcd& W) {
+    return Eigen::VectorXd::Constant(1, f(W));
+  });
+}
+
+}  // namespace
+
+void bindZeitlin(py::module_& m) {
+  py::class_<ZeitlinFluid, System, std::shared_ptr<ZeitlinFluid>>(
+      m, "ZeitlinFluid",
+      "Zeitlin's fluid on SU(N): vorticity W (complex skew-Hermitian, traceless N x N), "
+      "hbar = 2/sqrt(N^2 - 1), stream matrix P = Laplacian^-1 W, "
+      "W' = ([P, W] + alpha [W, [P, W]])/hbar (docs/conventions.md §2). casimirs() is the "
+      "spectrum of -iW.")
+      .def_property_readonly("hbar", [](const ZeitlinFluid& f) { return f.hamiltonian().hbar(); })
+      .def(
+          "fluid_energy",
+          [](const ZeitlinFluid& f, py::handle states) {
+            return perState(f, states, [&](const auto& W) { return f.diagnostics().energy(W); });
+          },
+          py::arg("states"), "E = Re tr(W P)/(2N) = hbar H/N, of one state or each of a stack.")
+      .def(
+          "enstrophy",
+          [](const ZeitlinFluid& f, py::handle states) {
+            return perState(f, states, [&](const auto& W) { return f.diagnostics().enstrophy(W); });
+          },
+          py::arg("states"), "Z = ||W||_F^2/(2N), of one state or each of a stack.")
+      .def(
+          "commutator_norm",
+          [](const ZeitlinFluid& f, py::handle states) {
+            return perState(f, states,
+                            [&](const auto& W) { return f.diagnostics().commutatorNorm(W); });
+          },
+          py::arg("states"),
+          "||[P, W]||_F, zero exactly at steady Euler flows; of one state or each of a stack.")
+      .def(
+          "stream_matrix",
+          [](const ZeitlinFluid& f, py::handle W) {
+            return stateToArray<SUN>(
+                f.hamiltonian().streamMatrix(stateFromArray<SUN>("W", W, f.n())));
+          },
+          py::arg("W"), "P = Laplacian^-1 of the traceless part of W.")
+      .def(
+          "omega_lm",
+          [](const ZeitlinFluid& f, py::handle W) {
+            return f.basis().coefficients(stateFromArray<SUN>("W", W, f.n()));
+          },
+          py::arg("W"),
+          "The real spherical-harmonic coefficients omega_lm = Re tr(T_lm^H W)/N of W, N^2 of "
+          "them, omega_lm at index l^2 + l + m (l = 0..N-1, |m| <= l): the vorticity on the "
+          "sphere is sum omega_lm Y_lm with real, orthonormal Y_lm "
+          "(systems/spherical_harmonic_basis.h).")
+      .def(
+          "vorticity",
+          [](const ZeitlinFluid& f, py::handle omega) {
+            return stateToArray<SUN>(
+                f.basis().matrix(vectorArgument("omega", omega, f.n() * f.n())));
+          },
+          py::arg("omega"), "W = sum omega_lm T_lm: the inverse of omega_lm().");
+  m.def(
+      "zeitlin",
+      [](Eigen::Index n, double alpha) { return std::make_shared<ZeitlinFluid>(n, alpha); },
+      py::arg("N"), py::arg("alpha"),
+      "Zeitlin's fluid at resolution N (2 <= N <= 4096) with double-bracket coefficient "
+      "alpha (any finite sign; alpha > 0 dissipates energy).");
+  m.def(
+      "zeitlin_vorticity",
+      [](const std::string& kind, Eigen::Index n, std::uint64_t seed) {
+        if (kind == "random") return stateToArray<SUN>(randomVorticity(n, seed));
+        if (kind == "l1") return stateToArray<SUN>(l1Vorticity(n, seed));
+        if (kind == "zonal") return stateToArray<SUN>(zonalVorticity(n, seed));
+        throwInvalid("kind", kind, "expected one of random, l1, zonal");
+      },
+      py::arg("kind"), py::arg("N"), py::arg("seed") = 1,
+      "The apps' seeded initial vorticities (--init, --seed), normalised to ||W||_F = sqrt(N): "
+      "random (i.i.d. normal real and imaginary parts, projected to su(N)), l1 (W = U X3 U^H, "
+      "U a random unitary: the coadjoint orbit of the l = 1 element X3) or zonal (i diag(d), "
+      "d normal: a steady state, [P, W] = 0)");
+}
+
+}  // namespace ddb::python

@@ -1,0 +1,224 @@
+"""The module's contract: Casimirs against independent formulas, the method table, `every`,
+failed solves as ddb.SolveFailure with the valid prefix, and bad arguments as ValueError."""
+import sys
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import ddb
+
+
+def test_methods_are_the_table():
+    rows = ddb.methods()
+    names = [r["name"] for r in rows]
+    assert names[0] == "ddb-cay" and "reference" in names and len(set(names)) == len(names)
+    for r in rows:
+        assert r["description"] and r["groups"]
+    assert set(ddb.rigid_body().methods()) == set(names)
+    assert "sddb-paper-cay" not in ddb.heavy_top().methods()
+    matrix = [r["name"] for r in rows if "SU(N)" in r["groups"]]
+    assert ddb.zeitlin(4, 0.5).methods() == matrix
+
+
+@pytest.mark.parametrize("method", ["ddb-cay", "sddb-exp", "ddb4-cay", "ddb6-exp"])
+def test_rigid_body_keeps_the_norm_and_loses_energy(method):
+    a = ddb.scenario("A")
+    system = a.system()
+    t, m = ddb.integrate(system, method, a.mu0, 0.1, 300)
+    assert t.shape == (301,) and m.shape == (301, 3) and t[-1] == pytest.approx(30.0)
+    norm = np.linalg.norm(m, axis=1)  # |m|, not the library's casimirs()
+    # Round-off of up to 7 * 300 sub-steps (ddb6-exp); rk4 below drifts by more than 1e-9.
+    assert np.max(np.abs(norm / norm[0] - 1)) < 1e-13
+    np.testing.assert_allclose(system.casimirs(m)[:, 0], norm, rtol=1e-15)
+    energy = system.energy(m)
+    assert energy.shape == (301,)
+    assert energy[-1] < 0.9 * energy[0]
+    assert np.all(np.diff(energy) <= 1e-15 * energy[0])
+    # H = m.I^-1 m / 2, written out here.
+    np.testing.assert_allclose(energy, 0.5 * (m**2 / a.inertia).sum(axis=1), rtol=1e-15)
+
+
+def test_rk4_drifts_off_the_orbit():
+    a = ddb.scenario("A")
+    _, m = ddb.integrate(a.system(), "rk4", a.mu0, 0.3, 100)
+    norm = np.linalg.norm(m, axis=1)
+    assert np.max(np.abs(norm / norm[0] - 1)) > 1e-9
+
+
+def spectrum(W):
+    return np.sort(np.linalg.eigvals(-1j * W).real)  # numpy's eigensolver, not the library's
+
+
+def test_fluid_keeps_its_spectrum():
+    fluid = ddb.zeitlin(8, 0.5)
+    W0 = ddb.zeitlin_vorticity("random", 8, 5)
+    assert W0.shape == (8, 8) and W0.dtype == np.complex128
+    np.testing.assert_allclose(W0, -W0.conj().T, atol=1e-15)
+    t, W = ddb.integrate(fluid, "sddb-cay", W0, 0.05, 60, every=10)
+    assert W.shape == (7, 8, 8) and t[-1] == pytest.approx(3.0)
+    drift = max(np.max(np.abs(spectrum(w) - spectrum(W0))) for w in W)
+    assert drift < 1e-12 * np.max(np.abs(spectrum(W0)))
+    np.testing.assert_allclose(fluid.casimirs(W), [spectrum(w) for w in W], atol=1e-13)
+    energy = fluid.fluid_energy(W)
+    assert np.all(np.diff(energy) < 0)
+    # E = hbar H / N and Z = |W|^2/(2N), from their definitions.
+    np.testing.assert_allclose(energy, fluid.hbar * fluid.energy(W) / 8, rtol=1e-14)
+    np.testing.assert_allclose(fluid.enstrophy(W),
+                               [np.linalg.norm(w)**2 / 16 for w in W], rtol=1e-14)
+    P = fluid.stream_matrix(W[-1])
+    assert fluid.commutator_norm(W[-1]) == pytest.approx(np.linalg.norm(P @ W[-1] - W[-1] @ P),
+                                                         rel=1e-12)
+    assert fluid.commutator_norm(W[-1]) < fluid.commutator_norm(W0)
+
+
+def test_omega_lm_round_trip_and_the_initial_vorticities():
+    fluid = ddb.zeitlin(6, 0.0)
+    W = ddb.zeitlin_vorticity("random", 6, 2)
+    omega = fluid.omega_lm(W)
+    assert omega.shape == (36,)
+    np.testing.assert_allclose(fluid.vorticity(omega), W, atol=1e-13)
+    # Parseval for the basis orthonormal under Re tr(A^H B)/N.
+    assert np.sum(omega**2) == pytest.approx(np.linalg.norm(W)**2 / 6, rel=1e-13)
+    # l1: U X3 U^H keeps the spectrum of X3 = hbar i diag(j - (N-1)/2), normalised.
+    x3 = np.arange(6) - 2.5
+    np.testing.assert_allclose(spectrum(ddb.zeitlin_vorticity("l1", 6, 4)),
+                               x3 * np.sqrt(6) / np.linalg.norm(x3), atol=1e-13)
+    # zonal: i diag(d), a steady state.
+    zonal = ddb.zeitlin_vorticity("zonal", 6, 4)
+    np.testing.assert_array_equal(zonal, np.diag(np.diag(zonal)))
+    assert fluid.commutator_norm(zonal) < 1e-14
+
+
+def test_manakov_and_se3_casimirs():
+    rng = np.random.default_rng(1)
+    a = rng.standard_normal((5, 5))
+    m0 = a - a.T
+    system = ddb.manakov([1, 1.2, 1.5, 1.8, 2], 0.5)
+    _, M = ddb.integrate(system, "ddb-exp-exact", m0, 0.05, 40)
+    assert M.dtype == np.float64 and M.shape == (41, 5, 5)
+    for m in M:
+        np.testing.assert_allclose(spectrum(m), spectrum(m0), atol=1e-13)
+    top = ddb.heavy_top()
+    _, mu = ddb.integrate(top, "sddb-cay", ddb.HeavyTopSetup().mu0, 0.1, 50)
+    gamma2, pi_gamma = (mu[:, 3:]**2).sum(axis=1), (mu[:, :3] * mu[:, 3:]).sum(axis=1)
+    np.testing.assert_allclose(gamma2, gamma2[0], rtol=1e-14)
+    np.testing.assert_allclose(pi_gamma, pi_gamma[0], atol=1e-14)
+    np.testing.assert_allclose(top.casimirs(mu), np.stack([gamma2, pi_gamma], axis=1),
+                               atol=1e-14)
+
+
+def test_every_keeps_every_kth_and_the_last_state():
+    a = ddb.scenario("A")
+    t_all, m_all = ddb.integrate(a.system(), "ddb-cay", a.mu0, 0.1, 30)
+    t, m = ddb.integrate(a.system(), "ddb-cay", a.mu0, 0.1, 30, every=7)
+    kept = [0, 7, 14, 21, 28, 30]
+    np.testing.assert_array_equal(t, t_all[kept])
+    np.testing.assert_array_equal(m, m_all[kept])
+
+
+def test_a_failed_solve_is_a_solve_failure_with_its_fields():
+    a = ddb.scenario("A")
+    with pytest.raises(ddb.SolveFailure) as caught:
+        ddb.integrate(a.system(), "ddb-cay", 1e3 * a.mu0, 0.5, 10)  # far too large a step
+    e = caught.value
+    assert isinstance(e, RuntimeError)
+    assert (e.kind, e.step, e.t, e.h) == ("SolveFailure", 0, 0.0, 0.5)
+    assert e.residual > e.tolerance > 0
+    assert str(e).startswith("discrete Legendre equation did not converge at step 0")
+    np.testing.assert_array_equal(e.states, [1e3 * a.mu0])
+
+
+def test_a_failed_step_keeps_the_states_before_it():
+    # alpha < 0 drives the body from its slow axis (I = 1.3) to its fast one (I = 0.5): |xi|
+    # grows until |h xi| passes pi, where an exp step would land on another branch.
+    system, mu0, h = ddb.rigid_body([1, 1.3, 0.5], -0.5), [0.05, 1.0, 0.05], 2.0
+    with pytest.raises(ddb.SolveFailure) as caught:
+        ddb.integrate(system, "ddb-exp-exact", mu0, h, 1000, every=3)
+    e = caught.value
+    assert e.kind == "InjectivityLimit" and e.step > 3
+    assert e.t == e.step * h and e.h == h and f"step {e.step} " in str(e)
+    _, before = ddb.integrate(system, "ddb-exp-exact", mu0, h, e.step)
+    # |h xi| at the failing step's state, from xi = I^-1 m (written out here).
+    assert h * np.linalg.norm(before[-1] / [1, 1.3, 0.5]) >= np.pi
+    # Every third state and the last one computed.
+    kept = list(range(0, e.step + 1, 3)) + ([e.step] if e.step % 3 else [])
+    np.testing.assert_array_equal(e.states, before[kept])
+    np.testing.assert_array_equal(e.times, h * np.array(kept))
+
+
+@pytest.mark.parametrize("kwargs, parameter", [
+    (dict(h=-0.1), "h = -0.1"),
+    (dict(h=float("nan")), "h = nan"),
+    (dict(steps=-1), "steps = -1"),
+    (dict(every=0), "every = 0"),
+    (dict(method="ddb-fast"), "method = ddb-fast"),
+    (dict(mu0=[1.0, 2.0]), "mu0 = an array of shape (2,)"),
+    (dict(mu0=[1.0, float("nan"), 0.0]), "mu0 = (1, nan, 0)"),
+    (dict(mu0=[1j, 0, 0]), "mu0 = an array of dtype complex128"),
+    (dict(mu0="abc"), "mu0"),
+])
+def test_bad_arguments_name_the_parameter(kwargs, parameter):
+    a = ddb.scenario("A")
+    args = dict(system=a.system(), method="ddb-cay", mu0=a.mu0, h=0.1, steps=10)
+    args.update(kwargs)
+    with pytest.raises(ValueError) as caught:
+        ddb.integrate(**args)
+    assert str(caught.value).startswith(parameter)
+
+
+def test_bad_system_arguments_name_the_parameter():
+    cases = [
+        (lambda: ddb.rigid_body([1, 2], 0.5), "inertia"),
+        (lambda: ddb.rigid_body([1, -2, 3], 0.5), "inertia"),
+        (lambda: ddb.rigid_body([1, 2, 3], float("inf")), "alpha"),
+        (lambda: ddb.manakov([1, 0, 2], 0.5), "J"),
+        (lambda: ddb.zeitlin(1, 0.5), "N = 1"),
+        (lambda: ddb.zeitlin_vorticity("vortex", 4), "kind = vortex"),
+        (lambda: ddb.scenario("D"), "scenario = D"),
+        (lambda: ddb.heavy_top(metric=[1, 1, 1]), "metric"),
+        (lambda: ddb.integrate(ddb.heavy_top(), "sddb-paper-cay", ddb.HeavyTopSetup().mu0, 0.1,
+                               1), "method = sddb-paper-cay"),
+        (lambda: ddb.integrate(ddb.zeitlin(4, 0.5), "sddb-paper-exp",
+                               ddb.zeitlin_vorticity("random", 4), 0.1, 1), "method"),
+        (lambda: ddb.integrate(ddb.zeitlin(4, 0.5), "rk4", np.eye(4), 0.1, 1), "mu0"),
+        (lambda: ddb.integrate(ddb.zeitlin(4, 0.5), "rk4", np.zeros((3, 3)), 0.1, 1), "mu0"),
+        (lambda: ddb.rigid_body().energy(np.zeros((2, 2))), "states"),
+    ]
+    for make, parameter in cases:
+        with pytest.raises(ValueError) as caught:
+            make()
+        assert str(caught.value).startswith(parameter), str(caught.value)
+
+
+def test_help_explains_every_argument():
+    doc = ddb.integrate.__doc__
+    for argument in ("system:", "method:", "mu0:", "h:", "steps:", "every:", "SolveFailure"):
+        assert argument in doc
+
+
+def test_integrate_releases_the_gil():
+    # With no forced thread switches, the main thread can wake from its sleep during the
+    # worker's integrate() only if integrate() released the GIL.
+    a = ddb.scenario("A")
+    started, done = threading.Event(), threading.Event()
+
+    def work():
+        started.set()
+        ddb.integrate(a.system(), "ddb-cay", a.mu0, 0.1, 3_000_000, every=100_000)
+        done.set()
+
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1000.0)
+    try:
+        worker = threading.Thread(target=work)
+        worker.start()
+        while not started.is_set():
+            time.sleep(0.001)
+        time.sleep(0.01)
+        woke_during_the_run = not done.is_set()
+        worker.join()
+    finally:
+        sys.setswitchinterval(interval)
+    assert woke_during_the_run
