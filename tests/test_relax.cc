@@ -95,6 +95,30 @@ TEST(Relax, ScenarioBReachesTheLimitPointInClosedForm) {
   EXPECT_LT(run.last.k + run.steps_rejected, 250);
 }
 
+TEST(Relax, ScenarioCReachesTheGreatCircle) {
+  // 𝕀 = (1, 1, 0.5): Ω = (M₁, M₂, 2M₃), M × Ω = M₃ (M₂, −M₁, 0), so every M with M₃ = 0 is
+  // steady and |M₃| = |M × Ω|/√(M₁² + M₂²) ≤ 2|M|² r/√(M₁² + M₂²) (|Ω| ≤ 2|M|).
+  const RigidBodyScenario& s = rigidBodyScenario("C");
+  const auto system = s.system();
+  auto method = makeMethod<SO3>("sddb-exp", system);
+  Watch<SO3> watch{*system, {}, -1.0};
+  constexpr double kTolerance = 1e-11;
+  const RelaxResult<SO3> run =
+      relax(*method, *system, s.mu0(), 0.1, adaptiveUntil(kTolerance, 100000), std::ref(watch));
+  ASSERT_TRUE(run.steady()) << relaxStopName(run.stop) << " " << run.failure;
+  const Eigen::Vector3d M = run.final;
+  const double r = rigidBodyResidual(s, M);
+  EXPECT_LE(r, kTolerance);
+  const double planar = M.head<2>().norm();
+  std::cout << "Scenario C: " << run.last.k << " steps (" << run.steps_rejected
+            << " rejected) to t = " << run.last.t << ", r = " << r << ", |M3| = " << std::abs(M(2))
+            << "\n";
+  EXPECT_LE(std::abs(M(2)), 1.01 * 2 * M.squaredNorm() * r / planar);
+  EXPECT_NEAR(planar, s.mu0().norm(), 1e-14);
+  EXPECT_LE(watch.casimir_drift, 1e-14);
+  EXPECT_LE(watch.energy_against, 8 * kEps);
+}
+
 TEST(Relax, FluidStopsSteadyWithEveryAcceptedStepDissipatingOnTheOrbit) {
   // ddb-exp-exact: ddb-cay's fixed points at a given h are not steady (at N = 4 and h = 0.1
   // it stalls at r = 6e-5; docs/steady-states.md), so it would reach 1e-9 only at small h.
