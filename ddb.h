@@ -29,6 +29,7 @@
 #include <ddb/integrators/method_table.h>
 #include <ddb/integrators/one_step_method.h>
 #include <ddb/integrators/reference.h>
+#include <ddb/integrators/relax.h>
 #include <ddb/integrators/run.h>
 #include <ddb/integrators/runge_kutta.h>
 #include <ddb/integrators/symmetric_ddb.h>

@@ -84,12 +84,13 @@ TEST(FluidRelax, WritesContractFilesMatchingTheLibrary) {
 
       std::string header;
       const auto rows = readCsv(out / "history.csv", &header);
-      EXPECT_EQ(header, "t,energy,enstrophy,commutator_norm,spectrum_drift");
+      EXPECT_EQ(header, "t,energy,enstrophy,commutator_norm,spectrum_drift,h,residual");
       // k = 0, 3, ..., 39 and the last, 40; or every k.
       ASSERT_EQ(rows.size(), every == 3 ? 15u : 41u);
       EXPECT_NEAR(rows.back()[0], steps * h, 1e-12);
       for (size_t i = 0; i < rows.size(); ++i) {
-        ASSERT_EQ(rows[i].size(), 5u);
+        ASSERT_EQ(rows[i].size(), 7u);
+        EXPECT_EQ(rows[i][5], i == 0 ? 0.0 : h) << "the step that reached row " << i;
         for (double v : rows[i]) EXPECT_TRUE(std::isfinite(v));
         EXPECT_LE(rows[i][4], 1e-12) << "spectrum drift, N = " << n;
         EXPECT_NEAR(rows[i][2], 0.5, 1e-12) << "enstrophy of ||W||_F = sqrt(N)";
@@ -113,6 +114,9 @@ TEST(FluidRelax, WritesContractFilesMatchingTheLibrary) {
       }
       EXPECT_EQ(jsonNumber(summary, "n"), n);
       EXPECT_EQ(jsonNumber(summary, "steps"), steps);
+      EXPECT_EQ(summary["stop"], "step cap");
+      EXPECT_EQ(summary["steady"], false);
+      EXPECT_EQ(jsonNumber(summary, "steps_rejected"), 0);
       EXPECT_EQ(jsonNumber(summary, "h"), h);
       EXPECT_EQ(jsonNumber(summary, "seed"), 3);
       EXPECT_EQ(summary["method"], method);
@@ -135,6 +139,59 @@ TEST(FluidRelax, WritesContractFilesMatchingTheLibrary) {
       EXPECT_TRUE(fs::exists(out / "omega_initial.csv"));
     }
   }
+}
+
+TEST(FluidRelax, UntilSteadyStopsAtTheResidualWithAdaptiveOrFixedSteps) {
+  // N = 4 relaxes to r = 1e-9 with ddb-exp-exact in 6477 steps of h = 0.1, or about a
+  // thousand adaptive ones; r of W_final.csv from its own stream matrix, the residual column
+  // of the history, the stop reason of summary.json.
+  for (const std::string mode : {"", " --adaptive"}) {
+    SCOPED_TRACE(mode);
+    const fs::path out = freshFolder("steady");
+    const std::string args =
+        "--quiet --n 4 --alpha 0.5 --h 0.1 --steps 200000 --seed 1 "
+        "--method ddb-exp-exact --until-steady 1e-9 --every 100 --out " +
+        out.string() + mode;
+    const AppResult r = run(args);
+    ASSERT_EQ(r.status, 0) << args << "\n" << r.output;
+    const auto summary = readJson(out / "summary.json");
+    EXPECT_EQ(summary["stop"], "steady");
+    EXPECT_EQ(summary["steady"], true);
+    const Matrix W = readMatrix(out / "W_final.csv");
+    const ddb::ZeitlinHamiltonian hamiltonian(4);
+    const Matrix P = hamiltonian.streamMatrix(W);
+    const double residual = (P * W - W * P).norm() / (P.norm() * W.norm());
+    EXPECT_LE(residual, 1e-9);
+    EXPECT_NEAR(jsonNumber(summary, "residual_final"), residual, 1e-15);
+    EXPECT_LE(jsonNumber(summary, "spectrum_drift_max"), 1e-12);
+    EXPECT_EQ(jsonNumber(summary, "energy_rises"), 0);
+    std::string header;
+    const auto rows = readCsv(out / "history.csv", &header);
+    EXPECT_NEAR(rows.back()[6], residual, 1e-15);
+    EXPECT_GT(rows[rows.size() - 2][6], 1e-9) << "not steady before the last state";
+    if (mode.empty()) {
+      EXPECT_EQ(jsonNumber(summary, "steps_rejected"), 0);
+      EXPECT_EQ(jsonNumber(summary, "h_final"), 0.1);
+    } else {
+      EXPECT_GE(jsonNumber(summary, "steps_rejected"), 0);
+      EXPECT_EQ(summary["adaptive_tol"], 0.5);
+    }
+  }
+}
+
+TEST(FluidRelax, AdaptiveTimeCapStopsAtTEnd) {
+  const fs::path out = freshFolder("timecap");
+  const std::string args =
+      "--quiet --n 4 --alpha 50 --h 0.5 --t-end 3 --seed 1 --adaptive "
+      "--until-steady 1e-12 --out " +
+      out.string();
+  const AppResult r = run(args);
+  ASSERT_EQ(r.status, 0) << args << "\n" << r.output;
+  const auto summary = readJson(out / "summary.json");
+  EXPECT_EQ(summary["stop"], "time cap");
+  EXPECT_NEAR(jsonNumber(summary, "t_end"), 3.0, 1e-12);
+  EXPECT_GT(jsonNumber(summary, "steps_rejected"), 0) << "alpha = 50 at h = 0.5";
+  EXPECT_EQ(jsonNumber(summary, "energy_rises"), 0);
 }
 
 TEST(FluidRelax, DefaultStepIsTwoHundredthsOfHbarOverTheStreamNorm) {

@@ -1,10 +1,9 @@
 #include "common/energy_rises.h"
 
+#include <ddb/integrators/energy_step_control.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 
 namespace ddb::app {
 
@@ -13,9 +12,7 @@ bool EnergyRises::applies(bool keeps_casimirs, double alpha) { return keeps_casi
 void EnergyRises::observe(long k, double t, double energy) {
   if (started_) {
     const double rise = energy - last_;
-    const double roundoff = kRoundOffUlps * std::numeric_limits<double>::epsilon() *
-                            std::max(std::abs(last_), std::abs(energy));
-    if (rise > roundoff) {
+    if (rise > energyRoundOff(last_, energy)) {
       if (count_ == 0) {
         first_step_ = k;
         first_t_ = t;

@@ -10,10 +10,8 @@ namespace ddb::app {
 
 class EnergyRises {
  public:
-  /// A rise E_k − E_{k−1} counts if it exceeds kRoundOffUlps·ε·max(|E_{k−1}|, |E_k|):
-  /// the energy is a sum of a few rounded products, each good to ε relative, so honest
-  /// round-off stays within a few ε of the larger of the two values.
-  static constexpr double kRoundOffUlps = 8.0;
+  // A rise E_k − E_{k−1} counts if it exceeds energyRoundOff(E_{k−1}, E_k)
+  // (integrators/energy_step_control.h), the rounding the step control allows too.
 
   /// Whether rises are counted: a method of the DDB family (MethodInfo::keeps_casimirs,
   /// integrators/method_table.h) with α > 0. Other methods, and α ≤ 0, promise no

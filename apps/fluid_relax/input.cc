@@ -1,6 +1,7 @@
 #include "fluid_relax/input.h"
 
 #include <ddb/groups/sun.h>
+#include <ddb/integrators/method_table.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <spdlog/spdlog.h>
 
@@ -43,6 +44,31 @@ void requireRepresentableStep(const CLI::App& cli, const Options& o, const Setti
   throw std::logic_error("a generated vorticity overflows: " + why);
 }
 
+/// --until-steady, --adaptive and --adaptive-tol into s.relax (the caps are set later).
+void readRelaxOptions(const Options& o, Settings& s) {
+  if (!o.until_steady.empty()) {
+    s.relax.tolerance = app::parseNumber("--until-steady", o.until_steady, o.until_steady);
+    if (!(s.relax.tolerance > 0 && s.relax.tolerance < 1)) {
+      app::usageError("--until-steady", o.until_steady, "must be in (0, 1)");
+    }
+  }
+  s.relax.control.adaptive = o.adaptive;
+  if (o.adaptive && !findMethod(o.method)->keeps_casimirs) {
+    app::usageError("--adaptive", o.method,
+                    "needs a method that keeps the Casimirs (the DDB family), not this --method");
+  }
+  if (o.adaptive && s.alpha == 0) {
+    app::usageError("--adaptive", o.alpha, "needs --alpha != 0 (the energy must move)");
+  }
+  if (!o.adaptive_tol.empty()) {
+    if (!o.adaptive) app::usageError("--adaptive-tol", o.adaptive_tol, "needs --adaptive");
+    s.relax.control.tolerance = app::parseNumber("--adaptive-tol", o.adaptive_tol, o.adaptive_tol);
+    if (!(s.relax.control.tolerance > 0 && s.relax.control.tolerance < 1)) {
+      app::usageError("--adaptive-tol", o.adaptive_tol, "must be in (0, 1)");
+    }
+  }
+}
+
 }  // namespace
 
 Settings settings(const CLI::App& cli, const Options& o) {
@@ -58,6 +84,7 @@ Settings settings(const CLI::App& cli, const Options& o) {
     app::usageError("--steps", std::to_string(o.steps), "must be in [1, 1e9]");
   }
   if (o.every < 1) app::usageError("--every", std::to_string(o.every), "must be >= 1");
+  readRelaxOptions(o, s);
   app::InitialVorticity initial =
       app::initialVorticity(cli, {o.n, o.seed, o.init, o.init_file}, {kMaxN, ""});
   s.W0 = std::move(initial.W);
@@ -87,6 +114,11 @@ Settings settings(const CLI::App& cli, const Options& o) {
     if (s.default_h) s.h = t_end / static_cast<double>(s.steps);
   }
   requireRepresentableStep(cli, o, s);
+  // With --adaptive, --t-end caps the time and --steps the accepted steps; without,
+  // both are the step count.
+  const bool time_cap = by_time && o.adaptive;
+  s.relax.max_steps = time_cap ? kMaxSteps : s.steps;
+  if (time_cap) s.relax.t_end = t_end;
   // Only valid input is warned about: bad input gives its one line and nothing else.
   const double reached = static_cast<double>(s.steps) * s.h;
   if (by_time && std::abs(reached - t_end) > 1e-9 * t_end) {

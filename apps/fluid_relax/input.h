@@ -3,6 +3,8 @@
 // the flag (docs/bad-inputs.md).
 #pragma once
 
+#include <ddb/integrators/relax.h>
+
 #include <CLI/CLI.hpp>
 #include <Eigen/Core>
 #include <filesystem>
@@ -20,13 +22,17 @@ struct Settings {
   double alpha = 0.0, h = 0.0;
   bool default_h = false;
   long steps = 0;
+  /// When relax() stops: --until-steady, the cap (--steps, or --t-end's time with
+  /// --adaptive, else its step count) and the step control.
+  RelaxOptions relax;
   std::string init;  // random, l1, zonal or file
   std::filesystem::path out;
 };
 
 /// Every check of the input (docs/bad-inputs.md) in the order the messages name them:
-/// the method, α, --steps or --t-end, W0 (--init-file read and checked, or generated),
-/// h (given or the default) and a first step that does not overflow.
+/// the method, α, --steps or --t-end, --until-steady, --adaptive and --adaptive-tol, W0
+/// (--init-file read and checked, or generated), h (given or the default) and a first step that
+/// does not overflow.
 Settings settings(const CLI::App& cli, const Options& o);
 
 }  // namespace ddb::fluid

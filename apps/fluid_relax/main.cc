@@ -4,7 +4,9 @@
 // bad input, checked in full before anything is written; 1 if a step failed (history.csv
 // keeps every state before it) or a file could not be written.
 #include <ddb/integrators/method_table.h>
+#include <ddb/integrators/relax.h>
 #include <ddb/integrators/run.h>
+#include <ddb/integrators/steady_state_probe.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <spdlog/spdlog.h>
@@ -48,32 +50,39 @@ int relax(const Options& o, const Settings& s) {
   long iterations_total = 0, iterations_max = 0;
 
   HistoryCsv history_csv(s.out / "history.csv");
-  auto historyRow = [&](long, double t, const Matrix& W) {
+  // A row points at the run's current state; the one EveryKth holds back for finish() is
+  // the last, which they still point to then.
+  // r of each written row (relax() evaluates it only for --until-steady or --adaptive).
+  SteadyStateProbe<SUN> rowProbe(*system);
+  auto historyRow = [&](long, double t, const std::pair<const RelaxState*, const Matrix*>& at) {
+    const Matrix& W = *at.second;
+    rowProbe.evaluate(W);
     history_csv.write(t, diagnostics.energy(W), diagnostics.enstrophy(W),
-                      diagnostics.commutatorNorm(W), drift);
+                      diagnostics.commutatorNorm(W), drift, at.first->h, rowProbe.residual());
   };
-  EveryKth<Matrix, decltype(historyRow)> history(o.every, historyRow);
+  EveryKth<std::pair<const RelaxState*, const Matrix*>, decltype(historyRow)> history(o.every,
+                                                                                      historyRow);
 
   const bool watch_energy =
       app::EnergyRises::applies(findMethod(o.method)->keeps_casimirs, s.alpha);
   app::EnergyRises rises;
   app::Progress progress(o.log.quiet);
   const std::string label = o.method + " N=" + std::to_string(n);
-  const RunResult<SUN> run = runMethod(
-      *method, *system, s.W0, s.h, s.steps, RunOptions{}, [&](long k, double t, const Matrix& W) {
-        if (k > 0 && legendre != nullptr) {
+  const RelaxResult<SUN> run =
+      ddb::relax(*method, *system, s.W0, s.h, s.relax, [&](const RelaxState& at, const Matrix& W) {
+        if (at.k > 0 && legendre != nullptr) {
           const auto& stats = legendre->legendreSolver().stats();
           const long iterations = stats.fixed_point + stats.newton;
           iterations_total += iterations;
           iterations_max = std::max(iterations_max, iterations);
         }
-        if (watch_energy) rises.observe(k, t, diagnostics.energy(W));
+        if (watch_energy) rises.observe(at.k, at.t, at.energy);
         drift = spectrumDrift(W);
         drift_max = std::max(drift_max, drift);
-        history(k, t, W);
-        progress.update(label, k, s.steps, [&] {
-          return fmt::format("E {:.6g}  |[P,W]| {:.3g}", diagnostics.energy(W),
-                             diagnostics.commutatorNorm(W));
+        history(at.k, at.t, {&at, &W});
+        progress.update(label, at.k, s.relax.max_steps, [&] {
+          return fmt::format("E {:.6g}  |[P,W]| {:.3g}  h {:.3g}", at.energy,
+                             diagnostics.commutatorNorm(W), at.h);
         });
       });
   history.finish();
@@ -82,6 +91,7 @@ int relax(const Options& o, const Settings& s) {
   rises.warnIfAny(o.method);
 
   const double commutator_final = diagnostics.commutatorNorm(run.final);
+  const double residual_final = steadyStateResidual(*system, run.final);
   app::Json summary;
   summary["version"] = app::projectVersion();
   summary["status"] = run.ok() ? "ok" : "FAILED";
@@ -89,9 +99,18 @@ int relax(const Options& o, const Settings& s) {
   summary["alpha"] = s.alpha;
   summary["h"] = s.h;
   summary["h_source"] = s.default_h ? "default" : "--h";
-  summary["steps"] = run.steps;
+  summary["steps"] = run.last.k;
   summary["steps_requested"] = s.steps;
-  summary["t_end"] = run.t_final;
+  summary["t_end"] = run.last.t;
+  summary["stop"] = relaxStopName(run.stop);
+  summary["steady"] = run.steady();
+  summary["until_steady"] = s.relax.tolerance > 0 ? app::Json(s.relax.tolerance) : app::Json();
+  summary["residual_final"] = residual_final;
+  summary["adaptive"] = s.relax.control.adaptive;
+  summary["adaptive_tol"] =
+      s.relax.control.adaptive ? app::Json(s.relax.control.tolerance) : app::Json();
+  summary["steps_rejected"] = run.steps_rejected;
+  summary["h_final"] = run.last.h;
   summary["every"] = o.every;
   summary["method"] = o.method;
   summary["init"] = s.init;
@@ -106,7 +125,7 @@ int relax(const Options& o, const Settings& s) {
   summary["commutator_final"] = commutator_final;
   summary["runtime_s"] = run.runtime_s;
   summary["iterations_mean"] =
-      run.steps > 0 ? static_cast<double>(iterations_total) / run.steps : 0.0;
+      run.last.k > 0 ? static_cast<double>(iterations_total) / run.last.k : 0.0;
   summary["iterations_max"] = iterations_max;
   if (watch_energy) summary["energy_rises"] = rises.count();
   if (!run.ok()) {
@@ -116,7 +135,7 @@ int relax(const Options& o, const Settings& s) {
     summary["failure"] = run.failure;
     app::writeJsonFile(s.out / "summary.json", summary);
     spdlog::error("{}", run.failure);
-    spdlog::error("history.csv holds the {} steps before the failure; wrote {}", run.steps,
+    spdlog::error("history.csv holds the {} steps before the failure; wrote {}", run.last.k,
                   s.out.string());
     return app::kExitFailed;
   }
@@ -125,10 +144,12 @@ int relax(const Options& o, const Settings& s) {
   writeOmegaCsv(s.out / "omega_initial.csv", basis, s.W0);
   writeOmegaCsv(s.out / "omega_final.csv", basis, run.final);
   app::writeJsonFile(s.out / "summary.json", summary);
-  spdlog::info("E {} -> {}, |[P,W]| {} -> {}, spectrum drift <= {:.2e}, {:.3g} s; wrote {}",
-               diagnostics.energy(s.W0), diagnostics.energy(run.final),
-               diagnostics.commutatorNorm(s.W0), commutator_final, drift_max, run.runtime_s,
-               s.out.string());
+  spdlog::info(
+      "{} at step {}, t = {} ({} rejected): E {} -> {}, |[P,W]| {} -> {}, r {:.3g}, spectrum "
+      "drift <= {:.2e}, {:.3g} s; wrote {}",
+      relaxStopName(run.stop), run.last.k, run.last.t, run.steps_rejected, diagnostics.energy(s.W0),
+      diagnostics.energy(run.final), diagnostics.commutatorNorm(s.W0), commutator_final,
+      residual_final, drift_max, run.runtime_s, s.out.string());
   return app::kExitOk;
 }
 

@@ -2,17 +2,19 @@
 
 namespace ddb::fluid {
 
-HistoryCsv::HistoryCsv(const std::filesystem::path& path) : file_(path), row_(5) {
-  file_.write("t,energy,enstrophy,commutator_norm,spectrum_drift\n");
+HistoryCsv::HistoryCsv(const std::filesystem::path& path) : file_(path), row_(7) {
+  file_.write("t,energy,enstrophy,commutator_norm,spectrum_drift,h,residual\n");
 }
 
 void HistoryCsv::write(double t, double energy, double enstrophy, double commutator_norm,
-                       double spectrum_drift) {
+                       double spectrum_drift, double h, double residual) {
   row_.put(t);
   row_.put(energy);
   row_.put(enstrophy);
   row_.put(commutator_norm);
   row_.put(spectrum_drift);
+  row_.put(h);
+  row_.put(residual);
   row_.writeTo(file_);
 }
 

@@ -18,7 +18,7 @@ class HistoryCsv {
   /// Creates the file (through AtomicFile) with its header.
   explicit HistoryCsv(const std::filesystem::path& path);
   void write(double t, double energy, double enstrophy, double commutator_norm,
-             double spectrum_drift);
+             double spectrum_drift, double h, double residual);
   /// Completes the file under its name (AtomicFile::commit).
   void commit() { file_.commit(); }
 
