@@ -14,6 +14,8 @@
 // so it costs O(sample·m²), not O(N²) per coefficient; the prediction reads m corrections.
 #pragma once
 
+#include <ddb/core/binary_record.h>
+
 #include <Eigen/Core>
 #include <Eigen/QR>
 #include <algorithm>
@@ -60,6 +62,45 @@ class CorrectionPredictor {
       for (int j = 0; j < m; ++j)
         block += coefficients_(j) * correction(j).middleCols(first, width);
     }
+  }
+
+  /// The remembered corrections, their sketches and the fitted coefficients
+  /// (OneStepMethod::saveWarmStart).
+  void save(BinaryRecordWriter& out) const {
+    out.tag("correction predictor");
+    out.put(count_);
+    out.put(order_);
+    const int kept = std::min(count_, kOrder);  // slots 0..kept−1 are filled
+    for (int i = 0; i < kept; ++i) out.put(corrections_[static_cast<std::size_t>(i)]);
+    if (kept > 0) {
+      out.put(sketches_);
+      out.put(coefficients_);
+    }
+  }
+  /// Restores what save() wrote, for states of the size of `like`.
+  void load(BinaryRecordReader& in, const Matrix& like) {
+    in.expectTag("correction predictor");
+    reset();
+    const int count = in.get<int>(), order = in.get<int>();
+    if (count < 0 || order < 0 || order > kOrder) throw CorruptRecord("predictor counts");
+    const int kept = std::min(count, kOrder);
+    if (kept == 0) return;
+    allocate(like);
+    for (int i = 0; i < kept; ++i) {
+      Matrix& c = corrections_[static_cast<std::size_t>(i)];
+      in.get(c);
+      if (c.rows() != like.rows() || c.cols() != like.cols()) {
+        throw CorruptRecord("a remembered correction of another size than the state");
+      }
+    }
+    const Eigen::Index samples = sketches_.rows();
+    in.get(sketches_);
+    in.get(coefficients_);
+    if (sketches_.rows() != samples || sketches_.cols() != kSketches) {
+      throw CorruptRecord("predictor sketches of another size");
+    }
+    count_ = count;
+    order_ = order;
   }
 
   /// Remembers the correction solution − near and fits the coefficients of the next

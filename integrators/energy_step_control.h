@@ -21,6 +21,7 @@
 // grows until (b) or (c) sees it and halves h again.
 #pragma once
 
+#include <ddb/core/binary_record.h>
 #include <ddb/core/errors.h>
 
 #include <algorithm>
@@ -97,6 +98,21 @@ class EnergyStepControl {
 
   /// Whether h has fallen below kMinStepFraction of the first h.
   bool exhausted() const { return h_ < h_min_; }
+
+  /// The controller's state (h, its floor, the good steps in a row), for a resumed run.
+  void save(BinaryRecordWriter& out) const {
+    out.tag("energy step control");
+    out.put(h_);
+    out.put(h_min_);
+    out.put(good_);
+  }
+  void load(BinaryRecordReader& in) {
+    in.expectTag("energy step control");
+    in.get(h_);
+    in.get(h_min_);
+    in.get(good_);
+    if (!(h_ > 0 && h_min_ > 0 && good_ >= 0)) throw CorruptRecord("step control state");
+  }
 
  private:
   StepSizeControl control_;

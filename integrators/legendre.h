@@ -18,6 +18,7 @@
 //     SolveFailure when the tolerance is not reached.
 #pragma once
 
+#include <ddb/core/binary_record.h>
 #include <ddb/core/detail/tiny_solver.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/integrators/injectivity_guard.h>
@@ -63,6 +64,27 @@ class DiscreteLegendreSolver {
     squared_rate_ = 1.0;
   }
   LegendreForm form() const { return form_; }
+  /// The warm start (OneStepMethod::saveWarmStart): the last corrections, their step size
+  /// and the measured contraction.
+  void saveWarmStart(BinaryRecordWriter& out) const {
+    out.tag("discrete legendre solver");
+    out.put(history_);
+    out.put(squared_rate_);
+    out.put(h_);
+    out.put(correction_);
+    out.put(previous_correction_);
+    out.put(oldest_correction_);
+  }
+  void loadWarmStart(BinaryRecordReader& in) {
+    in.expectTag("discrete legendre solver");
+    in.get(history_);
+    if (history_ < 0 || history_ > 3) throw CorruptRecord("a correction count outside 0..3");
+    in.get(squared_rate_);
+    in.get(h_);
+    in.get(correction_);
+    in.get(previous_correction_);
+    in.get(oldest_correction_);
+  }
   /// Sweeps, Newton iterations and final residual of the last solve.
   const LegendreStats& stats() const { return stats_; }
 

@@ -37,6 +37,8 @@ class LegendreMethod : public OneStepMethod<typename R::Group> {
   LegendreMethod& operator=(const LegendreMethod&) = delete;
 
   void reset() override { legendre_.reset(); }
+  void saveWarmStart(BinaryRecordWriter& out) const override { legendre_.saveWarmStart(out); }
+  void loadWarmStart(BinaryRecordReader& in) override { legendre_.loadWarmStart(in); }
   /// The Legendre solver, for its statistics (iterations of the last solve).
   const LegendreSolverFor<R>& legendreSolver() const { return legendre_; }
   LegendreSolverFor<R>& legendreSolver() { return legendre_; }

@@ -26,6 +26,7 @@
 #pragma once
 
 #include <ceres/ceres.h>
+#include <ddb/core/binary_record.h>
 #include <ddb/core/detail/bernoulli.h>
 #include <ddb/core/detail/matrix_free_gmres.h>
 #include <ddb/core/detail/tiny_solver.h>
@@ -94,6 +95,35 @@ class MatrixLegendreSolver {
   }
   LegendreForm form() const { return form_; }
   const LegendreStats& stats() const { return stats_; }
+
+  /// The warm start (OneStepMethod::saveWarmStart): the predictors with their step sizes
+  /// and ages, and the last measured contraction rate.
+  void saveWarmStart(BinaryRecordWriter& out) const {
+    out.tag("matrix legendre solver");
+    out.put(static_cast<std::int64_t>(p_.rows()));
+    out.put(static_cast<std::int64_t>(p_.cols()));
+    out.put(rate_);
+    out.put(clock_);
+    for (std::size_t i = 0; i < kPredictors; ++i) {
+      out.put(predictor_h_[i]);
+      out.put(last_used_[i]);
+      predictors_[i].save(out);
+    }
+  }
+  void loadWarmStart(BinaryRecordReader& in) {
+    in.expectTag("matrix legendre solver");
+    const auto rows = in.get<std::int64_t>(), cols = in.get<std::int64_t>();
+    if (rows < 0 || cols < 0) throw CorruptRecord("a negative state size");
+    reset();
+    if (rows > 0) allocate(Dual::Zero(rows, cols));
+    in.get(rate_);
+    in.get(clock_);
+    for (std::size_t i = 0; i < kPredictors; ++i) {
+      in.get(predictor_h_[i]);
+      in.get(last_used_[i]);
+      predictors_[i].load(in, p_);
+    }
+  }
   void setStrategy(MatrixLegendreStrategy strategy) { strategy_ = strategy; }
 
   /// Solves (I + hξ(p)/2) p (I − hξ(p)/2) = target(ξ, p); returns ξ and sets p.

@@ -4,6 +4,7 @@
 // observer has seen every state before it when the typed SolveFailure propagates.
 #pragma once
 
+#include <ddb/core/binary_record.h>
 #include <ddb/core/errors.h>
 
 #include <string>
@@ -21,6 +22,14 @@ class OneStepMethod {
   virtual std::string name() const = 0;
   /// Forgets warm-start data; integrate() calls it before a new trajectory.
   virtual void reset() {}
+  /// The warm start: everything the next step depends on besides (μ, t, h), e.g. the
+  /// Legendre solver's predictor history. A method loaded with what another instance saved
+  /// takes, from the same μ, t and h, the same steps to the bit (a resumed run continues the
+  /// uninterrupted one exactly: docs/file-formats.md, "Checkpoints"). Methods without one
+  /// write nothing.
+  virtual void saveWarmStart(BinaryRecordWriter&) const {}
+  /// Restores what saveWarmStart wrote; throws CorruptRecord if it is not such a record.
+  virtual void loadWarmStart(BinaryRecordReader&) {}
   /// μ(t + h) from μ(t). Throws SolveFailure (step index -1) if an implicit solve fails.
   virtual Dual step(const Dual& mu, double t, double h) = 0;
   /// μ ← μ(t + h) in place; integrate() calls this. A method that overrides it can step

@@ -99,6 +99,17 @@ class ReferenceSolver : public OneStepMethod<G> {
     dt_ = 0.0;
     substeps_ = 0;
   }
+  /// The sub-step size carried to the next step, and the sub-steps taken.
+  void saveWarmStart(BinaryRecordWriter& out) const override {
+    out.tag("reference");
+    out.put(dt_);
+    out.put(substeps_);
+  }
+  void loadWarmStart(BinaryRecordReader& in) override {
+    in.expectTag("reference");
+    in.get(dt_);
+    in.get(substeps_);
+  }
 
   Dual step(const Dual& mu, double t, double h) override { return this->stepInPlace(mu, t, h); }
 

@@ -1,12 +1,13 @@
-// relax(): integrates a system until it is steady (docs/steady-states.md). The run stops
-// at the first state whose residual r = ‖ad*_ξ μ‖/(‖ξ‖ ‖μ‖) (SteadyStateProbe) is at most
-// the tolerance, or at a cap on the accepted steps or on the time, or at a failure, and
-// says which. With StepSizeControl::adaptive the steps are chosen by EnergyStepControl
-// (for the Casimir-keeping methods: every accepted step keeps the state on the orbit and
-// moves the energy the way the flow does); without, every step has the first h, as in
-// runMethod(). The sink sees every accepted state, in order, as it is computed.
+// relax() and Relaxation: integrate a system until it is steady (docs/steady-states.md). The run
+// stops at the first state whose residual r = ‖ad*_ξ μ‖/(‖ξ‖ ‖μ‖) (SteadyStateProbe) is at most the
+// tolerance, or at a cap on the accepted steps or on the time, or at a failure, and says which.
+// With StepSizeControl::adaptive the steps are chosen by EnergyStepControl (for the Casimir-keeping
+// methods: every accepted step keeps the state on the orbit and moves the energy the way the flow
+// does); without, every step has the first h, as in runMethod(). The sink sees every accepted
+// state, in order, as it is computed.
 #pragma once
 
+#include <ddb/core/binary_record.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/integrators/energy_step_control.h>
@@ -23,10 +24,11 @@ namespace ddb {
 
 /// Why relax() stopped.
 enum class RelaxStop {
-  kSteady,   ///< r ≤ tolerance
-  kStepCap,  ///< max_steps accepted steps taken
-  kTimeCap,  ///< t_end reached
-  kFailure,  ///< a step failed (fixed h) or h fell below its floor (adaptive)
+  kSteady,       ///< r ≤ tolerance
+  kStepCap,      ///< max_steps accepted steps taken
+  kTimeCap,      ///< t_end reached
+  kFailure,      ///< a step failed (fixed h) or h fell below its floor (adaptive)
+  kInterrupted,  ///< the caller ended the run (Relaxation::interrupt)
 };
 
 inline const char* relaxStopName(RelaxStop stop) {
@@ -37,6 +39,8 @@ inline const char* relaxStopName(RelaxStop stop) {
       return "step cap";
     case RelaxStop::kTimeCap:
       return "time cap";
+    case RelaxStop::kInterrupted:
+      return "interrupted";
     case RelaxStop::kFailure:
       break;
   }
@@ -90,105 +94,217 @@ inline std::string messageAtStep(const SolveFailure& failure, long k, double t, 
 
 }  // namespace detail
 
-/// Relaxes mu0 with `method` from the step h0 (options: when to stop, how to choose h).
-/// Bad arguments throw InvalidArgument; a failed step is recorded in the result.
+/// A relaxation as an object (Boost.Odeint's steppers and GeometricIntegrators.jl's
+/// integrators keep problem, method and cursor apart likewise): advance() takes one
+/// accepted step at a time, and save()/load() carry the whole cursor (state, time, step
+/// control, the method's warm start) so that a run resumed from a checkpoint takes the
+/// uninterrupted run's steps to the bit (docs/file-formats.md, "Checkpoints").
+template <class G>
+class Relaxation {
+ public:
+  using Dual = typename G::template Dual<double>;
+
+  /// Starts at mu0 with the step h0 (options: when to stop, how to choose h). Bad arguments
+  /// throw InvalidArgument; calls method.reset().
+  Relaxation(OneStepMethod<G>& method, const LiePoissonSystem<G>& system, const Dual& mu0,
+             double h0, const RelaxOptions& options)
+      : method_(method),
+        system_(system),
+        options_(checked(options)),
+        control_(options.control, requirePositive("h", h0)),
+        probing_(options.control.adaptive || options.tolerance > 0),
+        probe_(system) {
+    requireFinite("mu0", mu0);
+    result_.final = mu0;
+    result_.stop = RelaxStop::kFailure;
+    cursor().energy = system_.energy(mu0);
+    cursor().residual = residualAt(mu0);
+    if (options_.control.adaptive && probe_.energyRate() == 0 &&
+        state().residual > options_.tolerance) {
+      throwInvalid("adaptive", "true", "needs dissipation: dH/dt = 0 at mu0 (alpha = 0?)");
+    }
+    h_stretch_ = control_.h();
+    trial_ = mu0;
+    method_.reset();
+  }
+
+  /// The accepted state: its index, time, step, energy and residual, and the state itself.
+  const RelaxState& state() const { return result_.last; }
+  const Dual& current() const { return result_.final; }
+  bool stopped() const { return stopped_; }
+  /// What the run did so far (its stop once stopped()); runtime_s is the caller's to fill.
+  const RelaxResult<G>& result() const { return result_; }
+
+  /// Tries steps until one is accepted (true) or the run stops (false: result().stop says
+  /// why). A failed step is recorded in the result; the state stays the last accepted one.
+  bool advance() {
+    if (stopped_) return false;
+    while (true) {
+      if (probing_ && state().residual <= options_.tolerance) return stop(RelaxStop::kSteady);
+      if (state().k >= options_.max_steps) return stop(RelaxStop::kStepCap);
+      const double left = options_.t_end - state().t;
+      if (std::isfinite(options_.t_end) && left <= 1e-12 * options_.t_end) {
+        return stop(RelaxStop::kTimeCap);
+      }
+      const double h = std::min(control_.h(), left);
+      const double rate = probe_.energyRate();
+      trial_ = result_.final;
+      std::string rejected;
+      try {
+        method_.advance(trial_, state().t, h);
+        if (!trial_.allFinite()) throw NonFiniteState(method_.name(), -1, state().t, h, trial_);
+      } catch (const SolveFailure& failure) {
+        if (!options_.control.adaptive) {
+          result_.failure = detail::messageAtStep(failure, state().k, state().t, h);
+          result_.failed_step = state().k;
+          return stop(RelaxStop::kFailure);
+        }
+        rejected = control_.reject(failure.what());
+      }
+      const double energy = rejected.empty() ? system_.energy(trial_) : 0.0;
+      if (options_.control.adaptive && rejected.empty()) {
+        rejected = control_.judge(h, rate, state().energy, energy);
+      }
+      if (!rejected.empty()) {
+        ++result_.steps_rejected;
+        if (control_.exhausted()) {
+          result_.failure = "relax: step " + std::to_string(state().k) +
+                            " from t = " + formatValue(state().t) +
+                            " rejected down to h = " + formatValue(h) +
+                            " (below 2^-30 of the first h): " + rejected;
+          result_.failed_step = state().k;
+          return stop(RelaxStop::kFailure);
+        }
+        continue;
+      }
+      // Times as in integrate(): t = t_start + j·h over a stretch of equal steps, so that a
+      // fixed-h run lands on the same times.
+      if (h != h_stretch_) {
+        t_start_ = state().t;
+        h_stretch_ = h;
+        j_ = 0;
+      }
+      std::swap(result_.final, trial_);
+      RelaxState& s = cursor();
+      ++s.k;
+      s.t = t_start_ + static_cast<double>(++j_) * h;
+      s.h = h;
+      s.energy = energy;
+      s.residual = residualAt(result_.final);
+      return true;
+    }
+  }
+
+  /// Ends the run before its stop (a signal, a caller's own rule): result().stop is
+  /// kInterrupted. A run already stopped keeps its stop.
+  void interrupt() {
+    if (!stopped_) stop(RelaxStop::kInterrupted);
+  }
+
+  /// Replaces the caps (a resumed run may extend them); the tolerance and step control stay.
+  void setCaps(long max_steps, double t_end) {
+    RelaxOptions options = options_;
+    options.max_steps = max_steps;
+    options.t_end = t_end;
+    options_ = checked(options);
+  }
+
+  /// The cursor: the accepted state and its record, the stretch of equal steps, the step
+  /// control and the method's warm start.
+  void save(BinaryRecordWriter& out) const {
+    out.tag("relaxation");
+    const RelaxState& s = state();
+    out.put(s.k);
+    out.put(s.t);
+    out.put(s.h);
+    out.put(s.energy);
+    out.put(s.residual);
+    out.put(result_.final);
+    out.put(result_.steps_rejected);
+    out.put(t_start_);
+    out.put(h_stretch_);
+    out.put(j_);
+    control_.save(out);
+    method_.saveWarmStart(out);
+  }
+  /// Continues from what save() wrote, with this object's method, system and options.
+  void load(BinaryRecordReader& in) {
+    in.expectTag("relaxation");
+    RelaxState& s = cursor();
+    in.get(s.k);
+    in.get(s.t);
+    in.get(s.h);
+    in.get(s.energy);
+    in.get(s.residual);
+    Dual mu = result_.final;
+    in.get(mu);
+    if (mu.rows() != result_.final.rows() || mu.cols() != result_.final.cols() || !mu.allFinite() ||
+        s.k < 0) {
+      throw CorruptRecord("a relaxation state of another size, negative index or not finite");
+    }
+    result_.final = mu;
+    in.get(result_.steps_rejected);
+    in.get(t_start_);
+    in.get(h_stretch_);
+    in.get(j_);
+    control_.load(in);
+    method_.loadWarmStart(in);
+    // The probe as the uninterrupted run left it: evaluated at the accepted state.
+    if (probing_) probe_.evaluate(result_.final);
+    stopped_ = false;
+    result_.stop = RelaxStop::kFailure;
+  }
+
+ private:
+  static RelaxOptions checked(const RelaxOptions& options) {
+    if (!(options.tolerance >= 0 && options.tolerance < 1)) {
+      throwInvalid("tolerance", formatValue(options.tolerance), "must be in [0, 1)");
+    }
+    if (options.max_steps < 0) {
+      throwInvalid("max_steps", std::to_string(options.max_steps), "must be >= 0");
+    }
+    if (!(options.t_end > 0)) throwInvalid("t_end", formatValue(options.t_end), "must be > 0");
+    return options;
+  }
+  RelaxState& cursor() { return result_.last; }
+  bool stop(RelaxStop why) {
+    result_.stop = why;
+    stopped_ = true;
+    return false;
+  }
+  // r and dH/dt cost four products on matrix groups: evaluated only where a tolerance or
+  // the step control reads them.
+  double residualAt(const Dual& mu) {
+    if (!probing_) return std::numeric_limits<double>::quiet_NaN();
+    probe_.evaluate(mu);
+    return probe_.residual();
+  }
+
+  OneStepMethod<G>& method_;
+  const LiePoissonSystem<G>& system_;
+  RelaxOptions options_;
+  EnergyStepControl control_;
+  bool probing_;
+  SteadyStateProbe<G> probe_;
+  RelaxResult<G> result_;
+  bool stopped_ = false;
+  double t_start_ = 0.0, h_stretch_ = 0.0;
+  long j_ = 0;
+  Dual trial_;
+};
+
+/// Relaxes mu0 with `method` from the step h0 (options: when to stop, how to choose h);
+/// sink(state, μ) sees every accepted state, the first included. Bad arguments throw
+/// InvalidArgument; a failed step is recorded in the result.
 template <class G, class Sink>
 RelaxResult<G> relax(OneStepMethod<G>& method, const LiePoissonSystem<G>& system,
                      const typename G::template Dual<double>& mu0, double h0,
                      const RelaxOptions& options, Sink&& sink) {
-  using Dual = typename G::template Dual<double>;
-  requireFinite("mu0", mu0);
-  requirePositive("h", h0);
-  if (!(options.tolerance >= 0 && options.tolerance < 1)) {
-    throwInvalid("tolerance", formatValue(options.tolerance), "must be in [0, 1)");
-  }
-  if (options.max_steps < 0) {
-    throwInvalid("max_steps", std::to_string(options.max_steps), "must be >= 0");
-  }
-  if (!(options.t_end > 0)) throwInvalid("t_end", formatValue(options.t_end), "must be > 0");
   const auto start = std::chrono::steady_clock::now();
-  EnergyStepControl control(options.control, h0);
-  const bool adaptive = options.control.adaptive;
-  // r and dH/dt cost four products on matrix groups: evaluated only where a tolerance or
-  // the step control reads them.
-  const bool probing = adaptive || options.tolerance > 0;
-  SteadyStateProbe<G> probe(system);
-  const auto residualAt = [&](const Dual& mu) {
-    if (!probing) return std::numeric_limits<double>::quiet_NaN();
-    probe.evaluate(mu);
-    return probe.residual();
-  };
-  RelaxResult<G> result;
-  result.final = mu0;
-  RelaxState& state = result.last;
-  state.energy = system.energy(mu0);
-  state.residual = residualAt(mu0);
-  if (adaptive && probe.energyRate() == 0 && state.residual > options.tolerance) {
-    throwInvalid("adaptive", "true", "needs dissipation: dH/dt = 0 at mu0 (alpha = 0?)");
-  }
-  sink(state, result.final);
-  // Times as in integrate(): t = t_start + j·h over a stretch of equal steps, so that a
-  // fixed-h run lands on the same times.
-  double t_start = 0.0, h_stretch = control.h();
-  long j = 0;
-  Dual trial = mu0;
-  method.reset();
-  while (true) {
-    if (probing && state.residual <= options.tolerance) {
-      result.stop = RelaxStop::kSteady;
-      break;
-    }
-    if (state.k >= options.max_steps) {
-      result.stop = RelaxStop::kStepCap;
-      break;
-    }
-    const double left = options.t_end - state.t;
-    if (std::isfinite(options.t_end) && left <= 1e-12 * options.t_end) {
-      result.stop = RelaxStop::kTimeCap;
-      break;
-    }
-    const double h = std::min(control.h(), left);
-    const double rate = probe.energyRate();
-    trial = result.final;
-    std::string rejected;
-    try {
-      method.advance(trial, state.t, h);
-      if (!trial.allFinite()) throw NonFiniteState(method.name(), -1, state.t, h, trial);
-    } catch (const SolveFailure& failure) {
-      if (!adaptive) {
-        result.failure = detail::messageAtStep(failure, state.k, state.t, h);
-        result.failed_step = state.k;
-        break;
-      }
-      rejected = control.reject(failure.what());
-    }
-    const double energy = rejected.empty() ? system.energy(trial) : 0.0;
-    if (adaptive && rejected.empty()) rejected = control.judge(h, rate, state.energy, energy);
-    if (!rejected.empty()) {
-      ++result.steps_rejected;
-      if (control.exhausted()) {
-        result.failure = "relax: step " + std::to_string(state.k) +
-                         " from t = " + formatValue(state.t) +
-                         " rejected down to h = " + formatValue(h) +
-                         " (below 2^-30 of the first h): " + rejected;
-        result.failed_step = state.k;
-        break;
-      }
-      continue;
-    }
-    if (h != h_stretch) {
-      t_start = state.t;
-      h_stretch = h;
-      j = 0;
-    }
-    std::swap(result.final, trial);
-    ++state.k;
-    state.t = t_start + static_cast<double>(++j) * h;
-    state.h = h;
-    state.energy = energy;
-    state.residual = residualAt(result.final);
-    sink(state, result.final);
-  }
+  Relaxation<G> relaxation(method, system, mu0, h0, options);
+  sink(relaxation.state(), relaxation.current());
+  while (relaxation.advance()) sink(relaxation.state(), relaxation.current());
+  RelaxResult<G> result = relaxation.result();
   result.runtime_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

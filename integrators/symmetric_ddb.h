@@ -169,6 +169,25 @@ class PaperSymmetricDdb : public LegendreMethod<R> {
     LegendreMethod<R>::reset();
     started_ = false;
   }
+  /// The solver's warm start and the two-step recurrence's last ξ, p and momentum.
+  void saveWarmStart(BinaryRecordWriter& out) const override {
+    LegendreMethod<R>::saveWarmStart(out);
+    out.put(started_);
+    out.put(h_);
+    out.put(xi_);
+    out.put(p_);
+    out.put(momentum_);
+    out.put(output_);
+  }
+  void loadWarmStart(BinaryRecordReader& in) override {
+    LegendreMethod<R>::loadWarmStart(in);
+    in.get(started_);
+    in.get(h_);
+    in.get(xi_);
+    in.get(p_);
+    in.get(momentum_);
+    in.get(output_);
+  }
 
   Dual step(const Dual& mu, double t, double h) override {
     // A two-step recurrence in ξ: (re)start whenever the caller's state or h is not ours.
