@@ -4,8 +4,8 @@
 //   DDB_IO_FAULT_PATH  a substring of the file's path; only such files fail
 //   DDB_IO_FAULT_OP    write  fwrite/fflush to the file fail with ENOSPC (disk full)
 //                      fsync  fsync of the file fails with ENOSPC (full at flush time)
-//                      create mkstemp of a matching name fails with EACCES (the folder
-//                             became unwritable)
+//                      create mkstemp or fopen for writing of a matching name fails with
+//                             EACCES (the folder became unwritable)
 //                      rename rename onto a matching target fails with EACCES
 // Every call that is not matched goes on to the real function. The apps write through
 // stdio and call fsync, mkstemp and rename themselves, so these are the calls they make;
@@ -84,6 +84,25 @@ int mkstemp(char* name) {
   }
   static const auto next = real<int (*)(char*)>("mkstemp");
   return next(name);
+}
+
+// Journal files (history.csv's `.partial`) are created by fopen for writing.
+std::FILE* fopen(const char* name, const char* mode) {
+  if (mode[0] != 'r' && faultOn("create", name)) {
+    errno = EACCES;
+    return nullptr;
+  }
+  static const auto next = real<std::FILE* (*)(const char*, const char*)>("fopen");
+  return next(name, mode);
+}
+
+std::FILE* fopen64(const char* name, const char* mode) {
+  if (mode[0] != 'r' && faultOn("create", name)) {
+    errno = EACCES;
+    return nullptr;
+  }
+  static const auto next = real<std::FILE* (*)(const char*, const char*)>("fopen64");
+  return next(name, mode);
 }
 
 int rename(const char* from, const char* to) {

@@ -78,10 +78,10 @@ TEST(IoFaults, DdbCompareExitsOneNamingTheFileAndKeepsTheFilesBefore) {
 
 TEST(IoFaults, FluidRelaxExitsOneNamingTheFileAndKeepsTheFilesBefore) {
   // history.csv is streamed while the run goes, so its fault arrives inside the run.
-  const AppCase app{
-      FLUID_RELAX_PATH,
-      "--quiet --n 8 --steps 20 --seed 2",
-      {"history.csv", "W_final.csv", "omega_initial.csv", "omega_final.csv", "summary.json"}};
+  const AppCase app{FLUID_RELAX_PATH,
+                    "--quiet --n 8 --steps 20 --seed 2",
+                    {"history.csv", "checkpoint.ddb", "W_final.csv", "omega_initial.csv",
+                     "omega_final.csv", "summary.json"}};
   expectFaultsHandled(app, "fluid_io_faults_", {"history.csv", "omega_initial.csv"});
 }
 

@@ -20,9 +20,10 @@ void CsvRow::put(double v) {
   buffer_[used_++] = '\n';
 }
 
-void CsvRow::writeTo(AtomicFile& file) {
-  file.write(std::string_view(buffer_.data(), used_));
+std::string_view CsvRow::take() {
+  const std::string_view row(buffer_.data(), used_);
   used_ = 0;
+  return row;
 }
 
 }  // namespace ddb::app

@@ -4,9 +4,8 @@
 #pragma once
 
 #include <cstddef>
+#include <string_view>
 #include <vector>
-
-#include "common/atomic_file.h"
 
 namespace ddb::app {
 
@@ -17,10 +16,16 @@ class CsvRow {
 
   /// Appends v as the row's next cell; throws std::logic_error past `cells` cells.
   void put(double v);
-  /// Appends the row and its newline to `file` and starts a new one.
-  void writeTo(AtomicFile& file);
+  /// Appends the row and its newline to `file` (AtomicFile, JournalFile) and starts a new one.
+  template <class File>
+  void writeTo(File& file) {
+    file.write(take());
+  }
 
  private:
+  /// The row with its newline; the next put() starts a new one.
+  std::string_view take();
+
   std::vector<char> buffer_;
   std::size_t used_ = 0;
 };

@@ -33,4 +33,24 @@ void EnergyRises::warnIfAny(const std::string& method) const {
       method, count_, first_step_, first_t_, largest_);
 }
 
+void EnergyRises::save(BinaryRecordWriter& out) const {
+  out.tag("energy rises");
+  out.put(started_);
+  out.put(last_);
+  out.put(count_);
+  out.put(first_step_);
+  out.put(first_t_);
+  out.put(largest_);
+}
+
+void EnergyRises::load(BinaryRecordReader& in) {
+  in.expectTag("energy rises");
+  in.get(started_);
+  in.get(last_);
+  in.get(count_);
+  in.get(first_step_);
+  in.get(first_t_);
+  in.get(largest_);
+}
+
 }  // namespace ddb::app

@@ -4,6 +4,8 @@
 // the apps count and report instead of passing over in silence.
 #pragma once
 
+#include <ddb/core/binary_record.h>
+
 #include <string>
 
 namespace ddb::app {
@@ -23,6 +25,10 @@ class EnergyRises {
   long count() const { return count_; }
   /// Logs a warning naming `method`, the count, the first and the largest rise, if any.
   void warnIfAny(const std::string& method) const;
+
+  /// The count so far and the last energy, for a checkpoint.
+  void save(BinaryRecordWriter& out) const;
+  void load(BinaryRecordReader& in);
 
  private:
   bool started_ = false;

@@ -7,11 +7,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <utility>
 
 #include "common/cli.h"
 #include "common/exit_status.h"
 #include "common/initial_vorticity.h"
+#include "fluid_relax/checkpoint.h"
 
 namespace ddb::fluid {
 
@@ -69,6 +71,18 @@ void readRelaxOptions(const Options& o, Settings& s) {
   }
 }
 
+/// The text of a run-defining flag that the run took by default ("" if it has none).
+std::string defaultText(const Checkpoint& c, const std::string& flag) {
+  const Options& o = c.options;
+  if (flag == "--n") return std::to_string(o.n);
+  if (flag == "--alpha") return o.alpha;
+  if (flag == "--method") return o.method;
+  if (flag == "--init") return o.init;
+  if (flag == "--every") return std::to_string(o.every);
+  if (flag == "--seed") return std::to_string(o.seed);
+  return "";
+}
+
 }  // namespace
 
 Settings settings(const CLI::App& cli, const Options& o) {
@@ -84,6 +98,9 @@ Settings settings(const CLI::App& cli, const Options& o) {
     app::usageError("--steps", std::to_string(o.steps), "must be in [1, 1e9]");
   }
   if (o.every < 1) app::usageError("--every", std::to_string(o.every), "must be >= 1");
+  if (cli.count("--checkpoint-every") > 0 && o.checkpoint_every < 1) {
+    app::usageError("--checkpoint-every", std::to_string(o.checkpoint_every), "must be >= 1");
+  }
   readRelaxOptions(o, s);
   app::InitialVorticity initial =
       app::initialVorticity(cli, {o.n, o.seed, o.init, o.init_file}, {kMaxN, ""});
@@ -127,6 +144,70 @@ Settings settings(const CLI::App& cli, const Options& o) {
   }
   s.out = o.out;
   return s;
+}
+
+void resumeSettings(const CLI::App& cli, const Options& given, Checkpoint& c) {
+  // Flags that do not change the states a run computes.
+  static const std::set<std::string> kFree{
+      "--resume", "--steps",   "--t-end", "--out",
+      "--plot",   "--verbose", "--quiet", "--checkpoint-every"};
+  for (const auto& [flag, text] : givenFlags(cli)) {
+    if (kFree.count(flag) > 0) continue;
+    // The value the run used: as given then, or the default it took.
+    const auto recorded = c.given.find(flag);
+    const std::string used = recorded != c.given.end() ? recorded->second : defaultText(c, flag);
+    if (used != text) {
+      app::usageError(flag, text,
+                      "a resumed run keeps its settings (it ran with " + flag + " = " +
+                          (used.empty() ? "none" : used) + ")");
+    }
+  }
+  if (cli.count("--out") > 0 && std::filesystem::path(given.out).lexically_normal() !=
+                                    std::filesystem::path(given.resume).lexically_normal()) {
+    app::usageError("--out", given.out, "a resumed run writes into its --resume folder");
+  }
+  Options& o = c.options;
+  Settings& s = c.settings;
+  const bool by_steps = cli.count("--steps") > 0, by_time = cli.count("--t-end") > 0;
+  if (by_steps && by_time) {
+    throw app::UsageError("--steps, --t-end: give at most one of them with --resume (both given)");
+  }
+  if (by_steps) {
+    if (given.steps < 1 || given.steps > kMaxSteps) {
+      app::usageError("--steps", std::to_string(given.steps), "must be in [1, 1e9]");
+    }
+    o.steps = s.steps = s.relax.max_steps = given.steps;
+    s.relax.t_end = std::numeric_limits<double>::infinity();
+  }
+  if (by_time) {
+    const double t_end = app::parseNumber("--t-end", given.t_end, given.t_end);
+    if (!(t_end > 0)) app::usageError("--t-end", given.t_end, "must be > 0");
+    o.t_end = given.t_end;
+    if (s.relax.control.adaptive) {
+      s.relax.max_steps = kMaxSteps;
+      s.relax.t_end = t_end;
+    } else {
+      // The recorded h stays: round(T/h) of its steps (a warning if they do not end at T).
+      const double count = std::round(t_end / s.h);
+      if (count > static_cast<double>(kMaxSteps)) {
+        app::usageError("--t-end", given.t_end, fmt::format("more than 1e9 steps of h = {}", s.h));
+      }
+      s.steps = s.relax.max_steps = std::max(1L, static_cast<long>(count));
+      const double reached = static_cast<double>(s.steps) * s.h;
+      if (std::abs(reached - t_end) > 1e-9 * t_end) {
+        spdlog::warn("--t-end {} is not a multiple of the run's h {}: {} steps end at t = {}",
+                     t_end, s.h, s.steps, reached);
+      }
+    }
+  }
+  if (cli.count("--checkpoint-every") > 0 && given.checkpoint_every < 1) {
+    app::usageError("--checkpoint-every", std::to_string(given.checkpoint_every), "must be >= 1");
+  }
+  o.resume = given.resume;
+  o.checkpoint_every = given.checkpoint_every;
+  o.plot = given.plot;
+  o.log = given.log;
+  s.out = given.resume;
 }
 
 }  // namespace ddb::fluid

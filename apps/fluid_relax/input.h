@@ -35,4 +35,13 @@ struct Settings {
 /// does not overflow.
 Settings settings(const CLI::App& cli, const Options& o);
 
+struct Checkpoint;
+
+/// For --resume: checks the command line against the checkpoint's (a flag that would change
+/// the run is a UsageError naming it; --steps or --t-end may set a new cap) and turns the
+/// checkpoint's options and settings into the resumed run's: the recorded ones with the
+/// new cap and this command line's --checkpoint-every, --plot and logging flags. Whether
+/// the cap lies beyond the checkpoint's state is checked once that state is loaded.
+void resumeSettings(const CLI::App& cli, const Options& given, Checkpoint& c);
+
 }  // namespace ddb::fluid

@@ -2,7 +2,8 @@
 // double-bracket dissipation towards a steady flow, with the command line and files of
 // docs/file-formats.md ("fluid-relax"). Exit status (apps/common/exit_status.h): 2 for
 // bad input, checked in full before anything is written; 1 if a step failed (history.csv
-// keeps every state before it) or a file could not be written.
+// keeps every state before it) or a file could not be written; 130/143 if SIGINT/SIGTERM
+// stopped it (after its step, with outputs and a checkpoint: "Checkpoints" there).
 #include <ddb/integrators/method_table.h>
 #include <ddb/integrators/relax.h>
 #include <ddb/integrators/run.h>
@@ -12,6 +13,9 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
 
 #include "common/atomic_file.h"
 #include "common/cli.h"
@@ -22,6 +26,8 @@
 #include "common/plot.h"
 #include "common/progress.h"
 #include "common/spectrum_drift.h"
+#include "common/stop_signals.h"
+#include "fluid_relax/checkpoint.h"
 #include "fluid_relax/input.h"
 #include "fluid_relax/options.h"
 #include "fluid_relax/outputs.h"
@@ -31,7 +37,35 @@ namespace {
 using namespace ddb;
 using namespace ddb::fluid;
 
-int relax(const Options& o, const Settings& s) {
+// The checkpoint's state as the run's first: a checkpoint that the relaxation cannot read is
+// bad input, and so is a cap the run has already reached.
+void resumeFrom(Checkpoint& c, Relaxation<SUN>& run, const Options& o) {
+  try {
+    run.load(c.relaxation);
+    c.relaxation.expectEnd();
+  } catch (const CorruptRecord& corrupt) {
+    app::usageError(
+        "--resume", o.resume,
+        std::string(kCheckpointFile) + " is corrupt (" + corrupt.what() + "): refusing to use it");
+  }
+  const RelaxState& at = run.state();
+  const bool time_capped = std::isfinite(c.settings.relax.t_end);
+  if (!time_capped && at.k >= c.settings.relax.max_steps) {
+    app::usageError("--resume", o.resume,
+                    fmt::format("the run has taken {} steps, its cap {}; give a larger --steps "
+                                "or --t-end",
+                                at.k, c.settings.relax.max_steps));
+  }
+  if (time_capped && at.t >= c.settings.relax.t_end * (1 - 1e-12)) {
+    app::usageError("--resume", o.resume,
+                    fmt::format("the run has reached t = {}, its cap; give a larger --t-end or "
+                                "--steps",
+                                at.t));
+  }
+}
+
+int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoint* resume) {
+  const auto start = std::chrono::steady_clock::now();
   const Eigen::Index n = s.W0.rows();
   const auto system = makeZeitlinFluid(n, s.alpha);
   const auto& hamiltonian = dynamic_cast<const ZeitlinHamiltonian&>(system->hamiltonian());
@@ -39,17 +73,30 @@ int relax(const Options& o, const Settings& s) {
   const auto method = makeMethod<SUN>(o.method, system);
   // The DDB methods' Legendre solver reports its iterations; rk4 has none.
   const auto* legendre = dynamic_cast<const LegendreMethod<Cayley<SUN>>*>(method.get());
-  app::prepareOutputFolder("--out", o.out, s.out);
+  Relaxation<SUN> run(*method, *system, s.W0, s.h, s.relax);
+  Tally tally;
+  if (resume != nullptr) {
+    resumeFrom(*resume, run, o);
+    tally = resume->tally;
+  }
+  app::prepareOutputFolder(resume != nullptr ? "--resume" : "--out",
+                           resume != nullptr ? o.resume : o.out, s.out);
   // ---- from here on, files are written: failures are exit status 1 ----
 
+  if (resume != nullptr) {
+    spdlog::info("resuming {} at step {}, t = {}", s.out.string(), run.state().k, run.state().t);
+  }
   spdlog::info("N = {}, alpha = {}, {} init{}, {}: {} steps of h = {}{} to t = {}", n, s.alpha,
                s.init, s.init == "file" ? " " + o.init_file : "", o.method, s.steps, s.h,
                s.default_h ? " (default)" : "", static_cast<double>(s.steps) * s.h);
   const app::SpectrumDrift<SUN> spectrumDrift(s.W0);
-  double drift = 0.0, drift_max = 0.0;
-  long iterations_total = 0, iterations_max = 0;
 
-  HistoryCsv history_csv(s.out / "history.csv");
+  std::optional<HistoryCsv> history_csv;
+  if (resume != nullptr) {
+    history_csv.emplace(s.out / "history.csv", resume->history_bytes);
+  } else {
+    history_csv.emplace(s.out / "history.csv");
+  }
   // A row points at the run's current state; the one EveryKth holds back for finish() is
   // the last, which they still point to then.
   // r of each written row (relax() evaluates it only for --until-steady or --adaptive).
@@ -57,99 +104,140 @@ int relax(const Options& o, const Settings& s) {
   auto historyRow = [&](long, double t, const std::pair<const RelaxState*, const Matrix*>& at) {
     const Matrix& W = *at.second;
     rowProbe.evaluate(W);
-    history_csv.write(t, diagnostics.energy(W), diagnostics.enstrophy(W),
-                      diagnostics.commutatorNorm(W), drift, at.first->h, rowProbe.residual());
+    history_csv->write(t, diagnostics.energy(W), diagnostics.enstrophy(W),
+                       diagnostics.commutatorNorm(W), tally.drift, at.first->h,
+                       rowProbe.residual());
   };
   EveryKth<std::pair<const RelaxState*, const Matrix*>, decltype(historyRow)> history(o.every,
                                                                                       historyRow);
 
   const bool watch_energy =
       app::EnergyRises::applies(findMethod(o.method)->keeps_casimirs, s.alpha);
-  app::EnergyRises rises;
   app::Progress progress(o.log.quiet);
   const std::string label = o.method + " N=" + std::to_string(n);
-  const RelaxResult<SUN> run =
-      ddb::relax(*method, *system, s.W0, s.h, s.relax, [&](const RelaxState& at, const Matrix& W) {
-        if (at.k > 0 && legendre != nullptr) {
-          const auto& stats = legendre->legendreSolver().stats();
-          const long iterations = stats.fixed_point + stats.newton;
-          iterations_total += iterations;
-          iterations_max = std::max(iterations_max, iterations);
-        }
-        if (watch_energy) rises.observe(at.k, at.t, at.energy);
-        drift = spectrumDrift(W);
-        drift_max = std::max(drift_max, drift);
-        history(at.k, at.t, {&at, &W});
-        progress.update(label, at.k, s.relax.max_steps, [&] {
-          return fmt::format("E {:.6g}  |[P,W]| {:.3g}  h {:.3g}", at.energy,
-                             diagnostics.commutatorNorm(W), at.h);
-        });
-      });
-  history.finish();
-  history_csv.commit();
+  auto last_checkpoint = std::chrono::steady_clock::now();
+  std::string checkpoint_time = "none yet";
+  const auto observe = [&](const RelaxState& at, const Matrix& W) {
+    if (at.k > 0 && legendre != nullptr) {
+      const auto& stats = legendre->legendreSolver().stats();
+      const long iterations = stats.fixed_point + stats.newton;
+      tally.iterations_total += iterations;
+      tally.iterations_max = std::max(tally.iterations_max, iterations);
+    }
+    if (watch_energy) tally.rises.observe(at.k, at.t, at.energy);
+    tally.drift = spectrumDrift(W);
+    tally.drift_max = std::max(tally.drift_max, tally.drift);
+    history(at.k, at.t, {&at, &W});
+    progress.update(label, at.k, s.relax.max_steps, [&] {
+      return fmt::format("t {:.6g}  E {:.6g}  |[P,W]| {:.3g}  h {:.3g}  checkpoint {}", at.t,
+                         at.energy, diagnostics.commutatorNorm(W), at.h, checkpoint_time);
+    });
+  };
+  const auto checkpoint = [&](std::uint64_t history_bytes) {
+    writeCheckpoint(s.out, o, given, s, tally, history_bytes, 0, run);
+    last_checkpoint = std::chrono::steady_clock::now();
+    checkpoint_time = fmt::format("at step {}", run.state().k);
+  };
+  if (resume == nullptr) {
+    observe(run.state(), run.current());
+  } else if (run.state().k % o.every != 0) {
+    // The checkpoint's state is the last row, held back (its length excludes that row).
+    history(run.state().k, run.state().t, {&run.state(), &run.current()});
+  }
+  app::StopSignals signals;
+  int stopped_by = 0;
+  while (run.advance()) {
+    observe(run.state(), run.current());
+    if ((stopped_by = signals.received()) != 0) {
+      run.interrupt();
+      break;
+    }
+    const bool due = o.checkpoint_every > 0 ? run.state().k % o.checkpoint_every == 0
+                                            : std::chrono::steady_clock::now() - last_checkpoint >=
+                                                  std::chrono::duration<double>(kCheckpointSeconds);
+    if (due) checkpoint(history_csv->sync());
+  }
   progress.clear();
-  rises.warnIfAny(o.method);
+  // The checkpoint of the final state records history.csv without the held-back last row,
+  // which a run resumed from it writes again (or not, if it goes past it).
+  const std::uint64_t history_bytes = history_csv->sync();
+  history.finish();
+  history_csv->commit();
+  checkpoint(history_bytes);
+  tally.rises.warnIfAny(o.method);
 
-  const double commutator_final = diagnostics.commutatorNorm(run.final);
-  const double residual_final = steadyStateResidual(*system, run.final);
+  const RelaxResult<SUN>& result = run.result();
+  const double runtime_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double commutator_final = diagnostics.commutatorNorm(result.final);
+  const double residual_final = steadyStateResidual(*system, result.final);
+  const bool interrupted = result.stop == RelaxStop::kInterrupted;
   app::Json summary;
   summary["version"] = app::projectVersion();
-  summary["status"] = run.ok() ? "ok" : "FAILED";
+  summary["status"] = !result.ok() ? "FAILED" : interrupted ? "interrupted" : "ok";
   summary["n"] = n;
   summary["alpha"] = s.alpha;
   summary["h"] = s.h;
   summary["h_source"] = s.default_h ? "default" : "--h";
-  summary["steps"] = run.last.k;
+  summary["steps"] = result.last.k;
   summary["steps_requested"] = s.steps;
-  summary["t_end"] = run.last.t;
-  summary["stop"] = relaxStopName(run.stop);
-  summary["steady"] = run.steady();
+  summary["t_end"] = result.last.t;
+  summary["stop"] = relaxStopName(result.stop);
+  summary["steady"] = result.steady();
   summary["until_steady"] = s.relax.tolerance > 0 ? app::Json(s.relax.tolerance) : app::Json();
   summary["residual_final"] = residual_final;
   summary["adaptive"] = s.relax.control.adaptive;
   summary["adaptive_tol"] =
       s.relax.control.adaptive ? app::Json(s.relax.control.tolerance) : app::Json();
-  summary["steps_rejected"] = run.steps_rejected;
-  summary["h_final"] = run.last.h;
+  summary["steps_rejected"] = result.steps_rejected;
+  summary["h_final"] = result.last.h;
   summary["every"] = o.every;
   summary["method"] = o.method;
   summary["init"] = s.init;
   summary["seed"] = s.init == "file" ? app::Json() : app::Json(o.seed);
   summary["init_file"] = s.init == "file" ? app::Json(o.init_file) : app::Json();
   summary["energy_initial"] = diagnostics.energy(s.W0);
-  summary["energy_final"] = diagnostics.energy(run.final);
+  summary["energy_final"] = diagnostics.energy(result.final);
   summary["enstrophy_initial"] = diagnostics.enstrophy(s.W0);
-  summary["enstrophy"] = diagnostics.enstrophy(run.final);
-  summary["spectrum_drift_max"] = drift_max;
+  summary["enstrophy"] = diagnostics.enstrophy(result.final);
+  summary["spectrum_drift_max"] = tally.drift_max;
   summary["commutator_initial"] = diagnostics.commutatorNorm(s.W0);
   summary["commutator_final"] = commutator_final;
-  summary["runtime_s"] = run.runtime_s;
+  summary["runtime_s"] = runtime_s;
   summary["iterations_mean"] =
-      run.last.k > 0 ? static_cast<double>(iterations_total) / run.last.k : 0.0;
-  summary["iterations_max"] = iterations_max;
-  if (watch_energy) summary["energy_rises"] = rises.count();
-  if (!run.ok()) {
+      result.last.k > 0 ? static_cast<double>(tally.iterations_total) / result.last.k : 0.0;
+  summary["iterations_max"] = tally.iterations_max;
+  if (watch_energy) summary["energy_rises"] = tally.rises.count();
+  if (!result.ok()) {
     // A failed run writes no final state: W_final.csv and omega_final.csv would claim a
     // time the run did not reach (docs/file-formats.md).
-    summary["failed_step"] = run.failed_step;
-    summary["failure"] = run.failure;
+    summary["failed_step"] = result.failed_step;
+    summary["failure"] = result.failure;
     app::writeJsonFile(s.out / "summary.json", summary);
-    spdlog::error("{}", run.failure);
-    spdlog::error("history.csv holds the {} steps before the failure; wrote {}", run.last.k,
+    spdlog::error("{}", result.failure);
+    spdlog::error("history.csv holds the {} steps before the failure; wrote {}", result.last.k,
                   s.out.string());
     return app::kExitFailed;
   }
-  writeMatrixCsv(s.out / "W_final.csv", run.final);
+  writeMatrixCsv(s.out / "W_final.csv", result.final);
   const SphericalHarmonicBasis basis(hamiltonian.laplacian());
   writeOmegaCsv(s.out / "omega_initial.csv", basis, s.W0);
-  writeOmegaCsv(s.out / "omega_final.csv", basis, run.final);
+  writeOmegaCsv(s.out / "omega_final.csv", basis, result.final);
   app::writeJsonFile(s.out / "summary.json", summary);
+  if (interrupted) {
+    spdlog::warn(
+        "stopped by {} after step {} (t = {}): wrote the outputs and a checkpoint to {}; "
+        "continue with: fluid-relax --resume {}",
+        app::StopSignals::name(stopped_by), result.last.k, result.last.t, s.out.string(),
+        s.out.string());
+    return app::StopSignals::exitStatus(stopped_by);
+  }
   spdlog::info(
       "{} at step {}, t = {} ({} rejected): E {} -> {}, |[P,W]| {} -> {}, r {:.3g}, spectrum "
       "drift <= {:.2e}, {:.3g} s; wrote {}",
-      relaxStopName(run.stop), run.last.k, run.last.t, run.steps_rejected, diagnostics.energy(s.W0),
-      diagnostics.energy(run.final), diagnostics.commutatorNorm(s.W0), commutator_final,
-      residual_final, drift_max, run.runtime_s, s.out.string());
+      relaxStopName(result.stop), result.last.k, result.last.t, result.steps_rejected,
+      diagnostics.energy(s.W0), diagnostics.energy(result.final), diagnostics.commutatorNorm(s.W0),
+      commutator_final, residual_final, tally.drift_max, runtime_s, s.out.string());
   return app::kExitOk;
 }
 
@@ -159,10 +247,20 @@ int runRelax(int argc, char** argv) {
   addOptions(cli, o);
   if (const auto status = app::parseCommandLine(cli, argc, argv)) return *status;
   app::setupLogging(o.log);
-  const Settings s = settings(cli, o);
-  const int status = relax(o, s);
-  if (o.plot && status == app::kExitOk) return app::runPlotScript(DDB_PLOT_SCRIPT, s.out);
-  if (o.plot) spdlog::error("no figures: the run failed");
+  int status = 0;
+  std::filesystem::path out;
+  if (!o.resume.empty()) {
+    Checkpoint c = readCheckpoint(o.resume);
+    resumeSettings(cli, o, c);
+    out = c.settings.out;
+    status = relax(c.options, c.settings, c.given, &c);
+  } else {
+    const Settings s = settings(cli, o);
+    out = s.out;
+    status = relax(o, s, givenFlags(cli), nullptr);
+  }
+  if (o.plot && status == app::kExitOk) return app::runPlotScript(DDB_PLOT_SCRIPT, out);
+  if (o.plot && status == app::kExitFailed) spdlog::error("no figures: the run failed");
   return status;
 }
 

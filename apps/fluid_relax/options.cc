@@ -51,6 +51,13 @@ void addOptions(CLI::App& cli, Options& o) {
   cli.add_option("--every", o.every, "write every K-th state and the last one to history.csv")
       ->capture_default_str();
   cli.add_option("--out", o.out, "output folder")->capture_default_str();
+  cli.add_option("--checkpoint-every", o.checkpoint_every,
+                 "write OUT/checkpoint.ddb every K accepted steps (default: every " +
+                     app::number(kCheckpointSeconds) +
+                     " s of wall time), and always at the end of the run");
+  cli.add_option("--resume", o.resume,
+                 "continue the run in DIR from its checkpoint, to the bit as if never stopped, "
+                 "with its recorded settings; --steps or --t-end may set a new cap");
   cli.add_flag("--plot", o.plot, "render PNG figures (python3 with matplotlib and scipy)");
   app::addLogFlags(cli, o.log);
   app::addVersionFlag(cli, kApp);
@@ -59,8 +66,9 @@ void addOptions(CLI::App& cli, Options& o) {
       app::describeChoices(app::initDescriptions()) + "\nMethods (--method):\n" +
       app::describeChoices(fluidMethods()) +
       "\nFiles in --out: history.csv, W_final.csv, omega_initial.csv, omega_final.csv, "
-      "summary.json\n(docs/file-formats.md).\nExit status: 0 ok, 1 a step failed or a "
-      "file could not be written, 2 bad input (nothing written).\n");
+      "summary.json, checkpoint.ddb\n(docs/file-formats.md).\nExit status: 0 ok, 1 a step "
+      "failed or a file could not be written, 2 bad input (nothing written), 130/143 stopped "
+      "by SIGINT/SIGTERM (outputs and a checkpoint written; --resume continues).\n");
 }
 
 }  // namespace ddb::fluid

@@ -22,6 +22,9 @@ constexpr long kMaxSteps = 1000000000L;
 // Default step: h = kStepFactor·ħ/‖P₀‖₂, the fixed point's contraction rate h‖P‖₂/ħ of
 // docs/conventions.md §2 kept small, so that a Legendre solve takes a few iterations.
 constexpr double kStepFactor = 0.02;
+// Without --checkpoint-every, a checkpoint after the first step that ends this long after
+// the last one: a killed run loses at most about this much work.
+constexpr double kCheckpointSeconds = 300.0;
 
 /// The methods for the fluid: every entry of the method table for matrix groups but the
 /// dense reference, with the table's descriptions.
@@ -34,6 +37,8 @@ struct Options {
   std::string alpha = "0.5", h, t_end, init = "random", init_file, method = "ddb-cay";
   std::string until_steady, adaptive_tol;  // numbers as text; empty: not given
   std::string out = "results-fluid";
+  long checkpoint_every = 0;  // steps; 0: every kCheckpointSeconds of wall time
+  std::string resume;         // the run folder to resume, or empty
   bool plot = false, adaptive = false;
   app::LogFlags log;
 };

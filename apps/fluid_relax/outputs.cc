@@ -6,6 +6,9 @@ HistoryCsv::HistoryCsv(const std::filesystem::path& path) : file_(path), row_(7)
   file_.write("t,energy,enstrophy,commutator_norm,spectrum_drift,h,residual\n");
 }
 
+HistoryCsv::HistoryCsv(const std::filesystem::path& path, std::uint64_t length)
+    : file_(path, length), row_(7) {}
+
 void HistoryCsv::write(double t, double energy, double enstrophy, double commutator_norm,
                        double spectrum_drift, double h, double residual) {
   row_.put(t);

@@ -1,29 +1,37 @@
 // fluid-relax's CSV files (docs/file-formats.md, "fluid-relax"): history.csv as the run
-// goes, W_final.csv in the layout of --init-file, omega_initial.csv and omega_final.csv.
+// goes (continued by a resumed run), W_final.csv in the layout of --init-file, omega_initial.csv
+// and omega_final.csv.
 #pragma once
 
 #include <ddb/systems/spherical_harmonic_basis.h>
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <filesystem>
 
 #include "common/atomic_file.h"
 #include "common/csv_row.h"
+#include "common/journal_file.h"
 
 namespace ddb::fluid {
 
-/// history.csv: one row per written state, appended as the run goes.
+/// history.csv: one row per written state, appended as the run goes (a JournalFile, which a
+/// resumed run continues).
 class HistoryCsv {
  public:
-  /// Creates the file (through AtomicFile) with its header.
+  /// Creates the file with its header.
   explicit HistoryCsv(const std::filesystem::path& path);
+  /// Continues the file of a resumed run from the `length` bytes its checkpoint recorded.
+  HistoryCsv(const std::filesystem::path& path, std::uint64_t length);
   void write(double t, double energy, double enstrophy, double commutator_norm,
              double spectrum_drift, double h, double residual);
-  /// Completes the file under its name (AtomicFile::commit).
+  /// Makes the rows written durable; returns the file's length (for a checkpoint).
+  std::uint64_t sync() { return file_.sync(); }
+  /// Completes the file under its name (JournalFile::commit).
   void commit() { file_.commit(); }
 
  private:
-  app::AtomicFile file_;
+  app::JournalFile file_;
   app::CsvRow row_;
 };
 

@@ -1,0 +1,159 @@
+#include "fluid_relax/checkpoint.h"
+
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+#include "common/atomic_file.h"
+#include "common/cli.h"
+#include "common/exit_status.h"
+
+namespace ddb::fluid {
+
+namespace {
+
+// The layout's version: a checkpoint of another layout is refused, not misread.
+constexpr std::int32_t kLayout = 1;
+constexpr const char* kTag = "fluid-relax checkpoint";
+
+void putOptions(BinaryRecordWriter& out, const Options& o) {
+  out.tag("options");
+  out.put(o.n);
+  out.put(o.steps);
+  out.put(o.every);
+  out.put(o.seed);
+  for (const std::string* text : {&o.alpha, &o.h, &o.t_end, &o.init, &o.init_file, &o.method,
+                                  &o.until_steady, &o.adaptive_tol}) {
+    out.put(*text);
+  }
+  out.put(o.adaptive);
+}
+
+void getOptions(BinaryRecordReader& in, Options& o) {
+  in.expectTag("options");
+  in.get(o.n);
+  in.get(o.steps);
+  in.get(o.every);
+  in.get(o.seed);
+  for (std::string* text : {&o.alpha, &o.h, &o.t_end, &o.init, &o.init_file, &o.method,
+                            &o.until_steady, &o.adaptive_tol}) {
+    in.get(*text);
+  }
+  in.get(o.adaptive);
+}
+
+void putSettings(BinaryRecordWriter& out, const Settings& s) {
+  out.tag("settings");
+  out.put(s.W0);
+  out.put(s.alpha);
+  out.put(s.h);
+  out.put(s.default_h);
+  out.put(s.steps);
+  out.put(s.relax.tolerance);
+  out.put(s.relax.max_steps);
+  out.put(s.relax.t_end);
+  out.put(s.relax.control.adaptive);
+  out.put(s.relax.control.tolerance);
+  out.put(s.init);
+}
+
+void getSettings(BinaryRecordReader& in, Settings& s) {
+  in.expectTag("settings");
+  in.get(s.W0);
+  in.get(s.alpha);
+  in.get(s.h);
+  in.get(s.default_h);
+  in.get(s.steps);
+  in.get(s.relax.tolerance);
+  in.get(s.relax.max_steps);
+  in.get(s.relax.t_end);
+  in.get(s.relax.control.adaptive);
+  in.get(s.relax.control.tolerance);
+  in.get(s.init);
+  if (s.W0.rows() < 2 || s.W0.rows() != s.W0.cols() || !(s.h > 0)) {
+    throw CorruptRecord("settings out of their domain");
+  }
+}
+
+}  // namespace
+
+GivenFlags givenFlags(const CLI::App& cli) {
+  GivenFlags given;
+  for (const CLI::Option* option : cli.get_options()) {
+    // The folder is not part of the run: a checkpoint is the same in any folder.
+    if (option->count() == 0 || option->get_name() == "--out") continue;
+    std::string text;
+    for (const std::string& result : option->results()) text += (text.empty() ? "" : ",") + result;
+    given[option->get_name()] = text;
+  }
+  return given;
+}
+
+void writeCheckpoint(const std::filesystem::path& out, const Options& o, const GivenFlags& given,
+                     const Settings& s, const Tally& tally, std::uint64_t history_bytes,
+                     std::int64_t h5_frames, const Relaxation<SUN>& relaxation) {
+  BinaryRecordWriter record;
+  record.tag(kTag);
+  record.put(kLayout);
+  putOptions(record, o);
+  record.tag("given flags");
+  record.put(static_cast<std::uint64_t>(given.size()));
+  for (const auto& [flag, text] : given) {
+    record.put(flag);
+    record.put(text);
+  }
+  putSettings(record, s);
+  record.tag("tally");
+  record.put(tally.drift);
+  record.put(tally.drift_max);
+  record.put(tally.iterations_total);
+  record.put(tally.iterations_max);
+  tally.rises.save(record);
+  record.tag("files");
+  record.put(history_bytes);
+  record.put(h5_frames);
+  relaxation.save(record);
+  app::writeFileAtomically(out / kCheckpointFile, record.sealed());
+}
+
+Checkpoint readCheckpoint(const std::string& dir) {
+  const std::filesystem::path path = std::filesystem::path(dir) / kCheckpointFile;
+  std::ifstream file(path, std::ios::binary);
+  if (!file) app::usageError("--resume", dir, "no checkpoint to resume from: " + path.string());
+  std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  if (file.bad()) app::usageError("--resume", dir, "cannot read " + path.string());
+  Checkpoint c;
+  try {
+    BinaryRecordReader in = BinaryRecordReader::unseal(std::move(bytes));
+    in.expectTag(kTag);
+    const auto layout = in.get<std::int32_t>();
+    if (layout != kLayout) {
+      throw CorruptRecord("layout " + std::to_string(layout) + ", this build reads " +
+                          std::to_string(kLayout));
+    }
+    getOptions(in, c.options);
+    in.expectTag("given flags");
+    const auto count = in.get<std::uint64_t>();
+    for (std::uint64_t i = 0; i < count; ++i) {
+      std::string flag = in.get<std::string>();
+      c.given[flag] = in.get<std::string>();
+    }
+    getSettings(in, c.settings);
+    in.expectTag("tally");
+    in.get(c.tally.drift);
+    in.get(c.tally.drift_max);
+    in.get(c.tally.iterations_total);
+    in.get(c.tally.iterations_max);
+    c.tally.rises.load(in);
+    in.expectTag("files");
+    in.get(c.history_bytes);
+    in.get(c.h5_frames);
+    c.relaxation = std::move(in);
+  } catch (const CorruptRecord& corrupt) {
+    app::usageError("--resume", dir,
+                    path.string() + " is corrupt (" + corrupt.what() + "): refusing to use it");
+  }
+  return c;
+}
+
+}  // namespace ddb::fluid

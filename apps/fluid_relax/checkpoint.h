@@ -1,0 +1,58 @@
+// fluid-relax's checkpoints (docs/file-formats.md, "Checkpoints"): OUT/checkpoint.ddb, one
+// checksummed BinaryRecord (core/binary_record.h) written atomically (AtomicFile: a
+// temporary, fsync, rename), holding everything a resumed run needs to continue the
+// uninterrupted one to the bit: the command line as given, the validated settings (W₀
+// included, so that a changed --init-file cannot change a resumed run), what the summary
+// accumulates, the lengths of the files that grow (history.csv), and the relaxation's
+// cursor with the method's warm start (Relaxation::save).
+#pragma once
+
+#include <ddb/core/binary_record.h>
+#include <ddb/groups/sun.h>
+#include <ddb/integrators/relax.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "common/energy_rises.h"
+#include "fluid_relax/input.h"
+#include "fluid_relax/options.h"
+
+namespace ddb::fluid {
+
+constexpr const char* kCheckpointFile = "checkpoint.ddb";
+
+/// The flags of a command line as given: name → value text ("" for a flag without one).
+using GivenFlags = std::map<std::string, std::string>;
+GivenFlags givenFlags(const CLI::App& cli);
+
+/// What summary.json accumulates over every step.
+struct Tally {
+  double drift = 0.0, drift_max = 0.0;  // spectrum drift of the last state, the largest
+  long iterations_total = 0, iterations_max = 0;
+  app::EnergyRises rises;
+};
+
+/// A checkpoint as read back; `relaxation` is positioned at the relaxation's record.
+struct Checkpoint {
+  Options options;
+  GivenFlags given;
+  Settings settings;
+  Tally tally;
+  std::uint64_t history_bytes = 0;  // history.csv's rows up to the checkpoint's state
+  std::int64_t h5_frames = 0;       // fluid.h5's frames likewise
+  BinaryRecordReader relaxation{""};
+};
+
+/// Writes OUT/checkpoint.ddb atomically; throws IoError naming it.
+void writeCheckpoint(const std::filesystem::path& out, const Options& o, const GivenFlags& given,
+                     const Settings& s, const Tally& tally, std::uint64_t history_bytes,
+                     std::int64_t h5_frames, const Relaxation<SUN>& relaxation);
+
+/// Reads DIR/checkpoint.ddb for `--resume DIR`; a missing, unreadable, truncated or
+/// corrupted one (its checksum) is a UsageError naming --resume and the file.
+Checkpoint readCheckpoint(const std::string& dir);
+
+}  // namespace ddb::fluid

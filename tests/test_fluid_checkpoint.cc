@@ -1,0 +1,189 @@
+// fluid-relax's checkpoints, --resume and stop signals (docs/file-formats.md,
+// "Checkpoints"). The reference is the uninterrupted run: a run killed with SIGKILL at
+// whatever step it reached, or stopped by SIGINT/SIGTERM, and resumed, must end with
+// history.csv, W_final.csv, the ω files and summary.json (runtime_s aside) byte-identical
+// to it; so must a finished run extended by --resume --steps. A checkpoint that is
+// corrupted or truncated, a flag that would change the run and a cap already reached are
+// refused with exit status 2, and nothing in the folder changes.
+#include <gmock/gmock.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "app_test_support.h"
+
+namespace {
+
+using namespace ddb::test;
+
+const std::vector<std::string> kOutputs{"history.csv", "W_final.csv", "omega_initial.csv",
+                                        "omega_final.csv"};
+// N = 12 from a seeded random vorticity, rows every 7 steps (so that runs end on held-back
+// rows) and a checkpoint every 50.
+const std::string kRun = "--quiet --n 12 --seed 4 --every 7 --checkpoint-every 50";
+
+fs::path freshFolder(const std::string& name) {
+  return ddb::test::freshFolder("fluid_checkpoint_test_", name);
+}
+
+AppResult run(const std::string& arguments) { return runProgram(FLUID_RELAX_PATH, arguments); }
+
+/// summary.json without its one wall-clock field.
+nlohmann::ordered_json summaryOf(const fs::path& out) {
+  nlohmann::ordered_json summary = readJson(out / "summary.json");
+  summary.erase("runtime_s");
+  return summary;
+}
+
+void expectSameOutputs(const fs::path& expected, const fs::path& found) {
+  for (const std::string& name : kOutputs) {
+    EXPECT_EQ(readFile(found / name), readFile(expected / name)) << name;
+  }
+  EXPECT_EQ(summaryOf(found), summaryOf(expected));
+}
+
+/// Starts fluid-relax with `arguments` (output discarded), waits until it has written a
+/// checkpoint, and sends `signal`; returns its exit status (-signal if killed by it).
+int startAndSignal(const std::string& arguments, const fs::path& out, int signal) {
+  std::vector<std::string> words{FLUID_RELAX_PATH};
+  std::stringstream ss(arguments + " --out " + out.string());
+  for (std::string word; ss >> word;) words.push_back(word);
+  std::vector<char*> argv;
+  for (auto& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    std::FILE* null = std::fopen("/dev/null", "w");
+    if (null != nullptr) ::dup2(::fileno(null), STDERR_FILENO);
+    ::alarm(120);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(out / "checkpoint.ddb") && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ::kill(child, signal);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
+}
+
+class Checkpoint : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    reference_ = new fs::path(freshFolder("reference"));
+    ASSERT_EQ(run(kRun + " --steps 4000 --out " + reference_->string()).status, 0);
+  }
+  static void TearDownTestSuite() {
+    delete reference_;
+    reference_ = nullptr;
+  }
+  static fs::path* reference_;
+};
+fs::path* Checkpoint::reference_ = nullptr;
+
+TEST_F(Checkpoint, AKilledRunResumesToTheByte) {
+  const fs::path out = freshFolder("killed");
+  // Killed right after its first checkpoint appears: at some step past 50, mid-run.
+  ASSERT_EQ(startAndSignal(kRun + " --steps 4000", out, SIGKILL), -SIGKILL);
+  ASSERT_FALSE(fs::exists(out / "summary.json")) << "the run finished before the kill";
+  EXPECT_TRUE(fs::exists(out / "history.csv.partial"));
+  const AppResult resumed = run("--quiet --resume " + out.string());
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  expectSameOutputs(*reference_, out);
+  EXPECT_FALSE(fs::exists(out / "history.csv.partial"));
+}
+
+TEST_F(Checkpoint, SigintAndSigtermStopAfterTheStepWithOutputsAndResume) {
+  for (const int signal : {SIGINT, SIGTERM}) {
+    const fs::path out = freshFolder(signal == SIGINT ? "sigint" : "sigterm");
+    ASSERT_EQ(startAndSignal(kRun + " --steps 4000", out, signal), 128 + signal);
+    const auto summary = readJson(out / "summary.json");
+    EXPECT_EQ(summary["status"], "interrupted");
+    EXPECT_EQ(summary["stop"], "interrupted");
+    EXPECT_LT(summary["steps"].get<long>(), 4000);
+    for (const std::string& name : kOutputs) EXPECT_TRUE(fs::exists(out / name)) << name;
+    const AppResult resumed = run("--quiet --resume " + out.string());
+    ASSERT_EQ(resumed.status, 0) << resumed.output;
+    expectSameOutputs(*reference_, out);
+  }
+}
+
+TEST_F(Checkpoint, AFinishedRunExtendedByResumeIsTheLongerRun) {
+  const fs::path out = freshFolder("extended");
+  ASSERT_EQ(run(kRun + " --steps 1500 --out " + out.string()).status, 0);
+  const AppResult extended = run("--quiet --resume " + out.string() + " --steps 4000");
+  ASSERT_EQ(extended.status, 0) << extended.output;
+  expectSameOutputs(*reference_, out);
+}
+
+TEST_F(Checkpoint, AnAdaptiveRunKilledAndResumedIsTheUninterruptedOne) {
+  const std::string adaptive = kRun + " --adaptive --steps 5000 --h 0.5";
+  const fs::path whole = freshFolder("adaptive_whole"), out = freshFolder("adaptive_killed");
+  ASSERT_EQ(run(adaptive + " --out " + whole.string()).status, 0);
+  ASSERT_GT(readJson(whole / "summary.json")["steps_rejected"].get<long>(), 0);
+  ASSERT_EQ(startAndSignal(adaptive, out, SIGKILL), -SIGKILL);
+  ASSERT_FALSE(fs::exists(out / "summary.json")) << "the run finished before the kill";
+  ASSERT_EQ(run("--quiet --resume " + out.string()).status, 0);
+  expectSameOutputs(whole, out);
+}
+
+/// The folder's files and their bytes.
+std::map<std::string, std::string> contentsOf(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    files[entry.path().filename().string()] = readFile(entry.path());
+  }
+  return files;
+}
+
+TEST_F(Checkpoint, RefusesACorruptCheckpointAFlagThatChangesTheRunAndAReachedCap) {
+  const fs::path out = freshFolder("refusals");
+  ASSERT_EQ(run(kRun + " --steps 120 --out " + out.string()).status, 0);
+  const auto before = contentsOf(out);
+  const auto refused = [&](const std::string& arguments, const std::string& message) {
+    const AppResult r = run("--quiet --resume " + out.string() + " " + arguments);
+    EXPECT_EQ(r.status, 2) << arguments << "\n" << r.output;
+    EXPECT_THAT(r.error, ::testing::HasSubstr(message)) << arguments;
+    EXPECT_EQ(contentsOf(out), before) << arguments << ": the folder changed";
+  };
+  refused("--steps 200 --alpha 0.7", "--alpha = 0.7: a resumed run keeps its settings");
+  refused("--steps 200 --method sddb-cay", "--method = sddb-cay");
+  refused("--steps 200 --every 3", "--every = 3");
+  refused("", "the run has taken 120 steps, its cap 120");
+  refused("--steps 100", "the run has taken 120 steps");
+  refused("--steps 200 --t-end 9", "--steps, --t-end");
+  refused("--steps 200 --out " + out.string() + "_other", "--out");
+  // The same values as the run's are no change.
+  EXPECT_EQ(run("--quiet --resume " + out.string() + " --steps 121 --n 12 --alpha 0.5 --every 7 " +
+                "--out " + out.string())
+                .status,
+            0);
+
+  std::string bytes = readFile(out / "checkpoint.ddb");
+  const auto corrupt = [&](const std::string& content) {
+    std::ofstream(out / "checkpoint.ddb", std::ios::binary) << content;
+    const auto now = contentsOf(out);
+    const AppResult r = run("--quiet --resume " + out.string() + " --steps 300");
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_THAT(r.error, ::testing::HasSubstr("is corrupt"));
+    EXPECT_EQ(contentsOf(out), now) << "the folder changed";
+  };
+  std::string flipped = bytes;
+  flipped[flipped.size() / 2] = static_cast<char>(flipped[flipped.size() / 2] ^ 0x01);
+  corrupt(flipped);
+  corrupt(bytes.substr(0, bytes.size() / 3));
+  corrupt("");
+  const AppResult missing = run("--quiet --resume " + out.string() + "_missing --steps 300");
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_THAT(missing.error, ::testing::HasSubstr("no checkpoint to resume from"));
+  EXPECT_FALSE(fs::exists(out.string() + "_missing"));
+}
+
+}  // namespace
