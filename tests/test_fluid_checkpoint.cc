@@ -48,8 +48,9 @@ void expectSameOutputs(const fs::path& expected, const fs::path& found) {
 }
 
 /// Starts fluid-relax with `arguments` (output discarded), waits until it has written a
-/// checkpoint, and sends `signal`; returns its exit status (-signal if killed by it).
-int startAndSignal(const std::string& arguments, const fs::path& out, int signal) {
+/// checkpoint, and sends `signal` (`times` times in a row); returns its exit status
+/// (-signal if killed by it).
+int startAndSignal(const std::string& arguments, const fs::path& out, int signal, int times = 1) {
   std::vector<std::string> words{FLUID_RELAX_PATH};
   std::stringstream ss(arguments + " --out " + out.string());
   for (std::string word; ss >> word;) words.push_back(word);
@@ -68,7 +69,7 @@ int startAndSignal(const std::string& arguments, const fs::path& out, int signal
   while (!fs::exists(out / "checkpoint.ddb") && std::chrono::steady_clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
-  ::kill(child, signal);
+  for (int i = 0; i < times; ++i) ::kill(child, signal);
   int status = 0;
   ::waitpid(child, &status, 0);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
@@ -113,6 +114,14 @@ TEST_F(Checkpoint, SigintAndSigtermStopAfterTheStepWithOutputsAndResume) {
     ASSERT_EQ(resumed.status, 0) << resumed.output;
     expectSameOutputs(*reference_, out);
   }
+}
+
+TEST_F(Checkpoint, ASecondSigintExitsAtOnceAndTheLastCheckpointStaysGood) {
+  const fs::path out = freshFolder("sigint_twice");
+  ASSERT_EQ(startAndSignal(kRun + " --steps 4000", out, SIGINT, 2), 130);
+  const AppResult resumed = run("--quiet --resume " + out.string());
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  expectSameOutputs(*reference_, out);
 }
 
 TEST_F(Checkpoint, AFinishedRunExtendedByResumeIsTheLongerRun) {

@@ -117,6 +117,7 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   const std::string label = o.method + " N=" + std::to_string(n);
   auto last_checkpoint = std::chrono::steady_clock::now();
   std::string checkpoint_time = "none yet";
+  long checkpointed_at = -1;  // the step of the last checkpoint
   const auto observe = [&](const RelaxState& at, const Matrix& W) {
     if (at.k > 0 && legendre != nullptr) {
       const auto& stats = legendre->legendreSolver().stats();
@@ -134,9 +135,14 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
     });
   };
   const auto checkpoint = [&](std::uint64_t history_bytes) {
+    const auto begin = std::chrono::steady_clock::now();
     writeCheckpoint(s.out, o, given, s, tally, history_bytes, 0, run);
     last_checkpoint = std::chrono::steady_clock::now();
     checkpoint_time = fmt::format("at step {}", run.state().k);
+    checkpointed_at = run.state().k;
+    spdlog::debug("checkpoint at step {}: {} bytes in {:.3f} s", run.state().k,
+                  std::filesystem::file_size(s.out / kCheckpointFile),
+                  std::chrono::duration<double>(last_checkpoint - begin).count());
   };
   if (resume == nullptr) {
     observe(run.state(), run.current());
@@ -163,7 +169,7 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   const std::uint64_t history_bytes = history_csv->sync();
   history.finish();
   history_csv->commit();
-  checkpoint(history_bytes);
+  if (checkpointed_at != run.state().k) checkpoint(history_bytes);
   tally.rises.warnIfAny(o.method);
 
   const RelaxResult<SUN>& result = run.result();
