@@ -12,6 +12,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "common/atomic_file.h"
 #include "common/cli.h"
@@ -22,6 +23,7 @@
 #include "common/plot.h"
 #include "common/progress.h"
 #include "common/spectrum_drift.h"
+#include "fluid_relax/fluid_h5.h"
 #include "fluid_relax/input.h"
 #include "fluid_relax/options.h"
 #include "fluid_relax/outputs.h"
@@ -50,15 +52,22 @@ int relax(const Options& o, const Settings& s) {
   long iterations_total = 0, iterations_max = 0;
 
   HistoryCsv history_csv(s.out / "history.csv");
+  const SphericalHarmonicBasis basis(hamiltonian.laplacian());
+  std::optional<FluidH5> h5;  // --h5: every history row's state, too
+  if (o.h5 || o.animate) {
+    h5 = FluidH5::create(s.out / kFluidH5, h5Attributes(o, s, hamiltonian.hbar()));
+  }
   // A row points at the run's current state; the one EveryKth holds back for finish() is
   // the last, which they still point to then.
   // r of each written row (relax() evaluates it only for --until-steady or --adaptive).
   SteadyStateProbe<SUN> rowProbe(*system);
-  auto historyRow = [&](long, double t, const std::pair<const RelaxState*, const Matrix*>& at) {
+  auto historyRow = [&](long k, double t, const std::pair<const RelaxState*, const Matrix*>& at) {
     const Matrix& W = *at.second;
     rowProbe.evaluate(W);
-    history_csv.write(t, diagnostics.energy(W), diagnostics.enstrophy(W),
-                      diagnostics.commutatorNorm(W), drift, at.first->h, rowProbe.residual());
+    const double energy = diagnostics.energy(W), enstrophy = diagnostics.enstrophy(W),
+                 commutator = diagnostics.commutatorNorm(W);
+    history_csv.write(t, energy, enstrophy, commutator, drift, at.first->h, rowProbe.residual());
+    if (h5) h5->append({k, t, W, basis.coefficients(W), energy, enstrophy, commutator, drift});
   };
   EveryKth<std::pair<const RelaxState*, const Matrix*>, decltype(historyRow)> history(o.every,
                                                                                       historyRow);
@@ -87,6 +96,7 @@ int relax(const Options& o, const Settings& s) {
       });
   history.finish();
   history_csv.commit();
+  if (h5) h5->flush();
   progress.clear();
   rises.warnIfAny(o.method);
 
@@ -140,7 +150,6 @@ int relax(const Options& o, const Settings& s) {
     return app::kExitFailed;
   }
   writeMatrixCsv(s.out / "W_final.csv", run.final);
-  const SphericalHarmonicBasis basis(hamiltonian.laplacian());
   writeOmegaCsv(s.out / "omega_initial.csv", basis, s.W0);
   writeOmegaCsv(s.out / "omega_final.csv", basis, run.final);
   app::writeJsonFile(s.out / "summary.json", summary);
@@ -161,9 +170,17 @@ int runRelax(int argc, char** argv) {
   app::setupLogging(o.log);
   const Settings s = settings(cli, o);
   const int status = relax(o, s);
-  if (o.plot && status == app::kExitOk) return app::runPlotScript(DDB_PLOT_SCRIPT, s.out);
-  if (o.plot) spdlog::error("no figures: the run failed");
-  return status;
+  if (status != app::kExitOk) {
+    if (o.plot || o.animate) spdlog::error("no figures: the run failed");
+    return status;
+  }
+  int figures = app::kExitOk;
+  if (o.animate) {
+    figures = app::runPlotScript(DDB_ANIMATE_SCRIPT,
+                                 {(s.out / kFluidH5).string(), (s.out / "fluid.mp4").string()});
+  }
+  if (o.plot) figures = std::max(figures, app::runPlotScript(DDB_PLOT_SCRIPT, s.out));
+  return figures;
 }
 
 }  // namespace

@@ -35,6 +35,7 @@ struct Options {
   std::string until_steady, adaptive_tol;  // numbers as text; empty: not given
   std::string out = "results-fluid";
   bool plot = false, adaptive = false;
+  bool h5 = false, animate = false;  // fluid.hdf5; its animation (implies h5)
   app::LogFlags log;
 };
 
