@@ -5,7 +5,8 @@ set -euo pipefail
 packages=(cmake g++ make libeigen3-dev libceres-dev libspdlog-dev libgtest-dev libgmock-dev
           libbenchmark-dev libboost-dev libcli11-dev libopenblas-dev liblapacke-dev
           nlohmann-json3-dev python3-matplotlib python3-scipy locales-all
-          pybind11-dev python3-dev python3-numpy python3-pytest)
+          pybind11-dev python3-dev python3-numpy python3-pytest
+          libhdf5-dev python3-h5py ffmpeg)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -62,6 +62,11 @@ std::string pythonInterpreter() { return DDB_PYTHON3; }
 
 std::string plotFailure(const std::string& interpreter, const std::string& script,
                         const std::filesystem::path& out) {
+  return plotFailure(interpreter, script, std::vector<std::string>{out.string()});
+}
+
+std::string plotFailure(const std::string& interpreter, const std::string& script,
+                        const std::vector<std::string>& arguments) {
   Pipe errors;
   if (::pipe(errors.fd) != 0) return std::string("cannot create a pipe: ") + std::strerror(errno);
   posix_spawn_file_actions_t actions;
@@ -69,7 +74,8 @@ std::string plotFailure(const std::string& interpreter, const std::string& scrip
   posix_spawn_file_actions_adddup2(&actions, errors.fd[1], STDERR_FILENO);
   posix_spawn_file_actions_addclose(&actions, errors.fd[0]);
   posix_spawn_file_actions_addclose(&actions, errors.fd[1]);
-  std::string words[] = {interpreter, script, out.string()};
+  std::vector<std::string> words{interpreter, script};
+  words.insert(words.end(), arguments.begin(), arguments.end());
   std::vector<char*> argv;
   for (auto& word : words) argv.push_back(word.data());
   argv.push_back(nullptr);
@@ -105,9 +111,13 @@ std::string plotFailure(const std::string& interpreter, const std::string& scrip
 }
 
 int runPlotScript(const std::string& script, const std::filesystem::path& out) {
+  return runPlotScript(script, std::vector<std::string>{out.string()});
+}
+
+int runPlotScript(const std::string& script, const std::vector<std::string>& arguments) {
   const std::string interpreter = pythonInterpreter();
-  spdlog::info("plotting: {} {} {}", interpreter, script, out.string());
-  const std::string failure = plotFailure(interpreter, script, out);
+  spdlog::info("plotting: {} {} {}", interpreter, script, fmt::join(arguments, " "));
+  const std::string failure = plotFailure(interpreter, script, arguments);
   if (failure.empty()) return kExitOk;
   spdlog::error("plotting failed: {}", failure);
   return kExitFailed;

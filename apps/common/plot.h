@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace ddb::app {
 
@@ -19,8 +20,16 @@ std::string pythonInterpreter();
 std::string plotFailure(const std::string& interpreter, const std::string& script,
                         const std::filesystem::path& out);
 
+/// plotFailure() with the arguments `interpreter script arguments...`.
+std::string plotFailure(const std::string& interpreter, const std::string& script,
+                        const std::vector<std::string>& arguments);
+
 /// plotFailure() with pythonInterpreter(); returns kExitOk, or logs the failure and
 /// returns kExitFailed.
 int runPlotScript(const std::string& script, const std::filesystem::path& out);
+
+/// runPlotScript() with the arguments `script arguments...` (scripts/animate_fluid.py's
+/// input file and output video).
+int runPlotScript(const std::string& script, const std::vector<std::string>& arguments);
 
 }  // namespace ddb::app

@@ -27,6 +27,8 @@ void putOptions(BinaryRecordWriter& out, const Options& o) {
     out.put(*text);
   }
   out.put(o.adaptive);
+  out.put(o.h5);
+  out.put(o.animate);
 }
 
 void getOptions(BinaryRecordReader& in, Options& o) {
@@ -40,6 +42,8 @@ void getOptions(BinaryRecordReader& in, Options& o) {
     in.get(*text);
   }
   in.get(o.adaptive);
+  in.get(o.h5);
+  in.get(o.animate);
 }
 
 void putSettings(BinaryRecordWriter& out, const Settings& s) {

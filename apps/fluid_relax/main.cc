@@ -28,6 +28,7 @@
 #include "common/spectrum_drift.h"
 #include "common/stop_signals.h"
 #include "fluid_relax/checkpoint.h"
+#include "fluid_relax/fluid_h5.h"
 #include "fluid_relax/input.h"
 #include "fluid_relax/options.h"
 #include "fluid_relax/outputs.h"
@@ -97,16 +98,26 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   } else {
     history_csv.emplace(s.out / "history.csv");
   }
+  const SphericalHarmonicBasis basis(hamiltonian.laplacian());
+  std::optional<FluidH5> h5;  // --h5: every history row's state, too
+  if (o.h5 || o.animate) {
+    h5 = resume != nullptr
+             ? FluidH5::reopen(s.out / kFluidH5, resume->h5_frames)
+             : FluidH5::create(s.out / kFluidH5, h5Attributes(o, s, hamiltonian.hbar()));
+  }
   // A row points at the run's current state; the one EveryKth holds back for finish() is
   // the last, which they still point to then.
   // r of each written row (relax() evaluates it only for --until-steady or --adaptive).
   SteadyStateProbe<SUN> rowProbe(*system);
-  auto historyRow = [&](long, double t, const std::pair<const RelaxState*, const Matrix*>& at) {
+  auto historyRow = [&](long k, double t, const std::pair<const RelaxState*, const Matrix*>& at) {
     const Matrix& W = *at.second;
     rowProbe.evaluate(W);
-    history_csv->write(t, diagnostics.energy(W), diagnostics.enstrophy(W),
-                       diagnostics.commutatorNorm(W), tally.drift, at.first->h,
+    const double energy = diagnostics.energy(W), enstrophy = diagnostics.enstrophy(W),
+                 commutator = diagnostics.commutatorNorm(W);
+    history_csv->write(t, energy, enstrophy, commutator, tally.drift, at.first->h,
                        rowProbe.residual());
+    if (h5)
+      h5->append({k, t, W, basis.coefficients(W), energy, enstrophy, commutator, tally.drift});
   };
   EveryKth<std::pair<const RelaxState*, const Matrix*>, decltype(historyRow)> history(o.every,
                                                                                       historyRow);
@@ -134,9 +145,11 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
                          at.energy, diagnostics.commutatorNorm(W), at.h, checkpoint_time);
     });
   };
-  const auto checkpoint = [&](std::uint64_t history_bytes) {
+  // The files that grow are on disk up to the lengths the checkpoint records.
+  const auto checkpoint = [&](std::uint64_t history_bytes, std::int64_t h5_frames) {
     const auto begin = std::chrono::steady_clock::now();
-    writeCheckpoint(s.out, o, given, s, tally, history_bytes, 0, run);
+    if (h5) h5->flush();
+    writeCheckpoint(s.out, o, given, s, tally, history_bytes, h5_frames, run);
     last_checkpoint = std::chrono::steady_clock::now();
     checkpoint_time = fmt::format("at step {}", run.state().k);
     checkpointed_at = run.state().k;
@@ -161,15 +174,17 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
     const bool due = o.checkpoint_every > 0 ? run.state().k % o.checkpoint_every == 0
                                             : std::chrono::steady_clock::now() - last_checkpoint >=
                                                   std::chrono::duration<double>(kCheckpointSeconds);
-    if (due) checkpoint(history_csv->sync());
+    if (due) checkpoint(history_csv->sync(), h5 ? h5->frames() : 0);
   }
   progress.clear();
-  // The checkpoint of the final state records history.csv without the held-back last row,
-  // which a run resumed from it writes again (or not, if it goes past it).
+  // The checkpoint of the final state records history.csv and fluid.hdf5 without the
+  // held-back last row, which a run resumed from it writes again (or not, if it goes past it).
   const std::uint64_t history_bytes = history_csv->sync();
+  const std::int64_t h5_frames = h5 ? h5->frames() : 0;
   history.finish();
   history_csv->commit();
-  if (checkpointed_at != run.state().k) checkpoint(history_bytes);
+  if (h5) h5->flush();
+  if (checkpointed_at != run.state().k) checkpoint(history_bytes, h5_frames);
   tally.rises.warnIfAny(o.method);
 
   const RelaxResult<SUN>& result = run.result();
@@ -226,7 +241,6 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
     return app::kExitFailed;
   }
   writeMatrixCsv(s.out / "W_final.csv", result.final);
-  const SphericalHarmonicBasis basis(hamiltonian.laplacian());
   writeOmegaCsv(s.out / "omega_initial.csv", basis, s.W0);
   writeOmegaCsv(s.out / "omega_final.csv", basis, result.final);
   app::writeJsonFile(s.out / "summary.json", summary);
@@ -253,21 +267,33 @@ int runRelax(int argc, char** argv) {
   addOptions(cli, o);
   if (const auto status = app::parseCommandLine(cli, argc, argv)) return *status;
   app::setupLogging(o.log);
+  // The run's options: this command line's, or a resumed run's recorded ones.
+  Options run_options = o;
   int status = 0;
   std::filesystem::path out;
   if (!o.resume.empty()) {
     Checkpoint c = readCheckpoint(o.resume);
     resumeSettings(cli, o, c);
     out = c.settings.out;
+    run_options = c.options;
     status = relax(c.options, c.settings, c.given, &c);
   } else {
     const Settings s = settings(cli, o);
     out = s.out;
     status = relax(o, s, givenFlags(cli), nullptr);
   }
-  if (o.plot && status == app::kExitOk) return app::runPlotScript(DDB_PLOT_SCRIPT, out);
-  if (o.plot && status == app::kExitFailed) spdlog::error("no figures: the run failed");
-  return status;
+  const bool figures_asked = run_options.plot || run_options.animate;
+  if (status != app::kExitOk) {
+    if (figures_asked && status == app::kExitFailed) spdlog::error("no figures: the run failed");
+    return status;
+  }
+  int figures = app::kExitOk;
+  if (run_options.animate) {
+    figures = app::runPlotScript(DDB_ANIMATE_SCRIPT,
+                                 {(out / kFluidH5).string(), (out / "fluid.mp4").string()});
+  }
+  if (run_options.plot) figures = std::max(figures, app::runPlotScript(DDB_PLOT_SCRIPT, out));
+  return figures;
 }
 
 }  // namespace

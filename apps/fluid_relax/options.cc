@@ -59,6 +59,12 @@ void addOptions(CLI::App& cli, Options& o) {
                  "continue the run in DIR from its checkpoint, to the bit as if never stopped, "
                  "with its recorded settings; --steps or --t-end may set a new cap");
   cli.add_flag("--plot", o.plot, "render PNG figures (python3 with matplotlib and scipy)");
+  cli.add_flag("--h5", o.h5,
+               "write every history.csv row's state to fluid.hdf5 (quflow's layout, "
+               "docs/file-formats.md)");
+  cli.add_flag("--animate", o.animate,
+               "render fluid.mp4 from fluid.hdf5 after the run (implies --h5; python3 with "
+               "matplotlib, scipy, h5py and ffmpeg)");
   app::addLogFlags(cli, o.log);
   app::addVersionFlag(cli, kApp);
   cli.footer(
@@ -66,9 +72,10 @@ void addOptions(CLI::App& cli, Options& o) {
       app::describeChoices(app::initDescriptions()) + "\nMethods (--method):\n" +
       app::describeChoices(fluidMethods()) +
       "\nFiles in --out: history.csv, W_final.csv, omega_initial.csv, omega_final.csv, "
-      "summary.json, checkpoint.ddb\n(docs/file-formats.md).\nExit status: 0 ok, 1 a step "
-      "failed or a file could not be written, 2 bad input (nothing written), 130/143 stopped "
-      "by SIGINT/SIGTERM (outputs and a checkpoint written; --resume continues).\n");
+      "summary.json, checkpoint.ddb,\nfluid.hdf5 with --h5, fluid.mp4 with --animate "
+      "(docs/file-formats.md).\nExit status: 0 ok, 1 a step failed or a file could not be "
+      "written, 2 bad input (nothing written), 130/143 stopped by SIGINT/SIGTERM (outputs "
+      "and a checkpoint written; --resume continues).\n");
 }
 
 }  // namespace ddb::fluid

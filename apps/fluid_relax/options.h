@@ -40,6 +40,7 @@ struct Options {
   long checkpoint_every = 0;  // steps; 0: every kCheckpointSeconds of wall time
   std::string resume;         // the run folder to resume, or empty
   bool plot = false, adaptive = false;
+  bool h5 = false, animate = false;  // fluid.hdf5; its animation (implies h5)
   app::LogFlags log;
 };
 

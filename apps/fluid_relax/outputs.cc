@@ -1,5 +1,7 @@
 #include "fluid_relax/outputs.h"
 
+#include "common/cli.h"
+
 namespace ddb::fluid {
 
 HistoryCsv::HistoryCsv(const std::filesystem::path& path) : file_(path), row_(7) {
@@ -19,6 +21,24 @@ void HistoryCsv::write(double t, double energy, double enstrophy, double commuta
   row_.put(h);
   row_.put(residual);
   row_.writeTo(file_);
+}
+
+FluidH5Attributes h5Attributes(const Options& o, const Settings& s, double hbar) {
+  FluidH5Attributes a;
+  a.n = s.W0.rows();
+  a.alpha = s.alpha;
+  a.h = s.h;
+  a.hbar = hbar;
+  a.method = o.method;
+  a.init = s.init;
+  if (s.init == "file") {
+    a.init_file = o.init_file;
+  } else {
+    a.seed = o.seed;
+  }
+  a.version = app::projectVersion();
+  a.created = FluidH5::utcNow();
+  return a;
 }
 
 void writeMatrixCsv(const std::filesystem::path& path, const Eigen::MatrixXcd& W) {

@@ -12,6 +12,8 @@
 #include "common/atomic_file.h"
 #include "common/csv_row.h"
 #include "common/journal_file.h"
+#include "fluid_relax/fluid_h5.h"
+#include "fluid_relax/input.h"
 
 namespace ddb::fluid {
 
@@ -34,6 +36,12 @@ class HistoryCsv {
   app::JournalFile file_;
   app::CsvRow row_;
 };
+
+/// The name of --h5's file in --out: quflow.load opens only names ending in "hdf5".
+constexpr const char* kFluidH5 = "fluid.hdf5";
+
+/// fluid.hdf5's root attributes for the run of `o`, `s` (ħ of the run's Hamiltonian).
+FluidH5Attributes h5Attributes(const Options& o, const Settings& s, double hbar);
 
 /// W in the layout of --init-file: row j is Re W[j, :] then Im W[j, :].
 void writeMatrixCsv(const std::filesystem::path& path, const Eigen::MatrixXcd& W);

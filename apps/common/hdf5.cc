@@ -1,0 +1,72 @@
+#include "common/hdf5.h"
+
+#include "common/exit_status.h"
+
+namespace ddb::app::hdf5 {
+
+namespace {
+
+/// The message of the innermost entry of HDF5's error stack (where the failure was
+/// detected: "unable to open file: name = ..., errno = 2, ..."), or "" if it is empty.
+herr_t keepInnermost(unsigned, const H5E_error2_t* error, void* message) {
+  if (error->desc != nullptr) *static_cast<std::string*>(message) = error->desc;
+  return 0;
+}
+
+std::string hdf5Reason() {
+  std::string message;
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, keepInnermost, &message);
+  H5Eclear2(H5E_DEFAULT);
+  return message;
+}
+
+[[noreturn]] void fail(const std::filesystem::path& file, const std::string& what) {
+  const std::string reason = hdf5Reason();
+  throw IoError(file.string() + ": cannot " + what + (reason.empty() ? "" : ": " + reason));
+}
+
+}  // namespace
+
+void quiet() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+
+hid_t check(hid_t id, const std::filesystem::path& file, const std::string& what) {
+  if (id < 0) fail(file, what);
+  return id;
+}
+
+void checkStatus(herr_t status, const std::filesystem::path& file, const std::string& what) {
+  if (status < 0) fail(file, what);
+}
+
+Handle stringType(const std::filesystem::path& file) {
+  Handle type(H5Tcopy(H5T_C_S1), file, "create a string type");
+  checkStatus(H5Tset_size(type.get(), H5T_VARIABLE), file, "create a string type");
+  checkStatus(H5Tset_cset(type.get(), H5T_CSET_UTF8), file, "create a string type");
+  return type;
+}
+
+Handle complexType(const std::filesystem::path& file) {
+  Handle type(H5Tcreate(H5T_COMPOUND, 2 * sizeof(double)), file, "create a complex type");
+  checkStatus(H5Tinsert(type.get(), "r", 0, H5T_NATIVE_DOUBLE), file, "create a complex type");
+  checkStatus(H5Tinsert(type.get(), "i", sizeof(double), H5T_NATIVE_DOUBLE), file,
+              "create a complex type");
+  return type;
+}
+
+void writeAttribute(hid_t on, const char* name, hid_t type, const void* value,
+                    const std::filesystem::path& file) {
+  const std::string what = std::string("write the attribute ") + name;
+  const Handle space(H5Screate(H5S_SCALAR), file, what);
+  const Handle attribute(H5Acreate2(on, name, type, space.get(), H5P_DEFAULT, H5P_DEFAULT), file,
+                         what);
+  checkStatus(H5Awrite(attribute.get(), type, value), file, what);
+}
+
+void writeAttribute(hid_t on, const char* name, const std::string& value,
+                    const std::filesystem::path& file) {
+  const Handle type = stringType(file);
+  const char* text = value.c_str();
+  writeAttribute(on, name, type.get(), &text, file);
+}
+
+}  // namespace ddb::app::hdf5

@@ -1,0 +1,118 @@
+"""fluid-relax --h5 (docs/file-formats.md, "fluid.hdf5") read back with h5py, as quflow
+reads it, and checked against the CSV files the app writes through its other code path:
+W_final.csv (mat), omega_initial.csv and omega_final.csv (state, quflow's index
+l^2 + l + m), history.csv (time and the diagnostics, one frame per row).
+
+ctest sets FLUID_RELAX to the app of this build and DDB_ANIMATE_SCRIPT to
+scripts/animate_fluid.py (tests/CMakeLists.txt).
+"""
+import csv
+import datetime
+import json
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+h5py = pytest.importorskip("h5py", reason="h5py is not installed (Debian: python3-h5py)")
+
+N = 8
+
+
+def app():
+    path = os.environ.get("FLUID_RELAX")
+    if not path:
+        pytest.skip("FLUID_RELAX (the fluid-relax of this build) is not set")
+    return path
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+
+
+def omega_in_quflow_order(path):
+    """omega_*.csv's rows (l, m, omega) placed at index l^2 + l + m."""
+    columns = read_csv(path)
+    omega = np.full(N * N, np.nan)
+    for l, m, w in zip(columns["l"], columns["m"], columns["omega"]):
+        omega[int(l) ** 2 + int(l) + int(m)] = w
+    return omega
+
+
+@pytest.fixture(scope="module")
+def run(tmp_path_factory):
+    out = tmp_path_factory.mktemp("fluid_h5")
+    subprocess.run([app(), "--n", str(N), "--steps", "5", "--every", "2", "--h5", "--quiet",
+                    "--out", str(out)], check=True, capture_output=True)
+    return out
+
+
+def test_layout_and_attributes(run):
+    with open(run / "summary.json") as f:
+        summary = json.load(f)
+    with h5py.File(run / "fluid.hdf5", "r") as f:
+        frames = f["state"].shape[0]
+        assert frames == 4  # steps 0, 2, 4 and the last, 5
+        assert f["state"].shape == (frames, N * N) and f["state"].dtype == np.float64
+        assert f["state"].attrs["qtype"] == "shr"  # a str, as quflow.load compares it
+        assert f["mat"].shape == (frames, N, N) and f["mat"].dtype == np.complex128
+        for name in ("time", "qtime", "energy_euler", "enstrophy", "commutator_norm",
+                     "spectrum_drift"):
+            assert f[name].shape == (frames,) and f[name].dtype == np.float64, name
+        assert f["step"].dtype == np.int64
+        assert list(f["step"][:]) == [0, 2, 4, 5]
+        for name in ("state", "mat", "time", "step"):
+            assert f[name].maxshape[0] is None, name  # extendable
+        a = f.attrs
+        assert a["N"] == N and a["alpha"] == summary["alpha"] and a["h"] == summary["h"]
+        assert a["method"] == summary["method"] and a["init"] == summary["init"]
+        assert a["seed"] == summary["seed"] and "init_file" not in a
+        assert a["version"] == summary["version"]
+        created = datetime.datetime.strptime(a["created"], "%Y-%m-%dT%H:%M:%SZ")
+        assert abs(datetime.datetime.utcnow() - created) < datetime.timedelta(minutes=10)
+
+
+def test_frames_equal_the_csv_files(run):
+    history = read_csv(run / "history.csv")
+    final = np.loadtxt(run / "W_final.csv", delimiter=",")
+    with h5py.File(run / "fluid.hdf5", "r") as f:
+        assert f["state"].shape[0] == history["t"].size
+        # %.17g round-trips a double: equal, not close.
+        np.testing.assert_array_equal(f["mat"][-1], final[:, :N] + 1j * final[:, N:])
+        np.testing.assert_array_equal(f["state"][0], omega_in_quflow_order(run / "omega_initial.csv"))
+        np.testing.assert_array_equal(f["state"][-1], omega_in_quflow_order(run / "omega_final.csv"))
+        np.testing.assert_array_equal(f["time"][:], history["t"])
+        for name, column in (("energy_euler", "energy"), ("enstrophy", "enstrophy"),
+                             ("commutator_norm", "commutator_norm"),
+                             ("spectrum_drift", "spectrum_drift")):
+            np.testing.assert_array_equal(f[name][:], history[column], err_msg=name)
+        # quflow's qtime: time in units of hbar = 2/sqrt(N^2 - 1) (quflow.utils.qtime2seconds).
+        hbar = 2.0 / math.sqrt(N * N - 1)
+        np.testing.assert_allclose(f["qtime"][:] * hbar, history["t"], rtol=1e-15, atol=0)
+
+
+def test_bad_input_creates_nothing(tmp_path):
+    out = tmp_path / "out"
+    result = subprocess.run([app(), "--n", "1", "--steps", "5", "--h5", "--out", str(out)],
+                            capture_output=True, text=True)
+    assert result.returncode == 2
+    assert "--n" in result.stderr
+    assert not out.exists()
+
+
+def test_animation_without_ffmpeg_writes_nothing(run, tmp_path):
+    script = os.environ.get("DDB_ANIMATE_SCRIPT")
+    if not script:
+        pytest.skip("DDB_ANIMATE_SCRIPT (scripts/animate_fluid.py) is not set")
+    video = tmp_path / "fluid.mp4"
+    result = subprocess.run([sys.executable, script, str(run / "fluid.hdf5"), str(video)],
+                            capture_output=True, text=True,
+                            env={**os.environ, "PATH": str(tmp_path)})
+    assert result.returncode == 1
+    assert "ffmpeg" in result.stderr
+    assert list(tmp_path.iterdir()) == []
