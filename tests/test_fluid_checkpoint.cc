@@ -78,7 +78,8 @@ int startAndSignal(const std::string& arguments, const fs::path& out, int signal
 class Checkpoint : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    reference_ = new fs::path(freshFolder("reference"));
+    // ctest runs each test in its own process, in parallel: one reference folder each.
+    reference_ = new fs::path(freshFolder("reference_" + std::to_string(::getpid())));
     ASSERT_EQ(run(kRun + " --steps 4000 --out " + reference_->string()).status, 0);
   }
   static void TearDownTestSuite() {

@@ -116,3 +116,31 @@ def test_animation_without_ffmpeg_writes_nothing(run, tmp_path):
     assert result.returncode == 1
     assert "ffmpeg" in result.stderr
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_killed_and_resumed_run_has_one_frame_per_row_and_the_uninterrupted_frames(
+        tmp_path):
+    """SIGKILL right after the first checkpoint, then --resume: fluid.hdf5 is cut back to the
+    checkpoint's frames and continued, so that it holds exactly the uninterrupted run's
+    frames (docs/file-formats.md, "Checkpoints")."""
+    import signal
+    import time
+    args = ["--n", "12", "--seed", "4", "--every", "7", "--checkpoint-every", "50",
+            "--steps", "4000", "--h5", "--quiet"]
+    whole, killed = tmp_path / "whole", tmp_path / "killed"
+    subprocess.run([app(), *args, "--out", str(whole)], check=True, capture_output=True)
+    process = subprocess.Popen([app(), *args, "--out", str(killed)],
+                               stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 60
+    while not (killed / "checkpoint.ddb").exists() and time.monotonic() < deadline:
+        time.sleep(0.001)
+    process.send_signal(signal.SIGKILL)
+    process.wait()
+    assert not (killed / "summary.json").exists(), "the run finished before the kill"
+    subprocess.run([app(), "--resume", str(killed), "--quiet"], check=True, capture_output=True)
+    rows = len(read_csv(killed / "history.csv")["t"])
+    with h5py.File(whole / "fluid.hdf5", "r") as a, h5py.File(killed / "fluid.hdf5", "r") as b:
+        assert b["state"].shape[0] == rows
+        for name in ("state", "mat", "time", "qtime", "step", "energy_euler", "enstrophy",
+                     "commutator_norm", "spectrum_drift"):
+            assert np.array_equal(a[name][()], b[name][()]), name
