@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/logging.h"
+#include "common/relax_flags.h"
 
 namespace ddb::fluid {
 
@@ -32,9 +33,9 @@ struct Options {
   long n = 32, steps = 0, every = 1;
   std::uint64_t seed = 1;
   std::string alpha = "0.5", h, t_end, init = "random", init_file, method = "ddb-cay";
-  std::string until_steady, adaptive_tol;  // numbers as text; empty: not given
   std::string out = "results-fluid";
-  bool plot = false, adaptive = false;
+  app::RelaxFlags relax;  // --until-steady, --adaptive, --adaptive-tol
+  bool plot = false;
   app::LogFlags log;
 };
 
