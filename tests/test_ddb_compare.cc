@@ -4,6 +4,7 @@
 // flag, nothing written), --help, --version, "custom" scenarios, --every, FAILED runs,
 // I/O errors (exit status 1 naming the file) and constant memory on long runs.
 #include <ddb/integrators/method_table.h>
+#include <ddb/integrators/relax.h>
 #include <ddb/systems/heavy_top.h>
 #include <ddb/systems/manakov_body.h>
 #include <ddb/systems/rigid_body.h>
@@ -19,6 +20,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -44,10 +46,10 @@ TEST(DdbCompare, WritesContractFilesMatchingTheLibrary) {
   for (const std::string method : {"ddb-cay", "rk4"}) {
     std::string header;
     const auto rows = readCsv(out / (method + ".csv"), &header);
-    EXPECT_EQ(header, "t,m1,m2,m3,energy,casimir");
+    EXPECT_EQ(header, "t,m1,m2,m3,energy,casimir,h,residual");
     ASSERT_EQ(rows.size(), 21u);  // t = 0, 0.1, ..., 2
     for (const auto& row : rows) {
-      ASSERT_EQ(row.size(), 6u);
+      ASSERT_EQ(row.size(), 8u);
       for (double v : row) EXPECT_TRUE(std::isfinite(v));
     }
     // The library called directly gives the same final state.
@@ -116,7 +118,7 @@ TEST(DdbCompare, SE3SystemsWriteTwoCasimirColumns) {
     ASSERT_EQ(runApp("--system " + system + " --t-end 1 --repeat 1 --out " + out.string()), 0);
     std::string header;
     const auto rows = readCsv(out / "ddb-cay.csv", &header);
-    EXPECT_EQ(header, "t,m1,m2,m3,m4,m5,m6,energy,casimir1,casimir2");
+    EXPECT_EQ(header, "t,m1,m2,m3,m4,m5,m6,energy,casimir1,casimir2,h,residual");
     EXPECT_EQ(rows.size(), 11u);
     Json summary = readJson(out / "summary.json");
     EXPECT_EQ(summary["system"], system);
@@ -401,6 +403,167 @@ TEST(DdbCompare, MemoryDoesNotGrowWithTheNumberOfSteps) {
   EXPECT_EQ(readCsv(out / "rk4.csv", &header).size(), 2001u);
   EXPECT_LT(long_run.max_rss_kb, short_run.max_rss_kb + 4096)
       << short_run.max_rss_kb << " kB vs " << long_run.max_rss_kb << " kB";
+}
+
+/// r = |M × Ω|/(|M| |Ω|) of the rigid body, Ω = M/𝕀 (docs/steady-states.md), computed
+/// here from the written state.
+double rigidBodyResidual(const Eigen::Vector3d& inertia, const Eigen::Vector3d& M) {
+  const Eigen::Vector3d omega = M.cwiseQuotient(inertia);
+  return M.cross(omega).norm() / (M.norm() * omega.norm());
+}
+
+TEST(DdbCompare, UntilSteadyAdaptiveReachesScenarioBsLimitPoint) {
+  const fs::path out = freshFolder("steady_b");
+  constexpr double kTolerance = 1e-11;
+  ASSERT_EQ(runApp("--scenario B --method sddb-exp --until-steady 1e-11 --adaptive --t-end 1000 "
+                   "--repeat 1 --out " +
+                   out.string()),
+            0);
+  const Eigen::Vector3d inertia(1.0, 1.3, 0.5);
+  const Eigen::Vector3d M0 = inertia.cwiseProduct(Eigen::Vector3d(0, 0.05, 1));
+  Json summary = readJson(out / "summary.json");
+  EXPECT_EQ(summary["until_steady"], kTolerance);
+  EXPECT_EQ(summary["adaptive"], true);
+  EXPECT_EQ(summary["adaptive_tol"], 0.5);
+  Json& entry = summary["methods"]["sddb-exp"];
+  EXPECT_EQ(entry["stop"], "steady");
+  EXPECT_EQ(entry["steady"], true);
+  const Eigen::Vector3d M(entry["final"][0].get<double>(), entry["final"][1].get<double>(),
+                          entry["final"][2].get<double>());
+  const double r = rigidBodyResidual(inertia, M);
+  EXPECT_LE(r, kTolerance);
+  EXPECT_NEAR(entry["residual_final"].get<double>(), r, 1e-3 * kTolerance);
+  // The closed-form limit point ±|M₀| e₂, and the distance bound from r near it (as in
+  // test_relax): |M × Ω| ≥ |M|²|u₂| m √(u₁² + u₃²), m = min(|1/𝕀₃ − 1/𝕀₂|, |1/𝕀₂ − 1/𝕀₁|).
+  const Eigen::Vector3d limit = std::copysign(M0.norm(), M(1)) * Eigen::Vector3d::UnitY();
+  const double m = std::min(std::abs(1 / inertia(2) - 1 / inertia(1)),
+                            std::abs(1 / inertia(1) - 1 / inertia(0)));
+  const double u2 = std::abs(M.normalized()(1));
+  EXPECT_LE((M - limit).norm(), 1.01 * M0.norm() * r / (u2 * m * inertia.minCoeff()));
+  EXPECT_LE((M - limit).norm(), 1e-10);
+  // Issue 21's target: at least 10x fewer step attempts than h = 0.1 (2500 steps).
+  const long steps = entry["steps"], rejected = entry["steps_rejected"];
+  EXPECT_GT(rejected, 0);
+  EXPECT_LT(steps + rejected, 250);
+
+  std::string header;
+  const auto rows = readCsv(out / "sddb-exp.csv", &header);
+  EXPECT_EQ(header, "t,m1,m2,m3,energy,casimir,h,residual");
+  ASSERT_EQ(rows.size(), static_cast<std::size_t>(steps + 1));
+  EXPECT_EQ(rows.front()[6], 0.0);  // no step reached μ₀
+  for (size_t k = 0; k < rows.size(); ++k) {
+    const auto& row = rows[k];
+    const Eigen::Vector3d Mk(row[1], row[2], row[3]);
+    EXPECT_NEAR(Mk.norm(), M0.norm(), 1e-14);
+    EXPECT_NEAR(row[7], rigidBodyResidual(inertia, Mk), 1e-12 * row[7]) << k;
+    // Stopped at the first state within the tolerance; the energy never rose beyond the
+    // rounding of an energy difference, 8ε max(|H|, |H'|) (docs/steady-states.md, rule 2).
+    if (k + 1 < rows.size()) {
+      EXPECT_GT(row[7], kTolerance) << k;
+    }
+    if (k > 0) {
+      EXPECT_LE(row[4] - rows[k - 1][4], 8 * std::numeric_limits<double>::epsilon() *
+                                             std::max(std::abs(row[4]), std::abs(rows[k - 1][4])))
+          << k;
+      EXPECT_NEAR(row[0] - rows[k - 1][0], row[6], 1e-12 * row[0]) << k;
+      // h is the first step times a power of two (docs/steady-states.md).
+      const double doublings = std::log2(row[6] / 0.1);
+      EXPECT_NEAR(doublings, std::round(doublings), 1e-12) << k;
+    }
+  }
+  EXPECT_LE(rows.back()[7], kTolerance);
+
+  // The same as relax() called directly with the flags' options.
+  const auto body = ddb::makeRigidBody(inertia, 0.5);
+  auto method = ddb::makeMethod<ddb::SO3>("sddb-exp", body);
+  ddb::RelaxOptions options;
+  options.tolerance = kTolerance;
+  options.max_steps = 1000000000L;
+  options.t_end = 1000;
+  options.control.adaptive = true;
+  const auto direct = ddb::relax(*method, *body, M0, 0.1, options);
+  EXPECT_EQ(direct.last.k, steps);
+  EXPECT_EQ(direct.steps_rejected, rejected);
+  for (int i = 0; i < 3; ++i) EXPECT_DOUBLE_EQ(M(i), direct.final(i));
+}
+
+TEST(DdbCompare, UntilSteadyWithFixedStepsStopsWhereThePlainRunFirstGetsThere) {
+  // Fixed h: the states are those of the run without the flag, cut at the first whose r,
+  // computed here, is within the tolerance.
+  const fs::path plain = freshFolder("steady_plain"), cut = freshFolder("steady_cut");
+  constexpr double kTolerance = 1e-3;
+  ASSERT_EQ(runApp("--scenario B --method ddb-cay,rk4 --repeat 1 --out " + plain.string()), 0);
+  ASSERT_EQ(runApp("--scenario B --method ddb-cay,rk4 --repeat 1 --until-steady 1e-3 --out " +
+                   cut.string()),
+            0);
+  const Eigen::Vector3d inertia(1.0, 1.3, 0.5);
+  for (const std::string method : {"ddb-cay", "rk4"}) {
+    std::string header;
+    const auto all = readCsv(plain / (method + ".csv"), &header);
+    const auto rows = readCsv(cut / (method + ".csv"), &header);
+    size_t first = 0;
+    while (first < all.size() &&
+           rigidBodyResidual(inertia, {all[first][1], all[first][2], all[first][3]}) > kTolerance) {
+      ++first;
+    }
+    ASSERT_LT(first + 1, all.size()) << method << ": never within the tolerance";
+    ASSERT_EQ(rows.size(), first + 1) << method;
+    for (size_t k = 0; k < rows.size(); ++k) EXPECT_EQ(rows[k], all[k]) << method << " " << k;
+    Json entry = readJson(cut / "summary.json")["methods"][method];
+    EXPECT_EQ(entry["steady"], true);
+    EXPECT_EQ(entry["steps"], static_cast<long>(first));
+    EXPECT_EQ(entry["steps_rejected"], 0);
+    EXPECT_EQ(entry["h_final"], 0.1);
+    Json whole = readJson(plain / "summary.json")["methods"][method];
+    EXPECT_EQ(whole["stop"], "step cap");
+    EXPECT_EQ(whole["steady"], false);
+  }
+}
+
+TEST(DdbCompare, SteadyStartsStopAtStepZero) {
+  // The rigid body spinning about its stable axis e₂ (M × Ω = 0 exactly) and the fluid's
+  // zonal flow (P and W diagonal, [P, W] = 0): steady before any step.
+  for (const std::string arguments :
+       {"--scenario B --omega0 0,1,0 --adaptive", "--scenario B --omega0 0,1,0",
+        "--system zeitlin --n 8 --init zonal --adaptive",
+        "--system zeitlin --n 8 --init zonal --method ddb-cay,rk4"}) {
+    SCOPED_TRACE(arguments);
+    const fs::path out = freshFolder("steady_start");
+    ASSERT_EQ(runApp(arguments + " --until-steady 1e-12 --repeat 1 --out " + out.string()), 0);
+    Json summary = readJson(out / "summary.json");
+    ASSERT_FALSE(summary["methods"].empty());
+    for (const auto& [name, entry] : summary["methods"].items()) {
+      EXPECT_EQ(entry["steady"], true) << name;
+      EXPECT_EQ(entry["steps"], 0) << name;
+      EXPECT_EQ(entry["residual_final"], 0.0) << name;
+      EXPECT_EQ(entry["err_final"], 0.0) << name;
+      std::string header;
+      EXPECT_EQ(readCsv(out / (name + ".csv"), &header).size(), 1u) << name;
+    }
+  }
+}
+
+TEST(DdbCompare, AdaptiveRunsOnlyTheMethodsThatKeepTheCasimirs) {
+  const fs::path out = freshFolder("adaptive_methods");
+  ASSERT_EQ(runApp("--scenario A --adaptive --t-end 5 --repeat 1 --out " + out.string()), 0);
+  Json summary = readJson(out / "summary.json");
+  EXPECT_NEAR(summary["t_end"].get<double>(), 5.0, 1e-15);
+  for (const ddb::MethodInfo& info : ddb::kMethods) {
+    if ((info.groups & ddb::kFixedSizeGroups) == 0) continue;
+    const bool runs = summary["methods"].contains(info.name);
+    if (!info.keeps_casimirs) {
+      EXPECT_FALSE(runs) << info.name;
+      continue;
+    }
+    if (!runs) continue;  // a method for other systems (the Lagrangian-only ones)
+    const Json& entry = summary["methods"][info.name];
+    EXPECT_EQ(entry["status"], "ok") << info.name;
+    EXPECT_EQ(entry["stop"], "time cap") << info.name;
+    EXPECT_NEAR(entry["t_final"].get<double>(), 5.0, 1e-12) << info.name;
+    EXPECT_EQ(entry["energy_rises"], 0) << info.name;
+    EXPECT_LT(entry["casimir_drift"].get<double>(), 1e-13) << info.name;
+  }
+  EXPECT_TRUE(summary["methods"].contains("sddb-exp"));
 }
 
 }  // namespace

@@ -121,7 +121,7 @@ void expectMethodsMatchTheLibrary(const fs::path& out,
 
     std::string header;
     const auto rows = readCsv(out / (name + ".csv"), &header);
-    EXPECT_EQ(header, "t,energy,casimir_drift,norm");
+    EXPECT_EQ(header, "t,energy,casimir_drift,norm,h,residual");
     ASSERT_EQ(rows.size(), static_cast<std::size_t>(steps + 1));
     EXPECT_EQ(rows.back()[1], system->energy(last));
     EXPECT_NEAR(rows.back()[2], direct_run.drift_last, 1e-14);

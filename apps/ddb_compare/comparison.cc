@@ -3,11 +3,14 @@
 #include <ddb/core/group_traits.h>
 #include <ddb/integrators/method_table.h>
 #include <ddb/integrators/reference.h>
+#include <ddb/integrators/relax.h>
 #include <ddb/integrators/run.h>
+#include <ddb/integrators/steady_state_probe.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <type_traits>
 
@@ -26,10 +29,7 @@ namespace {
 // is timed once, as it ran.
 constexpr double kRepeatBelowSeconds = 1.0;
 
-template <class G>
-std::string failedLabel(const RunResult<G>& run) {
-  return "FAILED at step " + std::to_string(run.failed_step);
-}
+std::string failedLabel(long step) { return "FAILED at step " + std::to_string(step); }
 
 /// The method's order at α (MethodInfo: with α = 0 the order without dissipation).
 int orderAt(const std::string& name, double alpha) {
@@ -38,15 +38,18 @@ int orderAt(const std::string& name, double alpha) {
 }
 
 /// casimir_drift as docs/file-formats.md defines it, over every state shown to
-/// observe(). On fixed-size groups it is runMethod's own (Casimir by Casimir).
+/// observe(): on fixed-size groups Casimir by Casimir (CasimirDrift, runMethod's own).
 template <class G, bool = isDynamicGroup<G>>
 class DriftWatch {
  public:
   using Dual = typename G::template Dual<double>;
 
-  explicit DriftWatch(const Dual&) {}
-  void observe(const Dual&) {}
-  double of(const RunResult<G>& run) const { return run.casimir_drift; }
+  DriftWatch(const LiePoissonSystem<G>& system, const Dual& mu0) : casimirs_(system, mu0) {}
+  void observe(const Dual& mu) { casimirs_.observe(mu); }
+  double value() const { return casimirs_.value(); }
+
+ private:
+  CasimirDrift<G> casimirs_;
 };
 
 /// On matrix groups, the spectrum's relative change (app::SpectrumDrift), which runMethod
@@ -56,88 +59,142 @@ class DriftWatch<G, true> {
  public:
   using Dual = typename G::template Dual<double>;
 
-  explicit DriftWatch(const Dual& mu0) : spectrum_(mu0) {}
+  DriftWatch(const LiePoissonSystem<G>&, const Dual& mu0) : spectrum_(mu0) {}
   void observe(const Dual& mu) {
     current_ = spectrum_(mu);
     max_ = std::max(max_, current_);
   }
   /// The drift of the state last observed.
   const double& current() const { return current_; }
-  double of(const RunResult<G>&) const { return max_; }
+  double value() const { return max_; }
 
  private:
   app::SpectrumDrift<G> spectrum_;
   double current_ = 0.0, max_ = 0.0;
 };
 
+/// --adaptive's checks that need the problem (docs/bad-inputs.md): the step control
+/// judges steps by the energy's change, which dissipation must drive.
+template <class G>
+void requireDissipation(const Options& o, const Settings& s, const Problem<G>& problem) {
+  if (problem.alpha == 0) {
+    app::usageError("--adaptive", o.alpha, "needs --alpha != 0 (the energy must move)");
+  }
+  // relax() refuses this too, but only after the files are created.
+  SteadyStateProbe<G> probe(*problem.system);
+  probe.evaluate(problem.mu0);
+  if (probe.energyRate() == 0 && probe.residual() > s.relax.tolerance) {
+    app::usageError("--adaptive", o.metric,
+                    "needs dissipation: dH/dt = 0 at mu0 where the flow moves (--metric?)");
+  }
+}
+
 }  // namespace
 
 template <class G>
 int runComparison(const Options& o, const Settings& s, const Problem<G>& problem) {
   // Default: every method that applies; an explicit method that does not is bad input.
+  // With --adaptive: every one that applies and keeps the Casimirs (the step control's
+  // premise, docs/steady-states.md); an explicit one that does not is bad input.
   std::vector<std::string> names;
   for (const auto& name : s.methods) {
-    if (methodApplies(name, *problem.system)) {
-      names.push_back(name);
-    } else if (!o.methods.empty()) {
-      app::usageError("--method", name, "does not apply to " + o.system);
+    if (!methodApplies(name, *problem.system)) {
+      if (!o.methods.empty()) app::usageError("--method", name, "does not apply to " + o.system);
+      continue;
     }
+    if (s.relax.control.adaptive && !findMethod(name)->keeps_casimirs) {
+      if (!o.methods.empty()) {
+        app::usageError("--adaptive", name,
+                        "needs a method that keeps the Casimirs (the DDB family), not this "
+                        "--method");
+      }
+      continue;
+    }
+    names.push_back(name);
   }
+  if (s.relax.control.adaptive) requireDissipation(o, s, problem);
   std::vector<std::unique_ptr<OneStepMethod<G>>> methods;
   for (const auto& name : names) methods.push_back(makeMethod<G>(name, problem.system));
   app::prepareOutputFolder("--out", o.out, s.out);
   // ---- from here on, files are written: failures are exit status 1 ----
 
-  const double t_reached = static_cast<double>(s.steps) * s.h;
+  // With --adaptive the cap is the time itself; else the steps of h, which end at t_reached.
+  const bool adaptive = s.relax.control.adaptive;
+  const double t_reached = adaptive ? s.t_end : static_cast<double>(s.steps) * s.h;
   if (std::abs(t_reached - s.t_end) > 1e-9 * s.t_end) {
     spdlog::warn("--t-end {} is not a multiple of --h {}: {} steps end at t = {}", s.t_end, s.h,
                  s.steps, t_reached);
   }
   const LiePoissonSystem<G>& system = *problem.system;
+  using Dual = typename G::template Dual<double>;
   app::Progress progress(o.log.quiet);
-  spdlog::info("{}{}: h {}, {} steps to t = {}, methods {}", system.name(),
-               problem.scenario == "none" ? "" : ", scenario " + problem.scenario, s.h, s.steps,
-               t_reached, o.methods.empty() ? "all" : o.methods);
+  spdlog::info("{}{}: h {}{}, {} to t = {}{}, methods {}", system.name(),
+               problem.scenario == "none" ? "" : ", scenario " + problem.scenario, s.h,
+               adaptive ? " (first step, adaptive)" : "",
+               adaptive ? "capped" : std::to_string(s.steps) + " steps", t_reached,
+               s.relax.tolerance > 0 ? fmt::format(", until r <= {}", s.relax.tolerance) : "",
+               o.methods.empty() ? "all" : o.methods);
 
-  // err_final's reference: the adaptive solver in one sweep to t_reached.
-  progress.show(fmt::format("reference solution to t = {}", t_reached));
+  // err_final's reference: the adaptive solver in one sweep to each run's final time
+  // (t_reached but for runs that --until-steady or --adaptive ended elsewhere).
   ReferenceSolver<G> reference_solver(problem.system);
-  const RunResult<G> reference = runMethod(reference_solver, system, problem.mu0, t_reached, 1);
-  progress.clear();
-  bool any_failed = !reference.ok();
-  if (!reference.ok()) spdlog::error("reference (for err_final) FAILED: {}", reference.failure);
+  std::map<double, RunResult<G>> references;
+  bool any_failed = false;
+  const auto referenceAt = [&](double t) -> const RunResult<G>& {
+    auto found = references.find(t);
+    if (found != references.end()) return found->second;
+    progress.show(fmt::format("reference solution to t = {}", t));
+    RunResult<G> reference;
+    if (t > 0) {
+      reference = runMethod(reference_solver, system, problem.mu0, t, 1);
+    } else {
+      reference.final = problem.mu0;  // a run stopped at step 0: μ₀ itself
+    }
+    progress.clear();
+    if (!reference.ok()) {
+      any_failed = true;
+      spdlog::error("reference (for err_final) at t = {} FAILED: {}", t, reference.failure);
+    }
+    return references.emplace(t, std::move(reference)).first->second;
+  };
+  if (!s.relaxing()) referenceAt(t_reached);
 
   Report report(o.repeat);
   for (size_t m = 0; m < names.size(); ++m) {
     const std::string& name = names[m];
-    RunOptions options;
-    options.progress = [&](long done, long total) { progress.update(name, done, total); };
     app::AtomicFile csv_file(s.out / (name + ".csv"));
-    DriftWatch<G> drift(problem.mu0);
+    DriftWatch<G> drift(system, problem.mu0);
+    RelaxState at;  // of the state the sink saw last, for the rows' h
     using Csv = std::conditional_t<isDynamicGroup<G>, MatrixTrajectoryCsv<G>, TrajectoryCsv<G>>;
     Csv csv = [&] {
       if constexpr (isDynamicGroup<G>) {
-        return Csv(csv_file, system, drift.current());
+        return Csv(csv_file, system, drift.current(), at);
       } else {
-        return Csv(csv_file, system);
+        return Csv(csv_file, system, at);
       }
     }();
     // Every state passes the energy and drift checks; only every K-th reaches the file.
-    EveryKth<typename G::template Dual<double>, Csv> rows(o.every, csv);
+    EveryKth<Dual, Csv> rows(o.every, csv);
     const bool watch_energy =
         app::EnergyRises::applies(findMethod(name)->keeps_casimirs, problem.alpha);
     app::EnergyRises rises;
-    const RunResult<G> run = runMethod(*methods[m], system, problem.mu0, s.h, s.steps, options,
-                                       [&](long k, double t, const auto& mu) {
-                                         if (watch_energy) rises.observe(k, t, system.energy(mu));
-                                         drift.observe(mu);
-                                         rows(k, t, mu);
+    const RelaxResult<G> run = relax(*methods[m], system, problem.mu0, s.h, s.relax,
+                                     [&](const RelaxState& state, const Dual& mu) {
+                                       at = state;
+                                       if (watch_energy)
+                                         rises.observe(state.k, state.t, state.energy);
+                                       drift.observe(mu);
+                                       rows(state.k, state.t, mu);
+                                       progress.update(name, state.k, s.relax.max_steps, [&] {
+                                         return fmt::format("t {:.4g}  h {:.3g}", at.t, at.h);
                                        });
+                                     });
     rows.finish();
     csv_file.commit();
     rises.warnIfAny(name);
 
-    // A short run is timed again without output, for a median that is not noise.
+    // A short run is timed again without output, for a median that is not noise; a fixed-step
+    // run as runMethod() runs it (no energy or residual per step).
     double runtime = run.runtime_s;
     int timed_runs = 1;
     if (run.ok() && run.runtime_s < kRepeatBelowSeconds && o.repeat > 1) {
@@ -145,7 +202,9 @@ int runComparison(const Options& o, const Settings& s, const Problem<G>& problem
       for (int r = 0; r < o.repeat; ++r) {
         progress.show("timing " + name + " (" + std::to_string(r + 1) + "/" +
                       std::to_string(o.repeat) + ")");
-        runtimes.push_back(runMethod(*methods[m], system, problem.mu0, s.h, s.steps).runtime_s);
+        runtimes.push_back(
+            s.relaxing() ? relax(*methods[m], system, problem.mu0, s.h, s.relax).runtime_s
+                         : runMethod(*methods[m], system, problem.mu0, s.h, s.steps).runtime_s);
       }
       std::sort(runtimes.begin(), runtimes.end());
       runtime = runtimes[runtimes.size() / 2];
@@ -158,23 +217,33 @@ int runComparison(const Options& o, const Settings& s, const Problem<G>& problem
     result.final = stateJson(run.final);
     result.order = orderAt(name, problem.alpha);
     result.energy_final = system.energy(run.final);
-    result.steps = run.steps;
-    result.t_final = run.t_final;
+    result.steps = run.last.k;
+    result.t_final = run.last.t;
     if (watch_energy) result.energy_rises = rises.count();
     result.ok = run.ok();
+    result.stop = relaxStopName(run.stop);
+    result.steady = run.steady();
+    result.residual_final = steadyStateResidual(system, run.final);
+    result.steps_rejected = run.steps_rejected;
+    result.h_final = run.last.h;
     if (run.ok()) {
+      const RunResult<G>& reference = referenceAt(run.last.t);
       result.err_final = reference.ok() ? (run.final - reference.final).norm() : NAN;
-      result.casimir_drift = drift.of(run);
+      result.casimir_drift = drift.value();
       result.runtime_s = runtime;
       result.timed_runs = timed_runs;
-      spdlog::info("{:14s} err_final {:.3e}  casimir drift {:.3e}  runtime {:.3g} s", name,
-                   result.err_final, result.casimir_drift, runtime);
+      spdlog::info(
+          "{:14s} {} at step {}, t = {:.6g}{}: r {:.3e}  err_final {:.3e}  casimir drift "
+          "{:.3e}  runtime {:.3g} s",
+          name, result.stop, result.steps, result.t_final,
+          adaptive ? fmt::format(" ({} rejected)", run.steps_rejected) : "", result.residual_final,
+          result.err_final, result.casimir_drift, runtime);
     } else {
       any_failed = true;
       result.failed_step = run.failed_step;
-      result.failed_label = failedLabel(run);
+      result.failed_label = failedLabel(run.failed_step);
       result.failure = run.failure;
-      spdlog::error("{:14s} {}: {}", name, failedLabel(run), run.failure);
+      spdlog::error("{:14s} {}: {}", name, result.failed_label, run.failure);
     }
     report.add(result);
   }
@@ -195,17 +264,18 @@ int runComparison(const Options& o, const Settings& s, const Problem<G>& problem
                                   names[m];
         RunOptions options;
         options.progress = [&](long done, long total) { progress.update(label, done, total); };
-        DriftWatch<G> drift(problem.mu0);
+        DriftWatch<G> drift(system, problem.mu0);
         const RunResult<G> run =
             runMethod(*methods[m], system, problem.mu0, hs[i], n, options,
                       [&](long, double, const auto& mu) { drift.observe(mu); });
         const bool ok = run.ok() && exact.ok();
         if (!run.ok()) {
           progress.clear();
-          spdlog::warn("sweep {} h={} {}: {}", names[m], hs[i], failedLabel(run), run.failure);
+          spdlog::warn("sweep {} h={} {}: {}", names[m], hs[i], failedLabel(run.failed_step),
+                       run.failure);
         }
         sweep.add(names[m], hs[i], ok ? (run.final - exact.final).norm() : NAN,
-                  run.ok() ? drift.of(run) : NAN, run.ok() ? run.runtime_s : NAN);
+                  run.ok() ? drift.value() : NAN, run.ok() ? run.runtime_s : NAN);
       }
     }
     progress.clear();
@@ -222,6 +292,9 @@ int runComparison(const Options& o, const Settings& s, const Problem<G>& problem
   summary["t_end_requested"] = s.t_end;
   summary["steps"] = s.steps;
   summary["every"] = o.every;
+  summary["until_steady"] = s.relax.tolerance > 0 ? app::Json(s.relax.tolerance) : app::Json();
+  summary["adaptive"] = adaptive;
+  summary["adaptive_tol"] = adaptive ? app::Json(s.relax.control.tolerance) : app::Json();
   summary["parameters"] = problem.parameters;
   report.write(s.out, summary);
   spdlog::info("wrote {}", s.out.string());

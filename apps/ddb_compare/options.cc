@@ -97,6 +97,11 @@ void addOptions(CLI::App& cli, Options& o) {
                      shortList(HeavyTopSetup().t_end) + ", manakov and zeitlin " +
                      shortList(kMatrixDefaultTEnd) +
                      "); rounded to a whole number of steps, with a warning");
+  app::addRelaxFlags(cli, o.relax,
+                     "stop each method at the first state with r = |ad*_xi mu|/(|xi| |mu|) <= "
+                     "TOL, 0 < TOL < 1 (docs/steady-states.md); --t-end is then the cap",
+                     "choose h by the energy (docs/steady-states.md): the methods that keep the "
+                     "Casimirs, alpha != 0; --h is the first step, --t-end caps the time");
   cli.add_option("--every", o.every, "write every K-th state and the last one to <method>.csv")
       ->capture_default_str();
   cli.add_option("--out", o.out, "output folder")->capture_default_str();
@@ -160,6 +165,24 @@ double optionalNumber(const std::string& flag, const std::string& text, double f
   return text.empty() ? fallback : app::parseNumber(flag, text, text);
 }
 
+namespace {
+
+/// --until-steady, --adaptive and --adaptive-tol into s.relax, with the caps, as
+/// fluid-relax reads them (docs/file-formats.md); the checks that need the problem (the
+/// methods, alpha) are runComparison's.
+void readRelaxOptions(const Options& o, Settings& s) {
+  app::readRelaxFlags(o.relax, s.relax);
+  // The sweep compares fixed steps at equal times; a relaxed run ends at its own time.
+  if (s.sweep.count > 0 && s.relaxing()) {
+    app::usageError("--sweep-h", o.sweep, "not with --until-steady or --adaptive");
+  }
+  // Without --adaptive every step has h and the step count is the cap; with it, the time.
+  s.relax.max_steps = o.relax.adaptive ? kMaxSteps : s.steps;
+  if (o.relax.adaptive) s.relax.t_end = s.t_end;
+}
+
+}  // namespace
+
 Settings commonSettings(const Options& o, double default_t_end) {
   Settings s;
   s.h = app::parseNumber("--h", o.h, o.h);
@@ -196,6 +219,7 @@ Settings commonSettings(const Options& o, double default_t_end) {
       app::usageError("--method", o.methods, *m + " is given twice");
     }
   }
+  readRelaxOptions(o, s);
   s.out = o.out;
   return s;
 }

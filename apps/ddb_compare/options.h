@@ -3,6 +3,8 @@
 // validated (bad input is a UsageError naming the flag, docs/bad-inputs.md).
 #pragma once
 
+#include <ddb/integrators/relax.h>
+
 #include <CLI/CLI.hpp>
 #include <Eigen/Core>
 #include <cstdint>
@@ -13,6 +15,7 @@
 
 #include "common/cli.h"
 #include "common/logging.h"
+#include "common/relax_flags.h"
 
 namespace ddb::compare {
 
@@ -33,6 +36,7 @@ struct Options {
   long n = 0;
   std::uint64_t seed = 1;
   std::string j, mu0_file, init = "random", init_file;
+  app::RelaxFlags relax;  // --until-steady, --adaptive, --adaptive-tol
   bool plot = false;
   int repeat = 5;
   long every = 1;
@@ -65,6 +69,12 @@ struct Settings {
   Sweep sweep;
   std::vector<std::string> methods;
   std::filesystem::path out;
+  /// Every run is relax()'s (docs/steady-states.md): --until-steady, --adaptive and
+  /// --adaptive-tol, capped by the step count or, with --adaptive, by t_end.
+  RelaxOptions relax;
+
+  /// --until-steady or --adaptive given: the runs may end before t_end, each at its own time.
+  bool relaxing() const { return relax.tolerance > 0 || relax.control.adaptive; }
 };
 
 /// round(t_end / h), at least 1; more than kMaxSteps is bad input naming `flag` = `text`.

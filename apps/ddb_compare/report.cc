@@ -18,6 +18,11 @@ void Report::add(const MethodResult& r) {
   entry["steps"] = r.steps;
   entry["t_final"] = r.t_final;
   if (r.energy_rises) entry["energy_rises"] = *r.energy_rises;
+  entry["stop"] = r.stop;
+  entry["steady"] = r.steady;
+  entry["residual_final"] = r.residual_final;
+  entry["steps_rejected"] = r.steps_rejected;
+  entry["h_final"] = r.h_final;
   if (r.ok) {
     entry["status"] = "ok";
     entry["err_final"] = r.err_final;

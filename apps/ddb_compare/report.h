@@ -4,6 +4,8 @@
 #pragma once
 
 #include <ddb/core/lie_poisson_system.h>
+#include <ddb/integrators/relax.h>
+#include <ddb/integrators/steady_state_probe.h>
 
 #include <Eigen/Core>
 #include <complex>
@@ -18,14 +20,16 @@
 namespace ddb::compare {
 
 /// <method>.csv rows as they are computed (docs/file-formats.md): t, μ, energy,
-/// Casimirs.
+/// Casimirs, the step h that reached the state and its residual r (SteadyStateProbe).
 template <class G>
 class TrajectoryCsv {
  public:
   using Dual = typename G::template Dual<double>;
 
-  TrajectoryCsv(app::AtomicFile& file, const LiePoissonSystem<G>& system)
-      : file_(file), system_(system), row_(G::kDim + 2 + G::kNumCasimirs) {
+  /// `at`: relax()'s description of the state passed to operator(), kept by the caller
+  /// (its h is written).
+  TrajectoryCsv(app::AtomicFile& file, const LiePoissonSystem<G>& system, const RelaxState& at)
+      : file_(file), system_(system), at_(at), probe_(system), row_(G::kDim + 4 + G::kNumCasimirs) {
     std::string header = "t";
     for (int i = 1; i <= G::kDim; ++i) header += ",m" + std::to_string(i);
     header += ",energy";
@@ -34,7 +38,7 @@ class TrajectoryCsv {
     } else {
       for (int i = 1; i <= G::kNumCasimirs; ++i) header += ",casimir" + std::to_string(i);
     }
-    file_.write(header + "\n");
+    file_.write(header + ",h,residual\n");
   }
 
   void operator()(long, double t, const Dual& mu) {
@@ -43,18 +47,23 @@ class TrajectoryCsv {
     row_.put(system_.energy(mu));
     const auto c = system_.casimirs(mu);
     for (int i = 0; i < G::kNumCasimirs; ++i) row_.put(c(i));
+    row_.put(at_.h);
+    probe_.evaluate(mu);
+    row_.put(probe_.residual());
     row_.writeTo(file_);
   }
 
  private:
   app::AtomicFile& file_;
   const LiePoissonSystem<G>& system_;
+  const RelaxState& at_;
+  SteadyStateProbe<G> probe_;
   app::CsvRow row_;
 };
 
 /// <method>.csv rows of a matrix state (SO(N), SU(N); docs/file-formats.md): t, energy,
-/// the spectrum's relative drift and ‖μ‖_F. The N² entries are not written: the final
-/// state is in summary.json.
+/// the spectrum's relative drift, ‖μ‖_F, the step h that reached the state and its
+/// residual r. The N² entries are not written: the final state is in summary.json.
 template <class G>
 class MatrixTrajectoryCsv {
  public:
@@ -62,9 +71,11 @@ class MatrixTrajectoryCsv {
 
   /// `drift`: the spectrum drift of the state passed to operator(), kept by the caller,
   /// which computes it for every state (casimir_drift is a maximum over all of them).
-  MatrixTrajectoryCsv(app::AtomicFile& file, const LiePoissonSystem<G>& system, const double& drift)
-      : file_(file), system_(system), drift_(drift), row_(4) {
-    file_.write("t,energy,casimir_drift,norm\n");
+  /// `at` as TrajectoryCsv's.
+  MatrixTrajectoryCsv(app::AtomicFile& file, const LiePoissonSystem<G>& system, const double& drift,
+                      const RelaxState& at)
+      : file_(file), system_(system), drift_(drift), at_(at), probe_(system), row_(6) {
+    file_.write("t,energy,casimir_drift,norm,h,residual\n");
   }
 
   void operator()(long, double t, const Dual& mu) {
@@ -72,6 +83,9 @@ class MatrixTrajectoryCsv {
     row_.put(system_.energy(mu));
     row_.put(drift_);
     row_.put(mu.norm());
+    row_.put(at_.h);
+    probe_.evaluate(mu);
+    row_.put(probe_.residual());
     row_.writeTo(file_);
   }
 
@@ -79,6 +93,8 @@ class MatrixTrajectoryCsv {
   app::AtomicFile& file_;
   const LiePoissonSystem<G>& system_;
   const double& drift_;
+  const RelaxState& at_;
+  SteadyStateProbe<G> probe_;
   app::CsvRow row_;
 };
 
@@ -96,6 +112,12 @@ struct MethodResult {
   long failed_step = 0;
   double err_final = 0.0, casimir_drift = 0.0, runtime_s = 0.0;
   int timed_runs = 1;
+  // relax()'s account (docs/steady-states.md): why the run stopped, r at the final state,
+  // the steps the step control rejected and the last step taken.
+  std::string stop;
+  bool steady = false;
+  double residual_final = 0.0, h_final = 0.0;
+  long steps_rejected = 0;
 };
 
 /// A state for summary.json: its numbers, or for a matrix {"re": N rows, "im": N rows}

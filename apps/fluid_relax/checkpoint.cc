@@ -23,10 +23,10 @@ void putOptions(BinaryRecordWriter& out, const Options& o) {
   out.put(o.every);
   out.put(o.seed);
   for (const std::string* text : {&o.alpha, &o.h, &o.t_end, &o.init, &o.init_file, &o.method,
-                                  &o.until_steady, &o.adaptive_tol}) {
+                                  &o.relax.until_steady, &o.relax.adaptive_tol}) {
     out.put(*text);
   }
-  out.put(o.adaptive);
+  out.put(o.relax.adaptive);
   out.put(o.h5);
   out.put(o.animate);
 }
@@ -38,10 +38,10 @@ void getOptions(BinaryRecordReader& in, Options& o) {
   in.get(o.every);
   in.get(o.seed);
   for (std::string* text : {&o.alpha, &o.h, &o.t_end, &o.init, &o.init_file, &o.method,
-                            &o.until_steady, &o.adaptive_tol}) {
+                            &o.relax.until_steady, &o.relax.adaptive_tol}) {
     in.get(*text);
   }
-  in.get(o.adaptive);
+  in.get(o.relax.adaptive);
   in.get(o.h5);
   in.get(o.animate);
 }

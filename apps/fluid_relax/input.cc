@@ -48,26 +48,13 @@ void requireRepresentableStep(const CLI::App& cli, const Options& o, const Setti
 
 /// --until-steady, --adaptive and --adaptive-tol into s.relax (the caps are set later).
 void readRelaxOptions(const Options& o, Settings& s) {
-  if (!o.until_steady.empty()) {
-    s.relax.tolerance = app::parseNumber("--until-steady", o.until_steady, o.until_steady);
-    if (!(s.relax.tolerance > 0 && s.relax.tolerance < 1)) {
-      app::usageError("--until-steady", o.until_steady, "must be in (0, 1)");
-    }
-  }
-  s.relax.control.adaptive = o.adaptive;
-  if (o.adaptive && !findMethod(o.method)->keeps_casimirs) {
+  app::readRelaxFlags(o.relax, s.relax);
+  if (o.relax.adaptive && !findMethod(o.method)->keeps_casimirs) {
     app::usageError("--adaptive", o.method,
                     "needs a method that keeps the Casimirs (the DDB family), not this --method");
   }
-  if (o.adaptive && s.alpha == 0) {
+  if (o.relax.adaptive && s.alpha == 0) {
     app::usageError("--adaptive", o.alpha, "needs --alpha != 0 (the energy must move)");
-  }
-  if (!o.adaptive_tol.empty()) {
-    if (!o.adaptive) app::usageError("--adaptive-tol", o.adaptive_tol, "needs --adaptive");
-    s.relax.control.tolerance = app::parseNumber("--adaptive-tol", o.adaptive_tol, o.adaptive_tol);
-    if (!(s.relax.control.tolerance > 0 && s.relax.control.tolerance < 1)) {
-      app::usageError("--adaptive-tol", o.adaptive_tol, "must be in (0, 1)");
-    }
   }
 }
 
@@ -133,7 +120,7 @@ Settings settings(const CLI::App& cli, const Options& o) {
   requireRepresentableStep(cli, o, s);
   // With --adaptive, --t-end caps the time and --steps the accepted steps; without,
   // both are the step count.
-  const bool time_cap = by_time && o.adaptive;
+  const bool time_cap = by_time && o.relax.adaptive;
   s.relax.max_steps = time_cap ? kMaxSteps : s.steps;
   if (time_cap) s.relax.t_end = t_end;
   // Only valid input is warned about: bad input gives its one line and nothing else.

@@ -1,6 +1,5 @@
 #include "fluid_relax/options.h"
 
-#include <ddb/integrators/energy_step_control.h>
 #include <ddb/integrators/method_table.h>
 
 #include "common/cli.h"
@@ -32,16 +31,11 @@ void addOptions(CLI::App& cli, Options& o) {
   cli.add_option("--t-end", o.t_end,
                  "final time: round(T/h) steps of the given --h, or with the default h the "
                  "smallest step count whose equal steps are no longer than it");
-  cli.add_option("--until-steady", o.until_steady,
-                 "stop when r = ||[P,W]||_F/(||P||_F ||W||_F) <= TOL, 0 < TOL < 1 (--steps or "
-                 "--t-end is then the cap; summary.json says which stopped the run)");
-  cli.add_flag("--adaptive", o.adaptive,
-               "choose h by the energy (docs/steady-states.md): a DDB-family method with "
-               "alpha != 0; --h is the first step, --steps caps accepted steps");
-  cli.add_option("--adaptive-tol", o.adaptive_tol,
-                 "with --adaptive: tolerance on |dE/(h dE/dt) - 1| per step, in (0, 1) "
-                 "(default " +
-                     app::number(StepSizeControl().tolerance) + ")");
+  app::addRelaxFlags(cli, o.relax,
+                     "stop when r = ||[P,W]||_F/(||P||_F ||W||_F) <= TOL, 0 < TOL < 1 (--steps or "
+                     "--t-end is then the cap; summary.json says which stopped the run)",
+                     "choose h by the energy (docs/steady-states.md): a DDB-family method with "
+                     "alpha != 0; --h is the first step, --steps caps accepted steps");
   app::addSeedOption(cli, o.seed, "seed of the initial vorticity");
   cli.add_option("--init", o.init, "initial vorticity (listed below)")->capture_default_str();
   cli.add_option("--init-file", o.init_file,

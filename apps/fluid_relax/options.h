@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/logging.h"
+#include "common/relax_flags.h"
 
 namespace ddb::fluid {
 
@@ -35,11 +36,11 @@ struct Options {
   long n = 32, steps = 0, every = 1;
   std::uint64_t seed = 1;
   std::string alpha = "0.5", h, t_end, init = "random", init_file, method = "ddb-cay";
-  std::string until_steady, adaptive_tol;  // numbers as text; empty: not given
   std::string out = "results-fluid";
+  app::RelaxFlags relax;      // --until-steady, --adaptive, --adaptive-tol
   long checkpoint_every = 0;  // steps; 0: every kCheckpointSeconds of wall time
   std::string resume;         // the run folder to resume, or empty
-  bool plot = false, adaptive = false;
+  bool plot = false;
   bool h5 = false, animate = false;  // fluid.hdf5; its animation (implies h5)
   app::LogFlags log;
 };
