@@ -1,10 +1,10 @@
 // fluid-relax's checkpoints, --resume and stop signals (docs/file-formats.md,
 // "Checkpoints"). The reference is the uninterrupted run: a run killed with SIGKILL at
 // whatever step it reached, or stopped by SIGINT/SIGTERM, and resumed, must end with
-// history.csv, W_final.csv, the ω files and summary.json (runtime_s aside) byte-identical
-// to it; so must a finished run extended by --resume --steps. A checkpoint that is
-// corrupted or truncated, a flag that would change the run and a cap already reached are
-// refused with exit status 2, and nothing in the folder changes.
+// history.csv, W_final.csv, the ω files, summary.json (runtime_s aside) and the final
+// checkpoint byte-identical to it; so must a finished run extended by --resume --steps. A
+// checkpoint that is corrupted or truncated, a flag that would change the run and a cap
+// already reached are refused with exit status 2, and nothing in the folder changes.
 #include <gmock/gmock.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -22,7 +22,7 @@ namespace {
 using namespace ddb::test;
 
 const std::vector<std::string> kOutputs{"history.csv", "W_final.csv", "omega_initial.csv",
-                                        "omega_final.csv"};
+                                        "checkpoint.ddb", "omega_final.csv"};
 // N = 12 from a seeded random vorticity, rows every 7 steps (so that runs end on held-back
 // rows) and a checkpoint every 50.
 const std::string kRun = "--quiet --n 12 --seed 4 --every 7 --checkpoint-every 50";

@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <sstream>
 
 #include "common/atomic_file.h"
@@ -84,8 +85,10 @@ void getSettings(BinaryRecordReader& in, Settings& s) {
 GivenFlags givenFlags(const CLI::App& cli) {
   GivenFlags given;
   for (const CLI::Option* option : cli.get_options()) {
-    // The folder is not part of the run: a checkpoint is the same in any folder.
-    if (option->count() == 0 || option->get_name() == "--out") continue;
+    static const std::set<std::string> kFree{
+        "--out",  "--resume",  "--steps", "--t-end", "--checkpoint-every",
+        "--plot", "--verbose", "--quiet"};
+    if (option->count() == 0 || kFree.count(option->get_name()) > 0) continue;
     std::string text;
     for (const std::string& result : option->results()) text += (text.empty() ? "" : ",") + result;
     given[option->get_name()] = text;

@@ -24,7 +24,10 @@ namespace ddb::fluid {
 
 constexpr const char* kCheckpointFile = "checkpoint.ddb";
 
-/// The flags of a command line as given: name → value text ("" for a flag without one).
+/// The flags of a command line that define the run, as given: name → value text. The
+/// others (--out, --resume, --steps, --t-end, --checkpoint-every, --plot, --verbose,
+/// --quiet) do not change the states a run computes: a resumed run may give them anew, and
+/// a checkpoint does not record them, so that it is the same whatever they were.
 using GivenFlags = std::map<std::string, std::string>;
 GivenFlags givenFlags(const CLI::App& cli);
 

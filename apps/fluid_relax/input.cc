@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 #include <utility>
 
 #include "common/cli.h"
@@ -134,12 +133,8 @@ Settings settings(const CLI::App& cli, const Options& o) {
 }
 
 void resumeSettings(const CLI::App& cli, const Options& given, Checkpoint& c) {
-  // Flags that do not change the states a run computes.
-  static const std::set<std::string> kFree{
-      "--resume", "--steps",   "--t-end", "--out",
-      "--plot",   "--verbose", "--quiet", "--checkpoint-every"};
+  // The run-defining flags given now must be those it ran with (givenFlags skips the others).
   for (const auto& [flag, text] : givenFlags(cli)) {
-    if (kFree.count(flag) > 0) continue;
     // The value the run used: as given then, or the default it took.
     const auto recorded = c.given.find(flag);
     const std::string used = recorded != c.given.end() ? recorded->second : defaultText(c, flag);
