@@ -45,6 +45,15 @@ F real(const char* name) {
   return reinterpret_cast<F>(::dlsym(RTLD_NEXT, name));
 }
 
+/// fopen or fopen64 (`real_name`), failing with EACCES for a matching name opened to write.
+std::FILE* openFor(const char* name, const char* mode, const char* real_name) {
+  if (mode[0] != 'r' && faultOn("create", name)) {
+    errno = EACCES;
+    return nullptr;
+  }
+  return real<std::FILE* (*)(const char*, const char*)>(real_name)(name, mode);
+}
+
 }  // namespace
 
 extern "C" {
@@ -86,24 +95,10 @@ int mkstemp(char* name) {
   return next(name);
 }
 
-// Journal files (history.csv's `.partial`) are created by fopen for writing.
-std::FILE* fopen(const char* name, const char* mode) {
-  if (mode[0] != 'r' && faultOn("create", name)) {
-    errno = EACCES;
-    return nullptr;
-  }
-  static const auto next = real<std::FILE* (*)(const char*, const char*)>("fopen");
-  return next(name, mode);
-}
+// Journal files (history.csv's `.partial`) are created by fopen (fopen64) for writing.
+std::FILE* fopen(const char* name, const char* mode) { return openFor(name, mode, "fopen"); }
 
-std::FILE* fopen64(const char* name, const char* mode) {
-  if (mode[0] != 'r' && faultOn("create", name)) {
-    errno = EACCES;
-    return nullptr;
-  }
-  static const auto next = real<std::FILE* (*)(const char*, const char*)>("fopen64");
-  return next(name, mode);
-}
+std::FILE* fopen64(const char* name, const char* mode) { return openFor(name, mode, "fopen64"); }
 
 int rename(const char* from, const char* to) {
   if (faultOn("rename", to)) {
