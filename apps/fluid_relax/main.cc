@@ -10,11 +10,13 @@
 #include <ddb/integrators/steady_state_probe.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
+#include <spdlog/fmt/chrono.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <optional>
 
 #include "common/atomic_file.h"
@@ -151,7 +153,8 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
     if (h5) h5->flush();
     writeCheckpoint(s.out, o, given, s, tally, history_bytes, h5_frames, run);
     last_checkpoint = std::chrono::steady_clock::now();
-    checkpoint_time = fmt::format("at step {}", run.state().k);
+    const std::time_t now = std::time(nullptr);
+    checkpoint_time = fmt::format("{:%H:%M:%S} (step {})", fmt::localtime(now), run.state().k);
     checkpointed_at = run.state().k;
     spdlog::debug("checkpoint at step {}: {} bytes in {:.3f} s", run.state().k,
                   std::filesystem::file_size(s.out / kCheckpointFile),
