@@ -58,9 +58,12 @@ void AtomicFile::commit() {
   if (std::fclose(file) != 0) fail("cannot write");
   if (std::rename(temporary_.c_str(), target_.c_str()) != 0) fail("cannot rename over");
   temporary_.clear();
-  // The rename is durable once the folder entry is on disk.
+  syncFolderOf(target_);
+}
+
+void syncFolderOf(const std::filesystem::path& file) {
   const std::filesystem::path folder =
-      target_.has_parent_path() ? target_.parent_path() : std::filesystem::path(".");
+      file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
   const int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY);
   if (dir >= 0) {
     ::fsync(dir);

@@ -38,6 +38,9 @@ class AtomicFile {
   std::FILE* file_ = nullptr;
 };
 
+/// Fsyncs the folder holding `file`: a rename into it is durable once its entry is on disk.
+void syncFolderOf(const std::filesystem::path& file);
+
 /// The whole content at once, through AtomicFile.
 void writeFileAtomically(const std::filesystem::path& target, std::string_view content);
 

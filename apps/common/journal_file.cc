@@ -1,6 +1,5 @@
 #include "common/journal_file.h"
 
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -9,23 +8,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/atomic_file.h"
 #include "common/exit_status.h"
 
 namespace ddb::app {
-
-namespace {
-
-void syncFolderOf(const std::filesystem::path& file) {
-  const std::filesystem::path folder =
-      file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
-  const int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY);
-  if (dir >= 0) {
-    ::fsync(dir);
-    ::close(dir);
-  }
-}
-
-}  // namespace
 
 std::filesystem::path JournalFile::partialOf(const std::filesystem::path& target) {
   return target.string() + ".partial";
