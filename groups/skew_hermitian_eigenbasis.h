@@ -69,8 +69,17 @@ class SkewHermitianEigenbasis {
   /// factor(η) = f(iη); `in` skew-Hermitian and factor(−η) = conj(factor(η)). out may be in.
   template <class Factor>
   void apply(const Factor& factor, double scale, const Matrix& in, Matrix& out) {
-    const Complex& V = vectors();
     const Eigen::VectorXd& theta = phases();
+    applyEntrywise(
+        [&](Eigen::Index a, Eigen::Index b) { return factor(scale * (theta(a) - theta(b))); }, in,
+        out);
+  }
+
+  /// out = V [F ∘ (Vᴴ in V)] Vᴴ with F_ab = weight(a, b) and weight(b, a) = conj(weight(a, b)),
+  /// so that skew-Hermitian `in` maps to skew-Hermitian out. out may be in.
+  template <class Weight>
+  void applyEntrywise(const Weight& weight, const Matrix& in, Matrix& out) {
+    const Complex& V = vectors();
     if constexpr (kReal) {
       hermitian_ = in.template cast<std::complex<double>>();
       product_.noalias() = hermitian_ * V;
@@ -79,9 +88,7 @@ class SkewHermitianEigenbasis {
     }
     hat_.noalias() = V.adjoint() * product_;
     for (Eigen::Index b = 0; b < hat_.cols(); ++b) {
-      for (Eigen::Index a = 0; a < hat_.rows(); ++a) {
-        hat_(a, b) *= factor(scale * (theta(a) - theta(b)));
-      }
+      for (Eigen::Index a = 0; a < hat_.rows(); ++a) hat_(a, b) *= weight(a, b);
     }
     product_.noalias() = V * hat_;
     hat_.noalias() = product_ * V.adjoint();
@@ -91,6 +98,20 @@ class SkewHermitianEigenbasis {
       out = hat_;
     }
     makeSkewHermitian(out);
+  }
+
+  /// The phases of a skew-Hermitian y on x's eigenvectors: π_a = Im (Vᴴ y V)_aa (y's
+  /// eigenvalues iπ_a when y commutes with x). One product.
+  void diagonalPhasesOf(const Matrix& y, Eigen::VectorXd& out) {
+    const Complex& V = vectors();
+    if constexpr (kReal) {
+      hermitian_ = y.template cast<std::complex<double>>();
+      product_.noalias() = hermitian_ * V;
+    } else {
+      product_.noalias() = y * V;
+    }
+    out.resize(V.cols());
+    for (Eigen::Index a = 0; a < V.cols(); ++a) out(a) = V.col(a).dot(product_.col(a)).imag();
   }
 
   /// out = exp(scale·x) = I + V diag(e^{i scale θ} − 1) Vᴴ: formed as V diag(e^{iθ}) Vᴴ it is

@@ -3,8 +3,9 @@
 // tolerance, or at a cap on the accepted steps or on the time, or at a failure, and says which.
 // With StepSizeControl::adaptive the steps are chosen by EnergyStepControl (for the Casimir-keeping
 // methods: every accepted step keeps the state on the orbit and moves the energy the way the flow
-// does); without, every step has the first h, as in runMethod(). The sink sees every accepted
-// state, in order, as it is computed.
+// does); without, every step has the first h, as in runMethod(). With RelaxOptions::newton there is
+// no method and no time: each step is an iteration of OrbitNewton, Newton's method for a critical
+// point of H on the orbit. The sink sees every accepted state, in order, as it is computed.
 #pragma once
 
 #include <ddb/core/binary_record.h>
@@ -12,11 +13,13 @@
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/integrators/energy_step_control.h>
 #include <ddb/integrators/one_step_method.h>
+#include <ddb/integrators/orbit_newton.h>
 #include <ddb/integrators/steady_state_probe.h>
 
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -52,11 +55,15 @@ struct RelaxOptions {
   long max_steps = 0;      ///< cap on accepted steps
   double t_end = std::numeric_limits<double>::infinity();  ///< cap on the time
   StepSizeControl control;
+  /// Search by OrbitNewton instead of integrating: needs a tolerance and no time cap; a
+  /// state's h is the length of the step that reached it on the orbit, and t stays 0.
+  bool newton = false;
 };
 
 /// What the sink sees with each accepted state: its index k, time, the step that reached
-/// it (0 for k = 0), its energy H and residual r (NaN unless a tolerance or the step
-/// control needs it: SteadyStateProbe costs four products on matrix groups).
+/// it (0 for k = 0; with newton, its length ‖x‖ on the orbit), its energy H and residual r (NaN
+/// unless a tolerance or the step control needs it: SteadyStateProbe costs four products on matrix
+/// groups).
 struct RelaxState {
   long k = 0;
   double t = 0.0, h = 0.0, energy = 0.0, residual = 0.0;
@@ -70,7 +77,7 @@ struct RelaxResult {
   Dual final;
   RelaxState last;  // of `final`
   RelaxStop stop = RelaxStop::kFailure;
-  long steps_rejected = 0;  // tried and retried smaller (adaptive only)
+  long steps_rejected = 0;  // tried and retried smaller (adaptive; newton: the halvings)
   double runtime_s = 0.0;   // wall time, sink included
   std::string failure;      // the message, for kFailure
   long failed_step = -1;    // index k of the step from state k that failed
@@ -108,24 +115,35 @@ class Relaxation {
   /// throw InvalidArgument; calls method.reset().
   Relaxation(OneStepMethod<G>& method, const LiePoissonSystem<G>& system, const Dual& mu0,
              double h0, const RelaxOptions& options)
-      : method_(method),
+      : method_(&method),
         system_(system),
         options_(checked(options)),
-        control_(options.control, requirePositive("h", h0)),
         probing_(options.control.adaptive || options.tolerance > 0),
         probe_(system) {
-    requireFinite("mu0", mu0);
-    result_.final = mu0;
-    result_.stop = RelaxStop::kFailure;
-    cursor().energy = system_.energy(mu0);
-    cursor().residual = residualAt(mu0);
-    if (options_.control.adaptive && probe_.energyRate() == 0 &&
-        state().residual > options_.tolerance) {
-      throwInvalid("adaptive", "true", "needs dissipation: dH/dt = 0 at mu0 (alpha = 0?)");
+    if (options.newton) throwInvalid("newton", "true", "a Newton search takes no method and no h");
+    control_.emplace(options.control, requirePositive("h", h0));
+    start(mu0, "adaptive");
+    h_stretch_ = control_->h();
+    method_->reset();
+  }
+
+  /// A Newton search from mu0 (options.newton; OrbitNewton): until r ≤ options.tolerance or
+  /// options.max_steps iterations. Bad arguments throw InvalidArgument.
+  Relaxation(const LiePoissonSystem<G>& system, const Dual& mu0, const RelaxOptions& options)
+      : system_(system), options_(checked(options)), probing_(true), probe_(system) {
+    if (!options.newton) throwInvalid("newton", "false", "this constructor is the Newton search's");
+    if (options.control.adaptive) {
+      throwInvalid("adaptive", "true", "a Newton search chooses its own steps");
     }
-    h_stretch_ = control_.h();
-    trial_ = mu0;
-    method_.reset();
+    if (!(options.tolerance > 0)) {
+      throwInvalid("tolerance", formatValue(options.tolerance), "a Newton search needs one > 0");
+    }
+    if (std::isfinite(options.t_end)) {
+      throwInvalid("t_end", formatValue(options.t_end),
+                   "a Newton search simulates no time: cap it by max_steps");
+    }
+    start(mu0, "newton");
+    newton_.emplace(system, probe_.energyRate() < 0 ? 1.0 : -1.0);
   }
 
   /// The accepted state: its index, time, step, energy and residual, and the state itself.
@@ -139,6 +157,7 @@ class Relaxation {
   /// why). A failed step is recorded in the result; the state stays the last accepted one.
   bool advance() {
     if (stopped_) return false;
+    if (newton_) return advanceByNewton();
     while (true) {
       if (probing_ && state().residual <= options_.tolerance) return stop(RelaxStop::kSteady);
       if (state().k >= options_.max_steps) return stop(RelaxStop::kStepCap);
@@ -146,28 +165,28 @@ class Relaxation {
       if (std::isfinite(options_.t_end) && left <= 1e-12 * options_.t_end) {
         return stop(RelaxStop::kTimeCap);
       }
-      const double h = std::min(control_.h(), left);
+      const double h = std::min(control_->h(), left);
       const double rate = probe_.energyRate();
       trial_ = result_.final;
       std::string rejected;
       try {
-        method_.advance(trial_, state().t, h);
-        if (!trial_.allFinite()) throw NonFiniteState(method_.name(), -1, state().t, h, trial_);
+        method_->advance(trial_, state().t, h);
+        if (!trial_.allFinite()) throw NonFiniteState(method_->name(), -1, state().t, h, trial_);
       } catch (const SolveFailure& failure) {
         if (!options_.control.adaptive) {
           result_.failure = detail::messageAtStep(failure, state().k, state().t, h);
           result_.failed_step = state().k;
           return stop(RelaxStop::kFailure);
         }
-        rejected = control_.reject(failure.what());
+        rejected = control_->reject(failure.what());
       }
       const double energy = rejected.empty() ? system_.energy(trial_) : 0.0;
       if (options_.control.adaptive && rejected.empty()) {
-        rejected = control_.judge(h, rate, state().energy, energy);
+        rejected = control_->judge(h, rate, state().energy, energy);
       }
       if (!rejected.empty()) {
         ++result_.steps_rejected;
-        if (control_.exhausted()) {
+        if (control_->exhausted()) {
           result_.failure = "relax: step " + std::to_string(state().k) +
                             " from t = " + formatValue(state().t) +
                             " rejected down to h = " + formatValue(h) +
@@ -224,8 +243,12 @@ class Relaxation {
     out.put(t_start_);
     out.put(h_stretch_);
     out.put(j_);
-    control_.save(out);
-    method_.saveWarmStart(out);
+    if (newton_) {
+      newton_->save(out);
+    } else {
+      control_->save(out);
+      method_->saveWarmStart(out);
+    }
   }
   /// Continues from what save() wrote, with this object's method, system and options.
   void load(BinaryRecordReader& in) {
@@ -247,8 +270,12 @@ class Relaxation {
     in.get(t_start_);
     in.get(h_stretch_);
     in.get(j_);
-    control_.load(in);
-    method_.loadWarmStart(in);
+    if (newton_) {
+      newton_->load(in);
+    } else {
+      control_->load(in);
+      method_->loadWarmStart(in);
+    }
     // The probe as the uninterrupted run left it: evaluated at the accepted state.
     if (probing_) probe_.evaluate(result_.final);
     stopped_ = false;
@@ -267,6 +294,49 @@ class Relaxation {
     return options;
   }
   RelaxState& cursor() { return result_.last; }
+
+  // The first state; `needs` names the option that needs dissipation at mu0 when not steady.
+  void start(const Dual& mu0, const char* needs) {
+    requireFinite("mu0", mu0);
+    result_.final = mu0;
+    result_.stop = RelaxStop::kFailure;
+    cursor().energy = system_.energy(mu0);
+    cursor().residual = residualAt(mu0);
+    const bool directed = options_.control.adaptive || options_.newton;
+    if (directed && probe_.energyRate() == 0 && state().residual > options_.tolerance) {
+      throwInvalid(needs, "true", "needs dissipation: dH/dt = 0 at mu0 (alpha = 0?)");
+    }
+    trial_ = mu0;
+  }
+
+  // One OrbitNewton iteration; t stays, h is the step's length on the orbit.
+  bool advanceByNewton() {
+    if (state().residual <= options_.tolerance) return stop(RelaxStop::kSteady);
+    if (state().k >= options_.max_steps) return stop(RelaxStop::kStepCap);
+    typename OrbitNewton<G>::Report report;
+    double energy = state().energy;
+    bool accepted = false;
+    std::string why = "no step length along its direction was accepted (" +
+                      std::to_string(OrbitNewton<G>::kMaxHalvings) + " halvings)";
+    try {
+      accepted = newton_->advance(result_.final, energy, report);
+    } catch (const SolveFailure& failure) {
+      why = failure.what();
+    }
+    if (!accepted) {
+      result_.failure = "relax: Newton step " + std::to_string(state().k) +
+                        " from r = " + formatValue(state().residual) + ": " + why;
+      result_.failed_step = state().k;
+      return stop(RelaxStop::kFailure);
+    }
+    result_.steps_rejected += report.halvings;
+    RelaxState& s = cursor();
+    ++s.k;
+    s.h = report.length;
+    s.energy = energy;
+    s.residual = residualAt(result_.final);
+    return true;
+  }
   bool stop(RelaxStop why) {
     result_.stop = why;
     stopped_ = true;
@@ -280,10 +350,11 @@ class Relaxation {
     return probe_.residual();
   }
 
-  OneStepMethod<G>& method_;
+  OneStepMethod<G>* method_ = nullptr;  // none in a Newton search
   const LiePoissonSystem<G>& system_;
   RelaxOptions options_;
-  EnergyStepControl control_;
+  std::optional<EnergyStepControl> control_;  // step control (fixed or adaptive)
+  std::optional<OrbitNewton<G>> newton_;      // or the Newton search
   bool probing_;
   SteadyStateProbe<G> probe_;
   RelaxResult<G> result_;
@@ -293,6 +364,22 @@ class Relaxation {
   Dual trial_;
 };
 
+namespace detail {
+
+/// Runs `relaxation` to its stop, showing the sink every accepted state, the first included.
+template <class G, class Sink>
+RelaxResult<G> runToStop(Relaxation<G>& relaxation, Sink&& sink) {
+  const auto start = std::chrono::steady_clock::now();
+  sink(relaxation.state(), relaxation.current());
+  while (relaxation.advance()) sink(relaxation.state(), relaxation.current());
+  RelaxResult<G> result = relaxation.result();
+  result.runtime_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace detail
+
 /// Relaxes mu0 with `method` from the step h0 (options: when to stop, how to choose h);
 /// sink(state, μ) sees every accepted state, the first included. Bad arguments throw
 /// InvalidArgument; a failed step is recorded in the result.
@@ -300,14 +387,8 @@ template <class G, class Sink>
 RelaxResult<G> relax(OneStepMethod<G>& method, const LiePoissonSystem<G>& system,
                      const typename G::template Dual<double>& mu0, double h0,
                      const RelaxOptions& options, Sink&& sink) {
-  const auto start = std::chrono::steady_clock::now();
   Relaxation<G> relaxation(method, system, mu0, h0, options);
-  sink(relaxation.state(), relaxation.current());
-  while (relaxation.advance()) sink(relaxation.state(), relaxation.current());
-  RelaxResult<G> result = relaxation.result();
-  result.runtime_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return result;
+  return detail::runToStop(relaxation, sink);
 }
 
 /// relax() with no sink.
@@ -317,6 +398,16 @@ RelaxResult<G> relax(OneStepMethod<G>& method, const LiePoissonSystem<G>& system
                      const RelaxOptions& options) {
   return relax(method, system, mu0, h0, options,
                [](const RelaxState&, const typename G::template Dual<double>&) {});
+}
+
+/// The Newton search (options.newton: OrbitNewton) from mu0, with the same stops, sink and
+/// result as relax(); t stays 0.
+template <class G, class Sink>
+RelaxResult<G> relaxByNewton(const LiePoissonSystem<G>& system,
+                             const typename G::template Dual<double>& mu0,
+                             const RelaxOptions& options, Sink&& sink) {
+  Relaxation<G> relaxation(system, mu0, options);
+  return detail::runToStop(relaxation, sink);
 }
 
 }  // namespace ddb

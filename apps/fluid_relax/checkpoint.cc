@@ -14,7 +14,7 @@ namespace ddb::fluid {
 namespace {
 
 // The layout's version: a checkpoint of another layout is refused, not misread.
-constexpr std::int32_t kLayout = 1;
+constexpr std::int32_t kLayout = 2;
 constexpr const char* kTag = "fluid-relax checkpoint";
 
 void putOptions(BinaryRecordWriter& out, const Options& o) {
@@ -28,6 +28,7 @@ void putOptions(BinaryRecordWriter& out, const Options& o) {
     out.put(*text);
   }
   out.put(o.relax.adaptive);
+  out.put(o.newton);
   out.put(o.h5);
   out.put(o.animate);
 }
@@ -43,6 +44,7 @@ void getOptions(BinaryRecordReader& in, Options& o) {
     in.get(*text);
   }
   in.get(o.relax.adaptive);
+  in.get(o.newton);
   in.get(o.h5);
   in.get(o.animate);
 }
@@ -59,6 +61,7 @@ void putSettings(BinaryRecordWriter& out, const Settings& s) {
   out.put(s.relax.t_end);
   out.put(s.relax.control.adaptive);
   out.put(s.relax.control.tolerance);
+  out.put(s.relax.newton);
   out.put(s.init);
 }
 
@@ -74,6 +77,7 @@ void getSettings(BinaryRecordReader& in, Settings& s) {
   in.get(s.relax.t_end);
   in.get(s.relax.control.adaptive);
   in.get(s.relax.control.tolerance);
+  in.get(s.relax.newton);
   in.get(s.init);
   if (s.W0.rows() < 2 || s.W0.rows() != s.W0.cols() || !(s.h > 0)) {
     throw CorruptRecord("settings out of their domain");

@@ -45,9 +45,26 @@ void requireRepresentableStep(const CLI::App& cli, const Options& o, const Setti
   throw std::logic_error("a generated vorticity overflows: " + why);
 }
 
-/// --until-steady, --adaptive and --adaptive-tol into s.relax (the caps are set later).
-void readRelaxOptions(const Options& o, Settings& s) {
+/// --newton's requirements: a tolerance, no time and no step to choose, dissipation.
+void readNewton(const CLI::App& cli, const Options& o, Settings& s) {
+  for (const char* flag : {"--method", "--h", "--t-end", "--adaptive"}) {
+    if (cli.count(flag) > 0) {
+      throw app::UsageError(std::string("--newton, ") + flag +
+                            ": a Newton search has no method, step size or time (give --steps "
+                            "as its cap)");
+    }
+  }
+  if (o.relax.until_steady.empty()) {
+    throw app::UsageError("--newton: needs --until-steady TOL, the residual to stop at");
+  }
+  if (s.alpha == 0) app::usageError("--alpha", o.alpha, "--newton needs alpha != 0 (a direction)");
+  s.relax.newton = true;
+}
+
+/// --until-steady, --adaptive, --adaptive-tol and --newton into s.relax (the caps are set later).
+void readRelaxOptions(const CLI::App& cli, const Options& o, Settings& s) {
   app::readRelaxFlags(o.relax, s.relax);
+  if (o.newton) readNewton(cli, o, s);
   if (o.relax.adaptive && !findMethod(o.method)->keeps_casimirs) {
     app::usageError("--adaptive", o.method,
                     "needs a method that keeps the Casimirs (the DDB family), not this --method");
@@ -87,7 +104,7 @@ Settings settings(const CLI::App& cli, const Options& o) {
   if (cli.count("--checkpoint-every") > 0 && o.checkpoint_every < 1) {
     app::usageError("--checkpoint-every", std::to_string(o.checkpoint_every), "must be >= 1");
   }
-  readRelaxOptions(o, s);
+  readRelaxOptions(cli, o, s);
   app::InitialVorticity initial =
       app::initialVorticity(cli, {o.n, o.seed, o.init, o.init_file}, {kMaxN, ""});
   s.W0 = std::move(initial.W);
@@ -160,6 +177,9 @@ void resumeSettings(const CLI::App& cli, const Options& given, Checkpoint& c) {
     }
     o.steps = s.steps = s.relax.max_steps = given.steps;
     s.relax.t_end = std::numeric_limits<double>::infinity();
+  }
+  if (by_time && s.relax.newton) {
+    throw app::UsageError("--t-end: a Newton search has no time (give --steps with --resume)");
   }
   if (by_time) {
     const double t_end = app::parseNumber("--t-end", given.t_end, given.t_end);

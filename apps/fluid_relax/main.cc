@@ -73,10 +73,14 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   const auto system = makeZeitlinFluid(n, s.alpha);
   const auto& hamiltonian = dynamic_cast<const ZeitlinHamiltonian&>(system->hamiltonian());
   const ZeitlinDiagnostics diagnostics(hamiltonian);
-  const auto method = makeMethod<SUN>(o.method, system);
-  // The DDB methods' Legendre solver reports its iterations; rk4 has none.
-  const auto* legendre = dynamic_cast<const LegendreMethod<Cayley<SUN>>*>(method.get());
-  Relaxation<SUN> run(*method, *system, s.W0, s.h, s.relax);
+  const bool newton = s.relax.newton;
+  const std::string method_name = newton ? "newton" : o.method;
+  const auto method = makeMethod<SUN>(o.method, system);  // not used by a Newton search
+  // The DDB methods' Legendre solver reports its iterations; rk4 and Newton have none.
+  const auto* legendre =
+      newton ? nullptr : dynamic_cast<const LegendreMethod<Cayley<SUN>>*>(method.get());
+  Relaxation<SUN> run = newton ? Relaxation<SUN>(*system, s.W0, s.relax)
+                               : Relaxation<SUN>(*method, *system, s.W0, s.h, s.relax);
   Tally tally;
   if (resume != nullptr) {
     resumeFrom(*resume, run, o);
@@ -89,9 +93,15 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   if (resume != nullptr) {
     spdlog::info("resuming {} at step {}, t = {}", s.out.string(), run.state().k, run.state().t);
   }
-  spdlog::info("N = {}, alpha = {}, {} init{}, {}: {} steps of h = {}{} to t = {}", n, s.alpha,
-               s.init, s.init == "file" ? " " + o.init_file : "", o.method, s.steps, s.h,
-               s.default_h ? " (default)" : "", static_cast<double>(s.steps) * s.h);
+  const std::string init_text = s.init + " init" + (s.init == "file" ? " " + o.init_file : "");
+  if (newton) {
+    spdlog::info("N = {}, alpha = {}, {}, Newton search to r <= {}, at most {} iterations", n,
+                 s.alpha, init_text, s.relax.tolerance, s.steps);
+  } else {
+    spdlog::info("N = {}, alpha = {}, {}, {}: {} steps of h = {}{} to t = {}", n, s.alpha,
+                 init_text, o.method, s.steps, s.h, s.default_h ? " (default)" : "",
+                 static_cast<double>(s.steps) * s.h);
+  }
   const app::SpectrumDrift<SUN> spectrumDrift(s.W0);
 
   std::optional<HistoryCsv> history_csv;
@@ -125,9 +135,9 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
                                                                                       historyRow);
 
   const bool watch_energy =
-      app::EnergyRises::applies(findMethod(o.method)->keeps_casimirs, s.alpha);
+      app::EnergyRises::applies(newton || findMethod(o.method)->keeps_casimirs, s.alpha);
   app::Progress progress(o.log.quiet);
-  const std::string label = o.method + " N=" + std::to_string(n);
+  const std::string label = method_name + " N=" + std::to_string(n);
   auto last_checkpoint = std::chrono::steady_clock::now();
   std::string checkpoint_time = "none yet";
   long checkpointed_at = -1;  // the step of the last checkpoint
@@ -188,7 +198,7 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   history_csv->commit();
   if (h5) h5->flush();
   if (checkpointed_at != run.state().k) checkpoint(history_bytes, h5_frames);
-  tally.rises.warnIfAny(o.method);
+  tally.rises.warnIfAny(method_name);
 
   const RelaxResult<SUN>& result = run.result();
   const double runtime_s =
@@ -201,8 +211,8 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   summary["status"] = !result.ok() ? "FAILED" : interrupted ? "interrupted" : "ok";
   summary["n"] = n;
   summary["alpha"] = s.alpha;
-  summary["h"] = s.h;
-  summary["h_source"] = s.default_h ? "default" : "--h";
+  summary["h"] = newton ? app::Json() : app::Json(s.h);
+  summary["h_source"] = newton ? app::Json() : app::Json(s.default_h ? "default" : "--h");
   summary["steps"] = result.last.k;
   summary["steps_requested"] = s.steps;
   summary["t_end"] = result.last.t;
@@ -211,12 +221,13 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   summary["until_steady"] = s.relax.tolerance > 0 ? app::Json(s.relax.tolerance) : app::Json();
   summary["residual_final"] = residual_final;
   summary["adaptive"] = s.relax.control.adaptive;
+  summary["newton"] = newton;
   summary["adaptive_tol"] =
       s.relax.control.adaptive ? app::Json(s.relax.control.tolerance) : app::Json();
   summary["steps_rejected"] = result.steps_rejected;
   summary["h_final"] = result.last.h;
   summary["every"] = o.every;
-  summary["method"] = o.method;
+  summary["method"] = method_name;
   summary["init"] = s.init;
   summary["seed"] = s.init == "file" ? app::Json() : app::Json(o.seed);
   summary["init_file"] = s.init == "file" ? app::Json(o.init_file) : app::Json();

@@ -36,6 +36,10 @@ void addOptions(CLI::App& cli, Options& o) {
                      "--t-end is then the cap; summary.json says which stopped the run)",
                      "choose h by the energy (docs/steady-states.md): a DDB-family method with "
                      "alpha != 0; --h is the first step, --steps caps accepted steps");
+  cli.add_flag("--newton", o.newton,
+               "instead of time steps, Newton's method on the orbit for a steady state "
+               "(docs/steady-states.md): needs --until-steady, --steps caps its iterations; no "
+               "--method, --h, --t-end or --adaptive");
   app::addSeedOption(cli, o.seed, "seed of the initial vorticity");
   cli.add_option("--init", o.init, "initial vorticity (listed below)")->capture_default_str();
   cli.add_option("--init-file", o.init_file,

@@ -38,6 +38,7 @@ struct Options {
   std::string alpha = "0.5", h, t_end, init = "random", init_file, method = "ddb-cay";
   std::string out = "results-fluid";
   app::RelaxFlags relax;      // --until-steady, --adaptive, --adaptive-tol
+  bool newton = false;        // --newton: OrbitNewton's search instead of steps
   long checkpoint_every = 0;  // steps; 0: every kCheckpointSeconds of wall time
   std::string resume;         // the run folder to resume, or empty
   bool plot = false;

@@ -1,0 +1,284 @@
+// OrbitNewton: Newton's method for a steady state on the coadjoint orbit of μ₀
+// (docs/steady-states.md, "Newton on the orbit"). With a positive metric the double-bracket
+// flow stops exactly at the critical points of H on the orbit (dH/dt = −k(ad*_ξ μ, ad*_ξ μ),
+// Proposition 3.3), so a search for them need not follow the flow's time: its fast damped
+// modes bound every explicit step and its slow ones make the tail long (docs/steady-states.md,
+// "Measured"). The orbit is parametrised around μ by the Cayley conjugation
+//   μ(x) = Ad*_{cay x} μ,  x in the algebra,  d/dx H(μ(x))|₀ = −ad*_ξ μ,  ξ = ∂H/∂μ,
+// and the search minimises f = σH, σ = +1 where the flow lowers H (α > 0), −1 where it raises
+// it. Each iteration:
+//  1. the Newton direction v ≈ −J⁻¹∇f, ∇f = −σ ad*_ξ μ, by preconditioned conjugate
+//     gradients truncated à la Steihaug (at the trust radius Δ or at negative curvature),
+//     with J v = −σ(ad*_ξ δμ + ad*_{δξ} μ), δμ = ad*_v μ, δξ = D²H(μ)[δμ], the derivative
+//     of the gradient along v; stop at ‖res‖ ≤ min(½, √r)‖∇f‖ (superlinear convergence);
+//  2. the step μ' = μ(s v), s = 1, ½, ¼, … until accepted: f falls by kArmijo·s|⟨∇f, v⟩|
+//     up to rounding, or, where the model's decrease is below kResolvable roundings of f
+//     (energy differences measure nothing there), f does not rise beyond rounding and the
+//     residual r falls;
+//  3. Δ doubles (up to kMaxRadius) after a full step to the radius that the model predicted
+//     well, and shrinks after a poor or shortened one.
+// Every accepted state is a conjugate of the last (on the orbit: the Casimirs are kept to
+// rounding, as by the DDB steps) with f no higher beyond rounding: the energy moves the way
+// the flow moves it, at every step. The steady state reached is a critical point near the
+// path, not the flow's limit from μ₀ (docs/steady-states.md compares them).
+#pragma once
+
+#include <ddb/core/binary_record.h>
+#include <ddb/core/errors.h>
+#include <ddb/core/group_traits.h>
+#include <ddb/core/lie_poisson_system.h>
+#include <ddb/groups/cayley.h>
+#include <ddb/integrators/energy_step_control.h>
+#include <ddb/integrators/matrix_conjugation.h>
+#include <ddb/integrators/orbit_preconditioner.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <type_traits>
+#include <utility>
+
+namespace ddb {
+
+template <class G>
+class OrbitNewton {
+ public:
+  using Algebra = typename G::template Algebra<double>;
+  using Dual = typename G::template Dual<double>;
+
+  static constexpr double kFirstRadius = 0.1;  ///< Δ of the first step, on ‖x‖
+  static constexpr double kMaxRadius = 1.0;    ///< Δ's cap: cay x stays far from its pole
+  static constexpr double kArmijo = 1e-4;
+  static constexpr double kResolvable = 100.0;  ///< model decreases below this many roundings
+  static constexpr int kMaxHalvings = 30;       ///< of s, before the iteration fails
+  static constexpr int kCgPerDimension = 3;     ///< CG's cap, per entry of μ
+
+  /// What one accepted iteration did.
+  struct Report {
+    double length = 0.0;     ///< ‖s v‖, the step on the orbit
+    int halvings = 0;        ///< of s before the step was accepted
+    long cg_iterations = 0;  ///< Hessian products of the direction
+  };
+
+  /// sigma = +1 lowers H (the flow's direction with α > 0), −1 raises it.
+  OrbitNewton(const LiePoissonSystem<G>& system, double sigma)
+      : system_(system), sigma_(sigma > 0 ? 1.0 : -1.0) {}
+
+  /// One iteration from mu, with its energy: true if a step was accepted (mu and energy are
+  /// the new state's), false if none of kMaxHalvings step lengths was (mu unchanged).
+  bool advance(Dual& mu, double& energy, Report& report) {
+    if (!evaluated_) {
+      evaluate(mu, now_);
+      evaluated_ = true;
+    }
+    report = Report();
+    report.cg_iterations = direction(mu);
+    double slope = dot(now_.gradient, v_);
+    if (!(slope < 0)) {
+      // Not a descent direction (rounding near a steady state): the preconditioned gradient.
+      precondition(now_.gradient, v_);
+      v_ *= -std::min(1.0, radius_ / norm(v_));
+      slope = dot(now_.gradient, v_);
+    }
+    hessianTimes(now_, v_, jv_);
+    const double model = slope + 0.5 * dot(v_, jv_);  // f's change to second order, s = 1
+    double s = 1.0;
+    for (int halving = 0; halving <= kMaxHalvings; ++halving, s *= 0.5) {
+      x_ = s * v_;
+      if (!retract(mu, x_, trial_mu_)) continue;
+      const double trial_energy = system_.energy(trial_mu_);
+      if (!std::isfinite(trial_energy)) continue;
+      evaluate(trial_mu_, trial_);
+      const double rounding = energyRoundOff(energy, trial_energy);
+      const double fall = sigma_ * (trial_energy - energy);
+      const bool resolvable = std::abs(s * model) > kResolvable * rounding;
+      const bool accepted = resolvable ? fall <= kArmijo * s * slope + rounding
+                                       : fall <= rounding && trial_.relative < now_.relative;
+      if (!accepted) continue;
+      const double length = s * norm(v_);
+      if (resolvable) {
+        const double ratio = fall / (s * model);
+        if (s == 1.0 && ratio > 0.75 && length >= 0.99 * radius_) {
+          radius_ = std::min(2.0 * radius_, kMaxRadius);
+        } else if (ratio < 0.25 || s < 1.0) {
+          radius_ = std::max(0.25 * radius_, length);
+        }
+      }
+      roundoff_ = !resolvable;
+      std::swap(mu, trial_mu_);
+      std::swap(now_, trial_);
+      energy = trial_energy;
+      report.length = length;
+      report.halvings = halving;
+      return true;
+    }
+    return false;
+  }
+
+  /// Δ, for the record.
+  double radius() const { return radius_; }
+
+  /// The search's state besides μ (Δ, and whether the last step was past rounding).
+  void save(BinaryRecordWriter& out) const {
+    out.tag("orbit newton");
+    out.put(radius_);
+    out.put(static_cast<long>(roundoff_));
+  }
+  void load(BinaryRecordReader& in) {
+    in.expectTag("orbit newton");
+    long roundoff = 0;
+    in.get(radius_);
+    in.get(roundoff);
+    if (!(radius_ > 0 && radius_ <= kMaxRadius) || (roundoff != 0 && roundoff != 1)) {
+      throw CorruptRecord("orbit newton state");
+    }
+    roundoff_ = roundoff == 1;
+    evaluated_ = false;
+  }
+
+ private:
+  // At μ: ξ, the argument the Hamiltonian saw (matrix groups: Pμ) and ∇f = −σ ad*_ξ μ, with
+  // relative = ‖∇f‖/(‖ξ‖ ‖μ‖), the residual r of SteadyStateProbe.
+  struct Evaluation {
+    Dual argument;
+    Algebra xi, gradient;
+    double relative = 0.0;
+  };
+
+  void evaluate(const Dual& mu, Evaluation& e) {
+    if constexpr (isDynamicGroup<G>) {
+      allocate(mu);
+      if (e.argument.rows() != mu.rows()) {
+        for (Dual* m : {&e.argument, &e.xi, &e.gradient}) m->setZero(mu.rows(), mu.cols());
+      }
+      system_.velocityInto(mu, e.argument, e.xi);
+      bracket(e.argument, e.xi, e.gradient);
+    } else {
+      e.argument = mu;
+      e.xi = system_.velocity(mu);
+      e.gradient = Algebra(G::adDual(e.xi, mu));
+    }
+    e.gradient *= -sigma_;
+    const double scale = norm(e.xi) * norm(e.argument);
+    e.relative = scale > 0 ? norm(e.gradient) / scale : 0.0;
+  }
+
+  // out = J v at e: −σ(ad*_ξ δμ + ad*_{δξ} μ), δμ = ad*_v μ, δξ = D²H(μ)[δμ].
+  void hessianTimes(const Evaluation& e, const Algebra& v, Algebra& out) {
+    if constexpr (isDynamicGroup<G>) {
+      bracket(e.argument, v, moved_);  // ad*_v μ = [μ, v]
+      system_.velocityDerivativeInto(e.argument, moved_, product_, dxi_);
+      bracket(moved_, e.xi, out);
+      bracket(e.argument, dxi_, added_);
+      out += added_;
+    } else {
+      const Dual moved = G::adDual(v, e.argument);
+      const Algebra dxi = system_.hamiltonian().hessianTimes(e.argument, moved);
+      out = Algebra(G::adDual(e.xi, moved) + G::adDual(dxi, e.argument));
+    }
+    out *= -sigma_;
+  }
+
+  // v: truncated preconditioned CG on J v = −∇f within ‖v‖ ≤ Δ. Returns its iterations.
+  long direction(const Dual& mu) {
+    const Algebra& g = now_.gradient;
+    if constexpr (isDynamicGroup<G>) {
+      if (!preconditioner_.refresh(now_.argument, now_.xi)) {
+        throw NonFiniteState("orbit newton", -1, NAN, NAN, mu, "state");
+      }
+    }
+    v_ = Algebra::Zero(g.rows(), g.cols());
+    res_ = -g;
+    precondition(res_, z_);
+    p_ = z_;
+    double rz = dot(res_, z_);
+    const double stop = std::min(0.5, std::sqrt(now_.relative)) * norm(g);
+    const long cap = std::max<long>(100, kCgPerDimension * static_cast<long>(mu.size()));
+    long k = 0;
+    while (k < cap && norm(res_) > stop) {
+      hessianTimes(now_, p_, jv_);
+      ++k;
+      const double curvature = dot(p_, jv_);
+      if (curvature == 0.0 || (curvature < 0.0 && !roundoff_)) {
+        // Negative curvature: to the radius along p (the first time, the preconditioned
+        // gradient). Past rounding f cannot tell a saddle from a minimum: CG goes on.
+        if (k == 1) v_ = p_ * (radius_ / norm(p_));
+        break;
+      }
+      const double a = rz / curvature;
+      x_ = v_ + a * p_;
+      if (norm(x_) >= radius_) {
+        const double pp = dot(p_, p_), vp = dot(v_, p_), vv = dot(v_, v_);
+        const double tau = (-vp + std::sqrt(vp * vp + pp * (radius_ * radius_ - vv))) / pp;
+        v_ += tau * p_;
+        break;
+      }
+      std::swap(v_, x_);
+      res_ -= a * jv_;
+      precondition(res_, z_);
+      const double rz_next = dot(res_, z_);
+      p_ = z_ + (rz_next / rz) * p_;
+      rz = rz_next;
+    }
+    return k;
+  }
+
+  void precondition(const Algebra& in, Algebra& out) {
+    if constexpr (isDynamicGroup<G>) {
+      preconditioner_.apply(in, out);
+    } else {
+      out = in;
+    }
+  }
+
+  // out = Ad*_{cay x} mu; false if it is not finite.
+  bool retract(const Dual& mu, const Algebra& x, Dual& out) {
+    try {
+      if constexpr (isDynamicGroup<G>) {
+        conjugation_.prepare(x);
+        out = mu;
+        conjugation_.apply(out);
+      } else {
+        out = G::cayTransport(x, Algebra::Zero().eval(), mu);
+      }
+    } catch (const SolveFailure&) {
+      return false;
+    }
+    return out.allFinite();
+  }
+
+  // out = [a, b] = ab − (ab)ᴴ for skew-Hermitian (real: skew-symmetric) a, b: one product.
+  void bracket(const Dual& a, const Dual& b, Dual& out) {
+    product_.noalias() = a * b;
+    out = product_ - product_.adjoint();
+  }
+
+  void allocate(const Dual& like) {
+    if (product_.rows() == like.rows()) return;
+    for (Dual* m : {&product_, &moved_, &dxi_, &added_}) m->setZero(like.rows(), like.cols());
+  }
+
+  template <class A>
+  static double dot(const A& a, const A& b) {
+    return std::real(a.conjugate().cwiseProduct(b).sum());
+  }
+  template <class A>
+  static double norm(const A& a) {
+    return a.norm();
+  }
+
+  const LiePoissonSystem<G>& system_;
+  double sigma_;
+  double radius_ = kFirstRadius;
+  bool roundoff_ = false;  // the last step was accepted on r, its energy change below rounding
+  bool evaluated_ = false;
+  Evaluation now_, trial_;
+  Dual trial_mu_;
+  Algebra v_, x_, res_, z_, p_, jv_;
+  Dual product_, moved_, dxi_, added_;  // matrix groups' workspaces
+  struct Unused {};
+  std::conditional_t<isDynamicGroup<G>, OrbitPreconditioner<Dual>, Unused> preconditioner_;
+  std::conditional_t<isDynamicGroup<G>, MatrixConjugation<Cayley<G>>, Unused> conjugation_;
+};
+
+}  // namespace ddb

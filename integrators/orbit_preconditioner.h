@@ -1,0 +1,65 @@
+// OrbitPreconditioner: an approximate inverse of the Hessian of H on the coadjoint orbit of a
+// matrix group (SO(N), SU(N)), for the conjugate gradients of OrbitNewton
+// (docs/steady-states.md, "Newton on the orbit").
+// At a steady state μ and ξ = ∂H/∂μ commute. In μ's eigenbasis, μ = V diag(iθ) Vᴴ and
+// π_a = Im (Vᴴ ξ V)_aa, the Hessian's part v ↦ ad*_ξ ad*_v μ multiplies entry (a, b) of
+// v̂ = Vᴴ v V by (θ_a − θ_b)(π_a − π_b); the rest, the Hamiltonian's own second derivative
+// along ad*_v μ, is smoother (on the fluid, an inverse Laplacian). The Hessian's spread comes
+// from the first part: pairs of nearly equal θ or π give its small eigenvalues. So this
+// preconditioner divides entry (a, b) by d_ab = |(θ_a − θ_b)(π_a − π_b)|, floored at kFloor
+// of the largest d_ab, and leaves the diagonal (μ's commutant, which does not move μ) alone.
+// Four products per application, one decomposition per refresh.
+#pragma once
+
+#include <ddb/groups/skew_hermitian_eigenbasis.h>
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+
+namespace ddb {
+
+template <class Matrix>
+class OrbitPreconditioner {
+ public:
+  /// The floor of d_ab, relative to its largest value: it bounds the amplification of
+  /// rounding along (a, b) pairs that the Hessian does not move.
+  static constexpr double kFloor = 1e-8;
+
+  /// At μ with ξ = ∂H/∂μ (both skew-Hermitian, or real skew-symmetric). False if μ's
+  /// eigensolver did not converge (μ not finite).
+  bool refresh(const Matrix& mu, const Matrix& xi) {
+    if (!basis_.compute(mu)) return false;
+    basis_.diagonalPhasesOf(xi, pi_);
+    const Eigen::VectorXd& theta = basis_.phases();
+    const Eigen::Index n = theta.size();
+    inverse_.resize(n, n);
+    double largest = 0.0;
+    for (Eigen::Index b = 0; b < n; ++b) {
+      for (Eigen::Index a = 0; a < n; ++a) {
+        inverse_(a, b) = std::abs((theta(a) - theta(b)) * (pi_(a) - pi_(b)));
+        largest = std::max(largest, inverse_(a, b));
+      }
+    }
+    const double floor = largest > 0 ? kFloor * largest : 1.0;
+    for (Eigen::Index b = 0; b < n; ++b) {
+      for (Eigen::Index a = 0; a < n; ++a) {
+        inverse_(a, b) = a == b ? 1.0 : 1.0 / std::max(inverse_(a, b), floor);
+      }
+    }
+    return true;
+  }
+
+  /// out = V [d⁻¹ ∘ (Vᴴ in V)] Vᴴ. out may be in.
+  void apply(const Matrix& in, Matrix& out) {
+    basis_.applyEntrywise([this](Eigen::Index a, Eigen::Index b) { return inverse_(a, b); }, in,
+                          out);
+  }
+
+ private:
+  SkewHermitianEigenbasis<Matrix> basis_;
+  Eigen::VectorXd pi_;
+  Eigen::MatrixXd inverse_;
+};
+
+}  // namespace ddb
