@@ -80,12 +80,7 @@ class SkewHermitianEigenbasis {
   template <class Weight>
   void applyEntrywise(const Weight& weight, const Matrix& in, Matrix& out) {
     const Complex& V = vectors();
-    if constexpr (kReal) {
-      hermitian_ = in.template cast<std::complex<double>>();
-      product_.noalias() = hermitian_ * V;
-    } else {
-      product_.noalias() = in * V;
-    }
+    productWithVectors(in);
     hat_.noalias() = V.adjoint() * product_;
     for (Eigen::Index b = 0; b < hat_.cols(); ++b) {
       for (Eigen::Index a = 0; a < hat_.rows(); ++a) hat_(a, b) *= weight(a, b);
@@ -104,12 +99,7 @@ class SkewHermitianEigenbasis {
   /// eigenvalues iπ_a when y commutes with x). One product.
   void diagonalPhasesOf(const Matrix& y, Eigen::VectorXd& out) {
     const Complex& V = vectors();
-    if constexpr (kReal) {
-      hermitian_ = y.template cast<std::complex<double>>();
-      product_.noalias() = hermitian_ * V;
-    } else {
-      product_.noalias() = y * V;
-    }
+    productWithVectors(y);
     out.resize(V.cols());
     for (Eigen::Index a = 0; a < V.cols(); ++a) out(a) = V.col(a).dot(product_.col(a)).imag();
   }
@@ -131,6 +121,16 @@ class SkewHermitianEigenbasis {
   }
 
  private:
+  // product_ = m V (m real or complex).
+  void productWithVectors(const Matrix& m) {
+    if constexpr (kReal) {
+      hermitian_ = m.template cast<std::complex<double>>();
+      product_.noalias() = hermitian_ * vectors();
+    } else {
+      product_.noalias() = m * vectors();
+    }
+  }
+
   void allocate(Eigen::Index n) {
     if (hat_.rows() == n) return;
     for (Complex* m : {&hermitian_, &product_, &hat_}) m->setZero(n, n);
