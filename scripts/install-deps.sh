@@ -6,7 +6,8 @@ packages=(cmake g++ make libeigen3-dev libceres-dev libspdlog-dev libgtest-dev l
           libbenchmark-dev libboost-dev libcli11-dev libopenblas-dev liblapacke-dev
           nlohmann-json3-dev python3-matplotlib python3-scipy locales-all
           pybind11-dev python3-dev python3-numpy python3-pytest
-          libhdf5-dev python3-h5py ffmpeg)
+          libhdf5-dev python3-h5py ffmpeg
+          libopenmpi-dev openmpi-bin libscalapack-openmpi-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

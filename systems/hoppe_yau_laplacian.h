@@ -104,6 +104,28 @@ class HoppeYauLaplacian {
     out.diagonal().array() -= out.diagonal().mean();
   }
 
+  /// Solves diagonal m alone, in place: `values` holds the N − |m| entries of diagonal m of
+  /// W, (k, k + m) or (k − m, k) for k = 0, 1, …, and becomes those of solve(W). The same
+  /// sweeps on the same factors as solve, one diagonal at a time, for a caller that holds
+  /// whole diagonals rather than the matrix (docs/distributed.md); m = 0 removes the mean
+  /// before and after, as solve does with the trace.
+  void solveDiagonal(Eigen::Index m, Eigen::Ref<Eigen::VectorXcd> values) const {
+    const Eigen::Index offset = std::abs(m), length = n_ - offset;
+    if (offset >= n_ || values.size() != length) {
+      throwInvalid("diagonal",
+                   std::to_string(m) + " with " + std::to_string(values.size()) + " entries",
+                   "must be within ±" + std::to_string(n_ - 1) + " and have N − |m| entries");
+    }
+    if (m == 0) values.array() -= values.mean();
+    for (Eigen::Index k = 1; k < length; ++k) values(k) -= lower_(k, k + offset) * values(k - 1);
+    values(length - 1) *= inverse_pivot_(length - 1, n_ - 1);
+    for (Eigen::Index k = length - 2; k >= 0; --k) {
+      values(k) =
+          values(k) * inverse_pivot_(k, k + offset) - lower_(k + 1, k + 1 + offset) * values(k + 1);
+    }
+    if (m == 0) values.array() -= values.mean();
+  }
+
  private:
   struct Block {
     Eigen::VectorXd diagonal, off;

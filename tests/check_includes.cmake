@@ -10,7 +10,7 @@ if(NOT IS_DIRECTORY "${SOURCE_DIR}")
   message(FATAL_ERROR "set SOURCE_DIR to the ddb source tree")
 endif()
 
-set(parts core groups systems integrators)
+set(parts core groups systems integrators distributed)
 set(library_globs ddb.h)
 foreach(part IN LISTS parts)
   list(APPEND library_globs ${part}/*.h)
@@ -33,14 +33,15 @@ foreach(file IN LISTS library_files user_files)
   foreach(line IN LISTS lines)
     string(REGEX MATCH "[<\"]([^>\"]+)[>\"]" _ "${line}")
     set(path "${CMAKE_MATCH_1}")
-    if(path MATCHES "^(core|groups|systems|integrators|include)/" OR path STREQUAL "ddb.h")
+    if(path MATCHES "^(core|groups|systems|integrators|distributed|include)/" OR path STREQUAL "ddb.h")
       string(APPEND errors "  ${file}: ${line}  (resolves only in the tree; write <ddb/...>)\n")
     elseif(path MATCHES "^ddb/(.*)$")
-      # Installed, include/ddb/ holds the four folders and ddb.h, nothing else of the tree.
+      # Installed, include/ddb/ holds the four folders and ddb.h, nothing else of the tree;
+      # the build tree links distributed/ too when MPI is found (docs/distributed.md).
       set(rest "${CMAKE_MATCH_1}")
-      if(NOT rest MATCHES "^(core|groups|systems|integrators)/" AND NOT rest STREQUAL "ddb.h")
+      if(NOT rest MATCHES "^(core|groups|systems|integrators|distributed)/" AND NOT rest STREQUAL "ddb.h")
         string(APPEND errors "  ${file}: ${line}  (not a library header: <ddb/core|groups|"
-                             "systems|integrators/...> or <ddb/ddb.h>)\n")
+                             "systems|integrators|distributed/...> or <ddb/ddb.h>)\n")
       elseif(NOT EXISTS "${SOURCE_DIR}/${rest}")
         string(APPEND errors "  ${file}: ${line}  (no such header in the library)\n")
       endif()
@@ -52,7 +53,7 @@ foreach(file IN LISTS library_files user_files)
         # A relative path into a library folder ("../core/x.h") works only in the tree.
         get_filename_component(target "${folder}/${path}" ABSOLUTE)
         file(RELATIVE_PATH relative "${SOURCE_DIR}" "${target}")
-        if(relative MATCHES "^(core|groups|systems|integrators)/" OR relative STREQUAL "ddb.h")
+        if(relative MATCHES "^(core|groups|systems|integrators|distributed)/" OR relative STREQUAL "ddb.h")
           string(APPEND errors "  ${file}: ${line}  (a relative path into the library; write "
                                "<ddb/${relative}>)\n")
         endif()

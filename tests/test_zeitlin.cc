@@ -78,6 +78,28 @@ TEST(HoppeYauLaplacian, PoissonSolveInvertsTheLaplacianOnSuN) {
   }
 }
 
+// One diagonal at a time (the distributed solve's path, docs/distributed.md): the diagonals
+// solved separately and put back together are inverted by apply, as solve's are.
+TEST(HoppeYauLaplacian, SolvingEachDiagonalAloneInvertsTheLaplacian) {
+  for (int n : {2, 3, 8, 33}) {
+    const HoppeYauLaplacian laplacian(n);
+    const Matrix W = randomVorticity(n, 9);
+    Matrix P(n, n), back(n, n);
+    for (int m = -(n - 1); m < n; ++m) {
+      const int length = n - std::abs(m), row = m >= 0 ? 0 : -m, col = m >= 0 ? m : 0;
+      Eigen::VectorXcd values = W.block(row, col, length, length).diagonal();
+      laplacian.solveDiagonal(m, values);
+      P.block(row, col, length, length).diagonal() = values;
+    }
+    laplacian.apply(P, back);
+    EXPECT_LT((back - W).norm(), 1e-12 * W.norm()) << "N = " << n;
+    EXPECT_LT(std::abs(P.trace()), 1e-14 * P.norm()) << "N = " << n;
+  }
+  Eigen::VectorXcd one(1);
+  EXPECT_THROW(HoppeYauLaplacian(4).solveDiagonal(4, one), InvalidArgument);
+  EXPECT_THROW(HoppeYauLaplacian(4).solveDiagonal(2, one), InvalidArgument);
+}
+
 TEST(SphericalHarmonicBasis, OrthonormalEigenmatricesWithT10EqualRoot3X3) {
   for (int n : {2, 5, 9}) {
     const HoppeYauLaplacian laplacian(n);

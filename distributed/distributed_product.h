@@ -1,0 +1,33 @@
+// C = A·B for distributed N×N matrices (pzgemm_): one complex product, the matrix
+// groups' cost unit (docs/conventions.md §4), spread over the grid.
+#pragma once
+
+#include <ddb/core/errors.h>
+#include <ddb/distributed/distributed_matrix.h>
+#include <ddb/distributed/scalapack.h>
+
+#include <complex>
+#include <string>
+
+namespace ddb {
+
+/// c = a·b; the three matrices share the grid, N and the block size, and c aliases neither.
+inline void multiply(const DistributedMatrix& a, const DistributedMatrix& b, DistributedMatrix& c) {
+  for (const DistributedMatrix* m : {&b, static_cast<const DistributedMatrix*>(&c)}) {
+    if (m->size() != a.size() || m->layout().block() != a.layout().block() ||
+        &m->layout().grid() != &a.layout().grid()) {
+      throwInvalid(
+          "matrix",
+          "N = " + std::to_string(m->size()) + ", block " + std::to_string(m->layout().block()),
+          "must share the grid, N = " + std::to_string(a.size()) + " and block " +
+              std::to_string(a.layout().block()) + " with the product's first factor");
+    }
+  }
+  if (&c == &a || &c == &b) throwInvalid("product", "c", "must not alias a factor");
+  const int n = a.size(), one = 1;
+  const std::complex<double> alpha(1.0), beta(0.0);
+  pzgemm_("N", "N", &n, &n, &n, &alpha, a.data(), &one, &one, a.descriptor(), b.data(), &one, &one,
+          b.descriptor(), &beta, c.data(), &one, &one, c.descriptor());
+}
+
+}  // namespace ddb

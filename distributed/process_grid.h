@@ -1,0 +1,66 @@
+// A BLACS process grid over an MPI communicator: its P ranks as the most square
+// rows × cols grid (rows the largest divisor of P not above √P, so P = 2 and 3 give one
+// row), numbered row-major, rank r at (r / cols, r % cols) (docs/distributed.md).
+// The grid owns its BLACS context and releases it when destroyed; MPI itself is
+// initialised and finalised by the program.
+#pragma once
+
+#include <ddb/distributed/scalapack.h>
+#include <mpi.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace ddb {
+
+class ProcessGrid {
+ public:
+  explicit ProcessGrid(MPI_Comm comm = MPI_COMM_WORLD) : comm_(comm) {
+    MPI_Comm_rank(comm_, &rank_);
+    MPI_Comm_size(comm_, &size_);
+    rows_ = 1;
+    for (int r = 1; r * r <= size_; ++r) {
+      if (size_ % r == 0) rows_ = r;
+    }
+    cols_ = size_ / rows_;
+    system_handle_ = Csys2blacs_handle(comm_);
+    context_ = system_handle_;
+    Cblacs_gridinit(&context_, "Row", rows_, cols_);
+    int rows = 0, cols = 0;
+    Cblacs_gridinfo(context_, &rows, &cols, &row_, &col_);
+    if (rows != rows_ || cols != cols_ || row_ != rank_ / cols_ || col_ != rank_ % cols_) {
+      release();
+      throw std::runtime_error(
+          "BLACS placed rank " + std::to_string(rank_) + " at (" + std::to_string(row_) + ", " +
+          std::to_string(col_) + ") of a " + std::to_string(rows) + "x" + std::to_string(cols) +
+          " grid, not row-major on " + std::to_string(rows_) + "x" + std::to_string(cols_));
+    }
+  }
+  ProcessGrid(const ProcessGrid&) = delete;
+  ProcessGrid& operator=(const ProcessGrid&) = delete;
+  ~ProcessGrid() { release(); }
+
+  MPI_Comm comm() const { return comm_; }
+  int context() const { return context_; }
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  int rows() const { return rows_; }
+  int cols() const { return cols_; }
+  int row() const { return row_; }
+  int col() const { return col_; }
+  /// The rank at grid position (row, col).
+  int rankAt(int row, int col) const { return row * cols_ + col; }
+
+ private:
+  void release() {
+    if (context_ >= 0) Cblacs_gridexit(context_);
+    Cfree_blacs_system_handle(system_handle_);
+    context_ = -1;
+  }
+
+  MPI_Comm comm_;
+  int rank_ = 0, size_ = 1, rows_ = 1, cols_ = 1, row_ = 0, col_ = 0;
+  int system_handle_ = -1, context_ = -1;
+};
+
+}  // namespace ddb

@@ -1,0 +1,43 @@
+// Shared by the MPI tests: seeded random matrices, the same on every rank, the relative
+// Frobenius distance, and the suites parameterised by N and the block size.
+#pragma once
+
+#include <ddb/distributed/process_grid.h>
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <complex>
+#include <random>
+#include <string>
+#include <tuple>
+
+namespace ddb::test {
+
+inline Eigen::MatrixXcd randomComplexMatrix(int n, unsigned seed) {
+  std::mt19937_64 generator(seed);
+  std::normal_distribution<double> normal;
+  Eigen::MatrixXcd a(n, n);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) a(i, j) = {normal(generator), normal(generator)};
+  }
+  return a;
+}
+
+inline double relativeDistance(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& reference) {
+  return (a - reference).norm() / reference.norm();
+}
+
+// A suite run at N = get<0> and block size get<1> on a grid of all ranks.
+class SizeAndBlockTest : public testing::TestWithParam<std::tuple<int, int>> {
+ protected:
+  int n() const { return std::get<0>(GetParam()); }
+  int block() const { return std::get<1>(GetParam()); }
+  ProcessGrid grid_;
+};
+
+inline std::string sizeAndBlockName(const testing::TestParamInfo<std::tuple<int, int>>& info) {
+  return "N" + std::to_string(std::get<0>(info.param)) + "_block" +
+         std::to_string(std::get<1>(info.param));
+}
+
+}  // namespace ddb::test

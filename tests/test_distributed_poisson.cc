@@ -1,0 +1,80 @@
+// The distributed Poisson solve (docs/distributed.md) on 1–4 ranks against the serial
+// HoppeYauLaplacian::solve, and the bytes each rank sends against counts derived by hand.
+#include <ddb/core/errors.h>
+#include <ddb/distributed/distributed_matrix.h>
+#include <ddb/distributed/distributed_poisson_solver.h>
+#include <ddb/distributed/process_grid.h>
+#include <ddb/systems/hoppe_yau_laplacian.h>
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include "mpi_test_support.h"
+
+namespace ddb {
+namespace {
+
+using test::randomComplexMatrix;
+using test::relativeDistance;
+
+// A random skew-Hermitian matrix, the fluid's vorticity (docs/conventions.md §2).
+Eigen::MatrixXcd randomVorticity(int n, unsigned seed) {
+  const Eigen::MatrixXcd a = randomComplexMatrix(n, seed);
+  return (a - a.adjoint()) / 2.0;
+}
+
+class DistributedPoissonTest : public test::SizeAndBlockTest {};
+
+TEST_P(DistributedPoissonTest, MatchesTheSerialSolve) {
+  const Eigen::MatrixXcd w = randomVorticity(n(), 41);
+  DistributedMatrix dw(grid_, n(), block()), dp(grid_, n(), block());
+  dw.scatterFrom(w);
+  DistributedPoissonSolver solver(dw.layout());
+  solver.solve(dw, dp);
+  const Eigen::MatrixXcd p = dp.gather();
+  // In place: the result replaces W.
+  solver.solve(dw, dw);
+  const Eigen::MatrixXcd p_in_place = dw.gather();
+  if (grid_.rank() == 0) {
+    Eigen::MatrixXcd reference;
+    HoppeYauLaplacian(n()).solve(w, reference);
+    EXPECT_LT(relativeDistance(p, reference), 1e-13);
+    EXPECT_LT(relativeDistance(p_in_place, reference), 1e-13);
+  }
+}
+
+TEST(DistributedPoissonSolver, RefusesAnotherBlockSize) {
+  const ProcessGrid grid;
+  const DistributedMatrix w(grid, 8, 3);
+  DistributedMatrix other(grid, 8, 4);
+  DistributedPoissonSolver solver(w.layout());
+  EXPECT_THROW(solver.solve(w, other), InvalidArgument);
+}
+
+INSTANTIATE_TEST_SUITE_P(SizesAndBlocks, DistributedPoissonTest,
+                         testing::Combine(testing::Values(4, 16, 33, 64), testing::Values(1, 5, 7)),
+                         test::sizeAndBlockName);
+
+// N = 4, block 1: rank r holds the entries (i, j) with i mod rows = r / cols and
+// j mod cols = r mod cols; diagonal m goes to rank q(m) mod P with q = 0, 1, 2, 3, 4, 5, 6
+// for m = 0, 1, −1, 2, −2, 3, −3. Counting, rank by rank, the entries it holds whose
+// diagonal is owned elsewhere (sent there) plus the entries of its own diagonals that
+// another rank holds (sent back), at 16 bytes each (docs/distributed.md works P = 2):
+//   P = 2 (1×2): 2 + 4, 4 + 2;  P = 3 (1×3): 4 + 3, 2 + 3, 3 + 3;
+//   P = 4 (2×2): 1 + 3, 1 + 1, 1 + 1, 3 + 1.
+TEST(DistributedPoissonSolver, SendsTheBytesCountedByHand) {
+  const ProcessGrid grid;
+  const std::map<int, std::vector<std::int64_t>> expected = {
+      {1, {0}}, {2, {96, 96}}, {3, {112, 80, 96}}, {4, {64, 32, 32, 64}}};
+  const auto counts = expected.find(grid.size());
+  if (counts == expected.end()) GTEST_SKIP() << "no count for " << grid.size() << " ranks";
+  const DistributedMatrix w(grid, 4, 1);
+  const DistributedPoissonSolver solver(w.layout());
+  EXPECT_EQ(solver.bytesSentPerSolve(), counts->second[static_cast<std::size_t>(grid.rank())]);
+}
+
+}  // namespace
+}  // namespace ddb
