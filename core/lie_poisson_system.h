@@ -9,6 +9,7 @@
 #include <ddb/core/errors.h>
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lagrangian.h>
+#include <ddb/core/matrix_backend.h>
 
 #include <memory>
 #include <string>
@@ -33,6 +34,28 @@ struct MatrixFieldWorkspace {
     }
   }
 };
+
+/// Matrix groups: ξ = P ∂H/∂μ(Pμ), with Pμ into `argument`. The one place where a matrix
+/// group's Hamiltonian is evaluated (docs/conventions.md §2, "Systems on matrix groups");
+/// written against the matrix backend, so H may act on distributed matrices.
+template <class G, class H, class X>
+void matrixVelocityInto(const H& hamiltonian, const X& mu, X& argument, X& xi) {
+  MatrixBackend<X>::entries(argument) = MatrixBackend<X>::entries(mu);
+  G::projectToAlgebra(argument);
+  hamiltonian.gradientInto(argument, xi);
+  G::projectToAlgebra(xi);
+}
+
+/// Its derivative along v, P D²H(Pμ)[Pv], given `argument` = Pμ from matrixVelocityInto;
+/// `direction` is a workspace.
+template <class G, class H, class X>
+void matrixVelocityDerivativeInto(const H& hamiltonian, const X& argument, const X& v, X& direction,
+                                  X& out) {
+  MatrixBackend<X>::entries(direction) = MatrixBackend<X>::entries(v);
+  G::projectToAlgebra(direction);
+  hamiltonian.hessianTimesInto(argument, direction, out);
+  G::projectToAlgebra(out);
+}
 
 template <class G>
 class LiePoissonSystem {
@@ -96,10 +119,7 @@ class LiePoissonSystem {
   void velocityDerivativeInto(const Dual& argument, const Dual& v, Dual& direction,
                               Algebra& out) const {
     static_assert(isDynamicGroup<G>, "the in-place evaluations are for matrix groups");
-    direction = v;
-    G::projectToAlgebra(direction);
-    hamiltonian_->hessianTimesInto(argument, direction, out);
-    G::projectToAlgebra(out);
+    matrixVelocityDerivativeInto<G>(*hamiltonian_, argument, v, direction, out);
   }
 
   /// φ(ξ) = k♯(ad*_ξ μ), where μ is the momentum paired with ξ (double or Jet).
@@ -121,7 +141,7 @@ class LiePoissonSystem {
   /// The same at ξ = (2/h)a given the product ap = a p: out = hφ/2 = k♯([p, a]) with
   /// [p, a] = (ap)ᴴ − ap. No product.
   void halfStepDissipationInto(const Dual& ap, Dual& commutator, Algebra& out) const {
-    commutator = ap.adjoint() - ap;
+    G::commutatorFromProduct(ap, commutator);
     metric_->sharpInto(commutator, out);
   }
 
@@ -198,14 +218,9 @@ class LiePoissonSystem {
     }
   }
 
-  // Matrix groups: ξ = P ∂H/∂μ(Pμ), with Pμ into `argument`. The one place where a matrix
-  // group's Hamiltonian is evaluated (docs/conventions.md §2, "Systems on matrix groups").
   template <class H>
   static void velocityAt(const H& hamiltonian, const Dual& mu, Dual& argument, Algebra& xi) {
-    argument = mu;
-    G::projectToAlgebra(argument);
-    hamiltonian.gradientInto(argument, xi);
-    G::projectToAlgebra(xi);
+    matrixVelocityInto<G>(hamiltonian, mu, argument, xi);
   }
 
   // Matrix groups: eq. (3.4) on the algebra, f(μ) = P ad*_{ξ+φ}(Pμ), ξ = P ∂H/∂μ(Pμ),

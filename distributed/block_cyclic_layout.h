@@ -17,6 +17,8 @@ namespace ddb {
 
 class BlockCyclicLayout {
  public:
+  /// No matrix (N = 0) on no grid: what a default-constructed DistributedMatrix has.
+  BlockCyclicLayout() = default;
   BlockCyclicLayout(const ProcessGrid& grid, int n, int block)
       : grid_(&grid), n_(n), block_(block) {
     if (n < 1) throwInvalid("N", std::to_string(n), "must be >= 1");
@@ -36,6 +38,10 @@ class BlockCyclicLayout {
   }
 
   const ProcessGrid& grid() const { return *grid_; }
+  /// Whether `other` lays out the same N in the same blocks on the same grid.
+  bool operator==(const BlockCyclicLayout& other) const {
+    return grid_ == other.grid_ && n_ == other.n_ && block_ == other.block_;
+  }
   int size() const { return n_; }
   int block() const { return block_; }
   int localRows() const { return local_rows_; }
@@ -62,8 +68,8 @@ class BlockCyclicLayout {
   }
   int toLocal(int i, int processes) const { return i / (block_ * processes) * block_ + i % block_; }
 
-  const ProcessGrid* grid_;
-  int n_, block_, local_rows_ = 0, local_cols_ = 0;
+  const ProcessGrid* grid_ = nullptr;
+  int n_ = 0, block_ = 1, local_rows_ = 0, local_cols_ = 0;
   std::array<int, 9> descriptor_{};
 };
 

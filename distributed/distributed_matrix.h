@@ -17,12 +17,27 @@ namespace ddb {
 
 class DistributedMatrix {
  public:
+  using Scalar = std::complex<double>;
+
+  /// No matrix yet (a workspace before its first use).
+  DistributedMatrix() = default;
   DistributedMatrix(const ProcessGrid& grid, int n, int block)
-      : layout_(grid, n, block),
-        local_(Eigen::MatrixXcd::Zero(layout_.localRows(), layout_.localCols())) {}
+      : DistributedMatrix(BlockCyclicLayout(grid, n, block)) {}
+  /// The zero matrix of a layout.
+  explicit DistributedMatrix(const BlockCyclicLayout& layout)
+      : layout_(layout), local_(Eigen::MatrixXcd::Zero(layout_.localRows(), layout_.localCols())) {}
 
   const BlockCyclicLayout& layout() const { return layout_; }
   int size() const { return layout_.size(); }
+  /// Whether `other` has this matrix's grid, N and block size (so that their local arrays
+  /// hold the same entries).
+  bool sameLayout(const DistributedMatrix& other) const { return other.layout_ == layout_; }
+  /// Exchanges the entries of two matrices of one layout.
+  void swap(DistributedMatrix& other) {
+    if (!sameLayout(other))
+      throwInvalid("matrix", "another layout", "must share the layout to swap");
+    local_.swap(other.local_);
+  }
   Eigen::MatrixXcd& local() { return local_; }
   const Eigen::MatrixXcd& local() const { return local_; }
   /// The local array as ScaLAPACK reads it (a 1×1 dummy when this rank holds nothing).

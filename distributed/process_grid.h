@@ -8,8 +8,10 @@
 #include <ddb/distributed/scalapack.h>
 #include <mpi.h>
 
+#include <complex>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace ddb {
 
@@ -51,6 +53,30 @@ class ProcessGrid {
   /// The rank at grid position (row, col).
   int rankAt(int row, int col) const { return row * cols_ + col; }
 
+  /// The sum over the ranks of each rank's `local`, added in rank order on every rank, so
+  /// that every rank gets the same bits (an MPI_Allreduce may add in a different order on
+  /// different ranks, and a branch on the result could then part ways).
+  double sum(double local) const {
+    gathered_.resize(static_cast<std::size_t>(size_));
+    MPI_Allgather(&local, 1, MPI_DOUBLE, gathered_.data(), 1, MPI_DOUBLE, comm_);
+    double total = 0.0;
+    for (const double value : gathered_) total += value;
+    return total;
+  }
+  std::complex<double> sum(std::complex<double> local) const {
+    return {sum(local.real()), sum(local.imag())};
+  }
+  /// The largest of the ranks' `local` (a NaN anywhere gives NaN everywhere).
+  double max(double local) const {
+    gathered_.resize(static_cast<std::size_t>(size_));
+    MPI_Allgather(&local, 1, MPI_DOUBLE, gathered_.data(), 1, MPI_DOUBLE, comm_);
+    double largest = gathered_[0];
+    for (const double value : gathered_) {
+      if (!(value <= largest)) largest = value;
+    }
+    return largest;
+  }
+
  private:
   void release() {
     if (context_ >= 0) Cblacs_gridexit(context_);
@@ -61,6 +87,7 @@ class ProcessGrid {
   MPI_Comm comm_;
   int rank_ = 0, size_ = 1, rows_ = 1, cols_ = 1, row_ = 0, col_ = 0;
   int system_handle_ = -1, context_ = -1;
+  mutable std::vector<double> gathered_;
 };
 
 }  // namespace ddb

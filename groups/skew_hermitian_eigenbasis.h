@@ -12,6 +12,7 @@
 #pragma once
 
 #include <ddb/core/detail/hermitian_eigensolver.h>
+#include <ddb/core/matrix_backend.h>
 
 #include <Eigen/Core>
 #include <cmath>
@@ -30,20 +31,6 @@ inline std::complex<double> expm1OfIOverI(double eta) {
   if (eta == 0.0) return 1.0;
   const double s = std::sin(0.5 * eta);
   return {std::sin(eta) / eta, 2.0 * s * s / eta};
-}
-
-/// m ← (m − mᴴ)/2 in place: skew-Hermitian bit for bit (entry (j, i) is −conj of entry
-/// (i, j), the diagonal imaginary, zero for real m).
-template <class M>
-void makeSkewHermitian(M& m) {
-  for (Eigen::Index j = 0; j < m.cols(); ++j) {
-    for (Eigen::Index i = 0; i < j; ++i) {
-      const typename M::Scalar v = 0.5 * (m(i, j) - Eigen::numext::conj(m(j, i)));
-      m(i, j) = v;
-      m(j, i) = -Eigen::numext::conj(v);
-    }
-    m(j, j) = 0.5 * (m(j, j) - Eigen::numext::conj(m(j, j)));
-  }
 }
 
 template <class Matrix>
@@ -92,7 +79,7 @@ class SkewHermitianEigenbasis {
     } else {
       out = hat_;
     }
-    makeSkewHermitian(out);
+    MatrixBackend<Matrix>::makeSkewHermitian(out);
   }
 
   /// The phases of a skew-Hermitian y on x's eigenvectors: π_a = Im (Vᴴ y V)_aa (y's

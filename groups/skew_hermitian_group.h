@@ -13,6 +13,7 @@
 
 #include <ddb/core/errors.h>
 #include <ddb/core/lie_group.h>
+#include <ddb/core/matrix_backend.h>
 #include <ddb/groups/skew_hermitian_eigenbasis.h>
 
 #include <Eigen/Core>
@@ -102,14 +103,11 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
   /// an explicit step keeps its state on the algebra up to a trace of rounding size.
   template <class X>
   static void projectToAlgebra(X& x) {
-    using Scalar = typename X::Scalar;
-    const Eigen::Index n = x.rows();
-    makeSkewHermitian(x);  // the real diagonal is now zero
-    if constexpr (Eigen::NumTraits<Scalar>::IsComplex) {
-      double trace = 0.0;
-      for (Eigen::Index i = 0; i < n; ++i) trace += x(i, i).imag();
-      const double mean = trace / double(n);
-      for (Eigen::Index i = 0; i < n; ++i) x(i, i) = Scalar(0.0, x(i, i).imag() - mean);
+    using B = MatrixBackend<X>;
+    B::makeSkewHermitian(x);  // the real diagonal is now zero
+    if constexpr (Eigen::NumTraits<typename B::Scalar>::IsComplex) {
+      const double mean = B::trace(x).imag() / double(B::rows(x));
+      B::addToDiagonal(x, typename B::Scalar(0.0, -mean));
     }
   }
 
@@ -209,14 +207,24 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
   /// (docs/conventions.md §2); ap, apa are workspaces. Two products.
   template <class X>
   static void cayleyFixedPoint(const X& W, const X& a, const X& p, X& ap, X& apa, X& out) {
-    ap.noalias() = a * p;
+    MatrixBackend<X>::multiply(a, p, ap);
     cayleyFixedPointGiven(W, a, ap, apa, out);
   }
   /// The same map given the product ap = a p already formed. One product.
   template <class X>
   static void cayleyFixedPointGiven(const X& W, const X& a, const X& ap, X& apa, X& out) {
-    apa.noalias() = ap * a;
-    out = W - ap + ap.adjoint() + apa;
+    using B = MatrixBackend<X>;
+    B::multiply(ap, a, apa);
+    B::entries(out) = B::entries(W) - B::entries(ap) + B::entries(apa);
+    B::addAdjoint(1.0, ap, out);
+  }
+
+  /// out = [p, a] = pa − ap = (ap)ᴴ − ap given the product ap. No product.
+  template <class X>
+  static void commutatorFromProduct(const X& ap, X& out) {
+    using B = MatrixBackend<X>;
+    B::entries(out) = -B::entries(ap);
+    B::addAdjoint(1.0, ap, out);
   }
 
   /// out = D_p[(I + a) p (I − a)][δ] with a = a(p) and δa = Da[δ] given:
@@ -225,12 +233,16 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
   template <class X>
   static void cayleyLinearised(const X& a, const X& p, const X& delta, const X& delta_a, X& t1,
                                X& t2, X& out) {
-    t1.noalias() = a * delta;
-    t2.noalias() = t1 * a;
-    out = delta + t1 - t1.adjoint() - t2;
-    t1.noalias() = delta_a * p;
-    t2.noalias() = t1 * a;
-    out += t1 - t1.adjoint() - t2 + t2.adjoint();
+    using B = MatrixBackend<X>;
+    B::multiply(a, delta, t1);
+    B::multiply(t1, a, t2);
+    B::entries(out) = B::entries(delta) + B::entries(t1) - B::entries(t2);
+    B::addAdjoint(-1.0, t1, out);
+    B::multiply(delta_a, p, t1);
+    B::multiply(t1, a, t2);
+    B::entries(out) += B::entries(t1) - B::entries(t2);
+    B::addAdjoint(-1.0, t1, out);
+    B::addAdjoint(1.0, t2, out);
   }
 
   /// Checks that mu is a valid state: square, N >= 2, N <= kMaxN, finite, skew-Hermitian

@@ -12,9 +12,12 @@
 // docs/design.md ("The initial guess: linear prediction").
 // The fit is a least-squares problem of m unknowns on a sketch, a fixed sample of entries,
 // so it costs O(sample·m²), not O(N²) per coefficient; the prediction reads m corrections.
+// Written against the matrix backend (core/matrix_backend.h): the sample is of entries of the
+// whole matrix, so a distributed run predicts exactly what a dense one does.
 #pragma once
 
 #include <ddb/core/binary_record.h>
+#include <ddb/core/matrix_backend.h>
 
 #include <Eigen/Core>
 #include <Eigen/QR>
@@ -27,6 +30,8 @@ namespace ddb {
 
 template <class Matrix>
 class CorrectionPredictor {
+  using B = MatrixBackend<Matrix>;
+
  public:
   /// The most corrections a prediction combines.
   static constexpr int kOrder = 8;
@@ -41,7 +46,7 @@ class CorrectionPredictor {
   /// largest remembered one (on the sketch) means the state does not continue the
   /// remembered ones (a caller that skipped reset()): then the newest correction alone.
   void predict(const Matrix& near, Matrix& out) const {
-    out = near;
+    B::entries(out) = B::entries(near);
     if (count_ == 0) return;
     const int m = order_;
     predicted_.setZero();
@@ -50,17 +55,18 @@ class CorrectionPredictor {
       predicted_ += coefficients_(j) * sketches_.col(sketchSlot(j));
       largest = std::max(largest, sketches_.col(sketchSlot(j)).norm());
     }
+    auto& entries = B::entries(out);
     if (!(predicted_.norm() <= 2.0 * largest)) {
-      out += correction(0);
+      entries += B::entries(correction(0));
       return;
     }
     // Column block by column block, so that each block of out stays in cache while the m
     // corrections are added (one pass over memory instead of m).
-    for (Eigen::Index first = 0; first < out.cols(); first += kBlockColumns) {
-      const Eigen::Index width = std::min(kBlockColumns, out.cols() - first);
-      auto block = out.middleCols(first, width);
+    for (Eigen::Index first = 0; first < entries.cols(); first += kBlockColumns) {
+      const Eigen::Index width = std::min(kBlockColumns, entries.cols() - first);
+      auto block = entries.middleCols(first, width);
       for (int j = 0; j < m; ++j)
-        block += coefficients_(j) * correction(j).middleCols(first, width);
+        block += coefficients_(j) * B::entries(correction(j)).middleCols(first, width);
     }
   }
 
@@ -109,9 +115,9 @@ class CorrectionPredictor {
     allocate(near);
     ++count_;
     Matrix& c = corrections_[static_cast<std::size_t>((count_ - 1) % kOrder)];
-    c = solution - near;
-    const int slot = sketchSlot(0);
-    for (Eigen::Index s = 0; s < sample_.size(); ++s) sketches_(s, slot) = c(sample_(s));
+    B::entries(c) = B::entries(solution) - B::entries(near);
+    auto sketch = sketches_.col(sketchSlot(0));
+    B::sampleEntries(c, sample_, sketch);
     fit();
   }
 
@@ -182,13 +188,11 @@ class CorrectionPredictor {
   }
 
   void allocate(const Matrix& like) {
-    if (!corrections_.empty() && corrections_[0].rows() == like.rows() &&
-        corrections_[0].cols() == like.cols()) {
-      return;
-    }
-    corrections_.assign(kOrder, Matrix::Zero(like.rows(), like.cols()));
+    if (!corrections_.empty() && B::sameShape(corrections_[0], like)) return;
+    corrections_.resize(kOrder);
+    for (Matrix& c : corrections_) B::zeroLike(c, like);
     // A fixed pseudo-random sample of entries (linear congruential, Knuth's MMIX constants).
-    const Eigen::Index size = like.size();
+    const Eigen::Index size = B::globalSize(like);
     const Eigen::Index samples =
         std::clamp<Eigen::Index>(size / 16, std::min<Eigen::Index>(size, 64), kMaxSample);
     sample_.resize(samples);

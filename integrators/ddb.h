@@ -18,6 +18,16 @@
 
 namespace ddb {
 
+/// Matrix groups: DDB's step (i) and (ii) in place, with the solver's certified frozen
+/// solution and the preallocated transport (no allocation once the size is known). Any
+/// matrix system: dense (Ddb::advance) or distributed (distributed/distributed_ddb.h).
+template <class G, class System, class Solver, class Transport, class Dual>
+void advanceMatrixDdb(const System& system, Solver& legendre, Transport& transport, Dual& mu,
+                      double t, double h) {
+  legendre.solveInPlace(FixedMomentum<G, Dual>{mu}, mu, t, h);
+  transport.apply(system, legendre, h, mu);
+}
+
 template <class R>
 class Ddb : public LegendreMethod<R> {
  public:
@@ -47,8 +57,7 @@ class Ddb : public LegendreMethod<R> {
   /// preallocated transport of the retraction (no allocation once the size is known).
   void advance(Dual& mu, double t, double h) override {
     if constexpr (isDynamicGroup<G>) {
-      this->legendre_.solveInPlace(FixedMomentum<G>{mu}, mu, t, h);
-      transport_.apply(*this->system_, this->legendre_, h, mu);
+      advanceMatrixDdb<G>(*this->system_, this->legendre_, transport_, mu, t, h);
     } else {
       mu = step(mu, t, h);
     }

@@ -19,10 +19,11 @@ namespace ddb {
 
 enum class LegendreForm { kLagrangian, kHamiltonian };
 
-/// The target of DDB's Legendre equation: a fixed momentum (no derivative in u).
-template <class G>
+/// The target of DDB's Legendre equation: a fixed momentum (no derivative in u). Matrix
+/// groups may hold it as another matrix type (a distributed matrix, core/matrix_backend.h).
+template <class G, class Dual = typename G::template Dual<double>>
 struct FixedMomentum {
-  const typename G::template Dual<double>& momentum;
+  const Dual& momentum;
   template <class A, class D>
   D operator()(const A&, const D&) const {
     return momentum.template cast<typename D::Scalar>();

@@ -11,7 +11,8 @@
 // same identity with p̃ formed, by one inverse and three products (matrix_conjugation.h). The
 // second, with dissipation: [p, a] = (ap)ᴴ − ap from the solver's a p, b = k♯([p, a]), and
 // the identity with b, M − 2[b, q]. The workspaces are allocated when the size first
-// appears, then reused.
+// appears, then reused. Written against the matrix backend (core/matrix_backend.h) and the
+// system's type: the distributed step uses it unchanged (docs/distributed.md).
 #pragma once
 
 #include <ddb/core/errors.h>
@@ -24,30 +25,29 @@
 
 namespace ddb {
 
-template <class G>
+template <class G, class System = LiePoissonSystem<G>>
 class MatrixCayleyTransport {
  public:
-  using Dual = typename G::template Dual<double>;
+  using Dual = typename System::Dual;
+  using B = MatrixBackend<Dual>;
 
   /// mu ← Uᴴ mu U with U = cay(2a) cay(2 k♯([p, a])), from the solver's a, its product a p
   /// and, when certified, its frozen solution p̃ (MatrixLegendreSolver).
   template <class Solver>
-  void apply(const LiePoissonSystem<G>& system, const Solver& solver, double, Dual& mu) {
+  void apply(const System& system, const Solver& solver, double, Dual& mu) {
     const Dual& a = solver.halfStep();
     const Dual* frozen = solver.frozenSolution();
     allocate(a);
-    const Dual& ap = solver.halfStepTimesSolution();
-    commutator_ = ap.adjoint() - ap;                // [p, a] = pa − ap, pa = (ap)ᴴ
-    system.metric().sharpInto(commutator_, half_);  // hφ/2
+    system.halfStepDissipationInto(solver.halfStepTimesSolution(), commutator_, half_);  // hφ/2
     if (frozen != nullptr) {
       conjugation_.applyWithSolution(a, *frozen, mu);
     } else {
-      product_ = 2.0 * a;  // hξ
+      B::entries(product_) = 2.0 * B::entries(a);  // hξ
       conjugation_.prepare(product_);
       conjugation_.apply(mu);
     }
-    if (!half_.isZero(0.0)) {
-      commutator_ = 2.0 * half_;  // hφ
+    if (!B::isZero(half_)) {
+      B::entries(commutator_) = 2.0 * B::entries(half_);  // hφ
       conjugation_.prepare(commutator_);
       conjugation_.apply(mu);
     }
@@ -55,12 +55,12 @@ class MatrixCayleyTransport {
 
  private:
   void allocate(const Dual& like) {
-    if (product_.rows() == like.rows()) return;
-    for (Dual* m : {&product_, &commutator_, &half_}) m->setZero(like.rows(), like.cols());
+    if (B::sameShape(product_, like)) return;
+    for (Dual* m : {&product_, &commutator_, &half_}) B::zeroLike(*m, like);
   }
 
   Dual product_, commutator_, half_;
-  MatrixConjugation<Cayley<G>> conjugation_;
+  MatrixConjugation<Cayley<G>, Dual> conjugation_;
 };
 
 }  // namespace ddb

@@ -8,11 +8,14 @@
 //     Ad*_{cay(2b)} μ = (I − b) q (I + b) = μ − 2[b, q]      (one inverse, three products);
 //   exp: Ad*_{exp x} multiplies entry (a, b) of x's eigenbasis by e^{−iδ}, δ = θ_a − θ_b:
 //     μ + V [(e^{−iδ} − 1) ∘ Vᴴ μ V] Vᴴ                      (a decomposition, four products).
-// Workspaces are allocated when a size first appears, then reused.
+// Workspaces are allocated when a size first appears, then reused. The Cayley conjugation
+// is written against the matrix backend (core/matrix_backend.h): Dual may be a distributed
+// matrix.
 #pragma once
 
 #include <ddb/core/detail/dense_inverse.h>
 #include <ddb/core/errors.h>
+#include <ddb/core/matrix_backend.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/exponential.h>
 #include <ddb/groups/skew_hermitian_eigenbasis.h>
@@ -23,33 +26,35 @@
 
 namespace ddb {
 
-template <class R, bool kExponential = std::is_base_of_v<Exponential<typename R::Group>, R>>
+template <class R, class Dual = typename R::Group::template Dual<double>,
+          bool kExponential = std::is_base_of_v<Exponential<typename R::Group>, R>>
 class MatrixConjugation;
 
 /// The Cayley map.
-template <class R>
-class MatrixConjugation<R, false> {
+template <class R, class Dual>
+class MatrixConjugation<R, Dual, false> {
+  using B = MatrixBackend<Dual>;
+
  public:
   using G = typename R::Group;
-  using Dual = typename G::template Dual<double>;
   static_assert(std::is_same_v<R, Cayley<G>>, "a matrix conjugation for Cayley or exp");
 
   /// For τ(x) = cay(x): b = x/2 and (I + b)⁻¹. (I − b)⁻¹ = ((I + b)⁻¹)ᴴ as b is skew-Hermitian.
   void prepare(const Dual& x) {
     allocate(x);
-    half_ = 0.5 * x;
-    resolvent_ = half_;
-    resolvent_.diagonal().array() += 1.0;
+    B::entries(half_) = 0.5 * B::entries(x);
+    B::entries(resolvent_) = B::entries(half_);
+    B::addToDiagonal(resolvent_, 1.0);
     if (!inverse_.invert(resolvent_)) {
-      throw NonFiniteState("Cayley conjugation", -1, NAN, NAN, x,
+      throw NonFiniteState("Cayley conjugation", -1, NAN, NAN, B::entries(x),
                            "Cayley argument (I + x/2 singular)");
     }
   }
 
   /// μ ← μ − 2[b, q], q = (I + b)⁻¹ μ (I − b)⁻¹.
   void apply(Dual& mu) {
-    product_.noalias() = mu * resolvent_.adjoint();
-    q_.noalias() = resolvent_ * product_;
+    B::multiplyByAdjoint(mu, resolvent_, product_);
+    B::multiply(resolvent_, product_, q_);
     applyWithSolution(half_, q_, mu);
   }
 
@@ -57,27 +62,29 @@ class MatrixConjugation<R, false> {
   /// solver's certified frozen solution): one product, [b, q] = bq − (bq)ᴴ as q is
   /// skew-Hermitian. No prepare() needed.
   void applyWithSolution(const Dual& b, const Dual& q, Dual& mu) {
-    if (product_.rows() != b.rows()) product_.setZero(b.rows(), b.cols());
-    product_.noalias() = b * q;
-    mu -= 2.0 * (product_ - product_.adjoint());
+    if (!B::sameShape(product_, b)) B::zeroLike(product_, b);
+    B::multiply(b, q, product_);
+    B::entries(mu) -= 2.0 * B::entries(product_);
+    B::addAdjoint(2.0, product_, mu);
   }
 
  private:
   void allocate(const Dual& like) {
-    if (half_.rows() == like.rows()) return;
-    for (Dual* m : {&half_, &resolvent_, &product_, &q_}) m->setZero(like.rows(), like.cols());
+    if (B::sameShape(half_, like)) return;
+    for (Dual* m : {&half_, &resolvent_, &product_, &q_}) B::zeroLike(*m, like);
   }
 
   Dual half_, resolvent_, product_, q_;
-  DenseInverse<Dual> inverse_;
+  typename B::Inverse inverse_;
 };
 
 /// The exponential (closed form or truncated dexp⁻¹ alike: τ is exp).
-template <class R>
-class MatrixConjugation<R, true> {
+template <class R, class Dual>
+class MatrixConjugation<R, Dual, true> {
  public:
   using G = typename R::Group;
-  using Dual = typename G::template Dual<double>;
+  static_assert(std::is_same_v<Dual, typename G::template Dual<double>>,
+                "the exponential conjugates dense matrices");
 
   /// x's eigenbasis.
   void prepare(const Dual& x) {

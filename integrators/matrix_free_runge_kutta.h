@@ -133,7 +133,7 @@ class MatrixFreeImplicitRungeKutta : public OneStepMethod<G> {
   // Newton on r(K) = K − f(Y(K)) with GMRES on J δ = −r. Returns the last ‖r‖.
   double newtonKrylov(const Dual& mu, double h, double tolerance) {
     const Eigen::Index n = mu.rows();
-    gmres_.resize(n, S * n);  // its basis only when Newton–Krylov is needed
+    gmres_.resize(stages_);  // its basis only when Newton–Krylov is needed
     double residual = INFINITY;
     for (int k = 0; k <= kMaxNewton; ++k) {
       evaluate(mu, h);

@@ -11,6 +11,10 @@
 // (LiePoissonSystem::velocityInto): the Hamiltonian sees the algebra part of p, whose trace
 // stays in the solve. Workspaces are allocated on the first solve of a size and reused: no
 // iteration allocates.
+// The solver is written against the matrix backend (core/matrix_backend.h) and takes the
+// system as a type: a LiePoissonSystem on dense matrices, or a system on distributed ones
+// (distributed/distributed_zeitlin_fluid.h), which runs this same algorithm over MPI ranks
+// (docs/distributed.md, "One step formula"). Ceres and the exponential are dense only.
 //
 // Ceres (ceres::Problem, dense QR, the Jacobian assembled from the same exact
 // Jacobian–vector products, one per coordinate) solves the same equation in real
@@ -56,12 +60,13 @@ namespace ddb {
 /// the fallback; the others force one path (for tests and comparisons).
 enum class MatrixLegendreStrategy { kAuto, kFixedPoint, kNewtonKrylov, kCeres };
 
-template <class R>
+template <class R, class System = LiePoissonSystem<typename R::Group>>
 class MatrixLegendreSolver {
  public:
   using G = typename R::Group;
-  using Algebra = typename G::template Algebra<double>;
-  using Dual = typename G::template Dual<double>;
+  using Algebra = typename System::Algebra;
+  using Dual = typename System::Dual;
+  using B = MatrixBackend<Dual>;
   static_assert(isDynamicGroup<G>, "MatrixLegendreSolver is the solver of matrix groups");
   static constexpr bool kCayley = std::is_same_v<R, Cayley<G>>;
   static constexpr bool kExactExponential = std::is_same_v<R, Exponential<G>>;
@@ -69,6 +74,9 @@ class MatrixLegendreSolver {
   static_assert(
       kCayley || kExactExponential || kTruncatedExponential,
       "the matrix-free Legendre solver implements the Cayley and exponential retractions");
+  /// Dense matrices (Ceres and the exponential need them).
+  static constexpr bool kDense = std::is_same_v<Dual, typename G::template Dual<double>>;
+  static_assert(kDense || kCayley, "distributed matrices are solved with the Cayley map");
 
   /// A fixed-point sweep that shrinks the update by less than this hands over to Newton.
   static constexpr double kSlowContraction = 0.5;
@@ -80,7 +88,7 @@ class MatrixLegendreSolver {
   static constexpr int kStallSweeps = 10;
   static constexpr Eigen::Index kMaxCeresDimension = 64;
 
-  MatrixLegendreSolver(const LiePoissonSystem<G>& system, const R& retraction, LegendreForm form,
+  MatrixLegendreSolver(const System& system, const R& retraction, LegendreForm form,
                        SolverOptions options)
       : system_(system), retraction_(retraction), form_(form), options_(options) {
     if (form_ != LegendreForm::kHamiltonian) {
@@ -124,7 +132,12 @@ class MatrixLegendreSolver {
       predictors_[i].load(in, p_);
     }
   }
-  void setStrategy(MatrixLegendreStrategy strategy) { strategy_ = strategy; }
+  void setStrategy(MatrixLegendreStrategy strategy) {
+    if (!kDense && strategy == MatrixLegendreStrategy::kCeres) {
+      throw InvalidArgument("strategy = ceres is invalid: Ceres solves dense matrices only");
+    }
+    strategy_ = strategy;
+  }
 
   /// Solves (I + hξ(p)/2) p (I − hξ(p)/2) = target(ξ, p); returns ξ and sets p.
   template <class Target>
@@ -136,7 +149,7 @@ class MatrixLegendreSolver {
 
   /// DDB's equation: target = the momentum M_k.
   Algebra solve(const Dual& momentum, double t, double h, Dual& p) {
-    return solve(FixedMomentum<G>{momentum}, momentum, t, h, p);
+    return solve(FixedMomentum<G, Dual>{momentum}, momentum, t, h, p);
   }
 
   /// Solves without copying out: the solution is solution(), ξ = velocity() and
@@ -150,7 +163,7 @@ class MatrixLegendreSolver {
   /// eigenbasis() is ξ's.
   template <class Target>
   void solveInPlace(const Target& target, const Dual& near, double t, double h) {
-    constexpr bool kFixed = std::is_same_v<Target, FixedMomentum<G>>;
+    constexpr bool kFixed = std::is_same_v<Target, FixedMomentum<G, Dual>>;
     allocate(near);
     CorrectionPredictor<Dual>& predictor = predictorFor(h);
     stats_ = LegendreStats{};
@@ -164,7 +177,7 @@ class MatrixLegendreSolver {
       }
     };
     predictor.predict(near, p_);
-    const double scale = near.norm();
+    const double scale = B::frobeniusNorm(near);
     const double tolerance = options_.relative_tolerance * scale;
     double previous = INFINITY;
     bool converged = false;
@@ -178,10 +191,10 @@ class MatrixLegendreSolver {
     int smallest_at = 0;
     for (int k = 0; fixed_point && k < budget; ++k) {
       updateVelocity(h);
-      if constexpr (kCayley) ap_.noalias() = a_ * p_;  // before the target, which may use it
+      if constexpr (kCayley) B::multiply(a_, p_, ap_);  // before the target, which may use it
       const Dual& W = targetValue();
       sweep(W, h);
-      const double update = (next_ - p_).norm();
+      const double update = B::frobeniusDistance(next_, p_);
       ++stats_.fixed_point;
       if (!std::isfinite(update)) {
         stats_.residual = update;
@@ -250,10 +263,12 @@ class MatrixLegendreSolver {
                           (strategy_ == MatrixLegendreStrategy::kAuto && !converged);
       const bool ceres = strategy_ == MatrixLegendreStrategy::kCeres;
       if (newton) converged = newtonKrylov(target.momentum, h, tolerance);
-      if (ceres) converged = ceresSolve(target.momentum, h, tolerance);
+      if constexpr (kDense) {
+        if (ceres) converged = ceresSolve(target.momentum, h, tolerance);
+      }
       // Both end on a sweep at their solution p: a, a p and the next iterate are at hand.
       if (converged && (newton || ceres)) {
-        certifyFrozenSolution(target.momentum, (next_ - p_).norm(), scale);
+        certifyFrozenSolution(target.momentum, B::frobeniusDistance(next_, p_), scale);
       }
     } else if (strategy_ != MatrixLegendreStrategy::kAuto && !forced) {
       throw InvalidArgument(
@@ -261,7 +276,8 @@ class MatrixLegendreSolver {
     }
     if (!converged && !std::isfinite(stats_.residual)) {
       // Overflow (e.g. |α| or h near the double range) is not a missed tolerance.
-      throw NonFiniteState("discrete Legendre equation (matrix-free)", -1, t, h, p_, "iterate");
+      throw NonFiniteState("discrete Legendre equation (matrix-free)", -1, t, h, B::entries(p_),
+                           "iterate");
     }
     if (!converged) {
       throw SolveFailure(std::string("discrete Legendre equation (matrix-free, ") +
@@ -292,10 +308,10 @@ class MatrixLegendreSolver {
   static constexpr int kMaxExtraSweeps = 2;
 
   void allocate(const Dual& like) {
-    if (p_.rows() == like.rows() && p_.cols() == like.cols()) return;
+    if (B::sameShape(p_, like)) return;
     for (Dual* m : {&p_, &next_, &xi_, &a_, &ap_, &apa_, &frozen_, &residual_, &delta_, &delta_a_,
                     &t1_, &t2_, &target_, &argument_, &direction_}) {
-      m->setZero(like.rows(), like.cols());
+      B::zeroLike(*m, like);
     }
     forgetPredictions();
   }
@@ -334,7 +350,7 @@ class MatrixLegendreSolver {
   // a(next − p)a): ‖p̃ − q‖ ≤ (2‖a‖₂λ + ‖a‖₂²)/(1 − λ)‖next − p‖. ‖a‖₂ is bounded by ‖a‖₁
   // (= ‖a‖_∞ for skew-Hermitian a). Returns whether frozen_ now holds a certified p̃.
   bool certifyFrozenSolution(const Dual& M, double update, double scale) {
-    const double norm_a = a_.cwiseAbs().colwise().sum().maxCoeff();
+    const double norm_a = B::oneNorm(a_);
     const double lambda = 2.0 * norm_a + norm_a * norm_a;
     const double rounding = 0.5 * std::numeric_limits<double>::epsilon() * scale;
     frozen_exact_ = false;
@@ -346,8 +362,9 @@ class MatrixLegendreSolver {
     const double refined =
         4.0 * norm_a * (2.0 * norm_a * lambda + norm_a * norm_a) / (1.0 - lambda);
     if (refined * update > rounding) return false;
-    t1_.noalias() = a_ * next_;  // frozen_ = M − [a, next] + a p a
-    frozen_ = M - t1_ + t1_.adjoint() + apa_;
+    B::multiply(a_, next_, t1_);  // frozen_ = M − [a, next] + a p a
+    B::entries(frozen_) = B::entries(M) - B::entries(t1_) + B::entries(apa_);
+    B::addAdjoint(1.0, t1_, frozen_);
     ++stats_.refinements;
     return frozen_exact_ = true;
   }
@@ -399,28 +416,27 @@ class MatrixLegendreSolver {
   // algebra: LiePoissonSystem::velocityInto), a = hξ/2.
   void updateVelocity(double h) {
     system_.velocityInto(p_, argument_, xi_);
-    a_ = (0.5 * h) * xi_;
+    B::entries(a_) = (0.5 * h) * B::entries(xi_);
   }
 
   // δa = (h/2) Dξ(p)[v] at the p of the last updateVelocity.
   void halfStepDerivative(const Dual& v, double h, Dual& out) {
     system_.velocityDerivativeInto(argument_, v, direction_, out);
-    out *= 0.5 * h;
+    B::entries(out) *= 0.5 * h;
   }
 
   // Newton on r(p) = (I + a)p(I − a) − W with GMRES on J δ = −r.
   bool newtonKrylov(const Dual& W, double h, double tolerance) {
-    gmres_.resize(W.rows(), W.cols());  // its basis only when Newton–Krylov is needed
+    gmres_.resize(W);  // its basis only when Newton–Krylov is needed
     for (int k = 0; k < kMaxNewton; ++k) {
       updateVelocity(h);
       G::cayleyFixedPoint(W, a_, p_, ap_, apa_, next_);
-      residual_ = p_ - next_;  // r(p)
-      stats_.residual = residual_.norm();
+      B::entries(residual_) = B::entries(next_) - B::entries(p_);  // −r(p)
+      stats_.residual = B::frobeniusNorm(residual_);
       if (!std::isfinite(stats_.residual)) return false;
       if (stats_.residual <= tolerance) return true;
       ++stats_.newton;
-      residual_ = -residual_;
-      delta_.setZero();
+      B::entries(delta_).setZero();
       const auto jacobian = [&](const Dual& v, Dual& out) {
         halfStepDerivative(v, h, delta_a_);
         G::cayleyLinearised(a_, p_, v, delta_a_, t1_, t2_, out);
@@ -430,11 +446,11 @@ class MatrixLegendreSolver {
       const double forcing = std::max(0.1 * tolerance, 1e-4 * stats_.residual);
       const auto krylov = gmres_.solve(jacobian, residual_, delta_, forcing, kMaxKrylov);
       stats_.krylov += krylov.iterations;
-      p_ += delta_;
+      B::entries(p_) += B::entries(delta_);
     }
     updateVelocity(h);
     G::cayleyFixedPoint(W, a_, p_, ap_, apa_, next_);
-    stats_.residual = (p_ - next_).norm();
+    stats_.residual = B::frobeniusDistance(p_, next_);
     return stats_.residual <= tolerance;
   }
 
@@ -547,7 +563,7 @@ class MatrixLegendreSolver {
     return stats_.residual <= tolerance;
   }
 
-  const LiePoissonSystem<G>& system_;
+  const System& system_;
   const R& retraction_;
   LegendreForm form_;
   SolverOptions options_;

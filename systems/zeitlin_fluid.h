@@ -21,6 +21,14 @@ namespace ddb {
 /// ħ = 2/√(N² − 1).
 inline double zeitlinHbar(Eigen::Index n) { return 2.0 / std::sqrt(double(n * n - 1)); }
 
+/// ξ = ∂H/∂W = −Δ⁻¹W/ħ given a Poisson solver of W's layout (dense: HoppeYauLaplacian,
+/// distributed: DistributedPoissonSolver); the Hessian applies the same map.
+template <class Laplacian, class X>
+void zeitlinVelocityInto(Laplacian& laplacian, double hbar, const X& W, X& out) {
+  laplacian.solve(W, out);
+  MatrixBackend<X>::entries(out) *= -1.0 / hbar;
+}
+
 /// H(W) = Re tr(W Δ⁻¹W)/(2ħ); its gradient and Hessian are Poisson solves (O(N²)).
 class ZeitlinHamiltonian final : public Hamiltonian<SUN> {
  public:
@@ -53,12 +61,10 @@ class ZeitlinHamiltonian final : public Hamiltonian<SUN> {
     return out;
   }
   void gradientInto(const Matrix& W, Matrix& out) const override {
-    laplacian_.solve(W, out);
-    out *= -1.0 / hbar_;
+    zeitlinVelocityInto(laplacian_, hbar_, W, out);
   }
   void hessianTimesInto(const Matrix&, const Matrix& V, Matrix& out) const override {
-    laplacian_.solve(V, out);
-    out *= -1.0 / hbar_;
+    zeitlinVelocityInto(laplacian_, hbar_, V, out);
   }
 
  private:

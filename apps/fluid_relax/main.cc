@@ -34,6 +34,7 @@
 #include "fluid_relax/input.h"
 #include "fluid_relax/options.h"
 #include "fluid_relax/outputs.h"
+#include "fluid_relax/summary.h"
 
 namespace {
 
@@ -203,51 +204,11 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   const RelaxResult<SUN>& result = run.result();
   const double runtime_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const double commutator_final = diagnostics.commutatorNorm(result.final);
-  const double residual_final = steadyStateResidual(*system, result.final);
+  const app::Json summary = runSummary(o, s, result, tally, method_name, watch_energy, runtime_s);
   const bool interrupted = result.stop == RelaxStop::kInterrupted;
-  app::Json summary;
-  summary["version"] = app::projectVersion();
-  summary["status"] = !result.ok() ? "FAILED" : interrupted ? "interrupted" : "ok";
-  summary["n"] = n;
-  summary["alpha"] = s.alpha;
-  summary["h"] = newton ? app::Json() : app::Json(s.h);
-  summary["h_source"] = newton ? app::Json() : app::Json(s.default_h ? "default" : "--h");
-  summary["steps"] = result.last.k;
-  summary["steps_requested"] = s.steps;
-  summary["t_end"] = result.last.t;
-  summary["stop"] = relaxStopName(result.stop);
-  summary["steady"] = result.steady();
-  summary["until_steady"] = s.relax.tolerance > 0 ? app::Json(s.relax.tolerance) : app::Json();
-  summary["residual_final"] = residual_final;
-  summary["adaptive"] = s.relax.control.adaptive;
-  summary["newton"] = newton;
-  summary["adaptive_tol"] =
-      s.relax.control.adaptive ? app::Json(s.relax.control.tolerance) : app::Json();
-  summary["steps_rejected"] = result.steps_rejected;
-  summary["h_final"] = result.last.h;
-  summary["every"] = o.every;
-  summary["method"] = method_name;
-  summary["init"] = s.init;
-  summary["seed"] = s.init == "file" ? app::Json() : app::Json(o.seed);
-  summary["init_file"] = s.init == "file" ? app::Json(o.init_file) : app::Json();
-  summary["energy_initial"] = diagnostics.energy(s.W0);
-  summary["energy_final"] = diagnostics.energy(result.final);
-  summary["enstrophy_initial"] = diagnostics.enstrophy(s.W0);
-  summary["enstrophy"] = diagnostics.enstrophy(result.final);
-  summary["spectrum_drift_max"] = tally.drift_max;
-  summary["commutator_initial"] = diagnostics.commutatorNorm(s.W0);
-  summary["commutator_final"] = commutator_final;
-  summary["runtime_s"] = runtime_s;
-  summary["iterations_mean"] =
-      result.last.k > 0 ? static_cast<double>(tally.iterations_total) / result.last.k : 0.0;
-  summary["iterations_max"] = tally.iterations_max;
-  if (watch_energy) summary["energy_rises"] = tally.rises.count();
   if (!result.ok()) {
     // A failed run writes no final state: W_final.csv and omega_final.csv would claim a
     // time the run did not reach (docs/file-formats.md).
-    summary["failed_step"] = result.failed_step;
-    summary["failure"] = result.failure;
     app::writeJsonFile(s.out / "summary.json", summary);
     spdlog::error("{}", result.failure);
     spdlog::error("history.csv holds the {} steps before the failure; wrote {}", result.last.k,
@@ -271,7 +232,8 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
       "drift <= {:.2e}, {:.3g} s; wrote {}",
       relaxStopName(result.stop), result.last.k, result.last.t, result.steps_rejected,
       diagnostics.energy(s.W0), diagnostics.energy(result.final), diagnostics.commutatorNorm(s.W0),
-      commutator_final, residual_final, tally.drift_max, runtime_s, s.out.string());
+      summary["commutator_final"].get<double>(), summary["residual_final"].get<double>(),
+      tally.drift_max, runtime_s, s.out.string());
   return app::kExitOk;
 }
 

@@ -2,10 +2,11 @@
 // as a function v ↦ A v (docs/conventions.md §4: no operator on the N²-dimensional space
 // is ever formed). The inner product is the real one, Re tr(XᴴY), so operators that are
 // only real-linear (as on u(N)) are handled. The Krylov basis and the small Hessenberg
-// system are allocated by resize() once; solve() does not allocate.
+// system are allocated by resize() once; solve() does not allocate. Written against the
+// matrix backend (core/matrix_backend.h): dense or distributed matrices alike.
 #pragma once
 
-#include <ddb/core/detail/scalar.h>
+#include <ddb/core/matrix_backend.h>
 
 #include <Eigen/Core>
 #include <cmath>
@@ -15,6 +16,8 @@ namespace ddb {
 
 template <class X>
 class MatrixFreeGmres {
+  using B = MatrixBackend<X>;
+
  public:
   struct Result {
     int iterations = 0;     // operator applications
@@ -23,10 +26,11 @@ class MatrixFreeGmres {
 
   explicit MatrixFreeGmres(int restart = 30) : restart_(restart) {}
 
-  /// Allocates the workspace for rows × cols matrices (a no-op when the size is kept).
-  void resize(Eigen::Index rows, Eigen::Index cols) {
-    if (!basis_.empty() && basis_[0].rows() == rows && basis_[0].cols() == cols) return;
-    basis_.assign(static_cast<std::size_t>(restart_ + 1), X::Zero(rows, cols));
+  /// Allocates the workspace for matrices shaped like `like` (a no-op when kept).
+  void resize(const X& like) {
+    if (!basis_.empty() && B::sameShape(basis_[0], like)) return;
+    basis_.resize(static_cast<std::size_t>(restart_ + 1));
+    for (X& v : basis_) B::zeroLike(v, like);
     hessenberg_ = Eigen::MatrixXd::Zero(restart_ + 1, restart_);
     g_ = Eigen::VectorXd::Zero(restart_ + 1);
     y_ = Eigen::VectorXd::Zero(restart_);
@@ -38,17 +42,17 @@ class MatrixFreeGmres {
   /// max_iterations operator applications. apply(v, out) must write A v into out.
   template <class Apply>
   Result solve(const Apply& apply, const X& b, X& x, double tolerance, int max_iterations) {
-    resize(b.rows(), b.cols());
+    resize(b);
     Result result;
     while (true) {
       X& r = basis_[0];
       apply(x, r);
       ++result.iterations;
-      r = b - r;
-      const double beta = r.norm();
+      B::entries(r) = B::entries(b) - B::entries(r);
+      const double beta = B::frobeniusNorm(r);
       result.residual = beta;
       if (beta <= tolerance || beta == 0.0 || result.iterations >= max_iterations) return result;
-      r /= beta;
+      B::entries(r) /= beta;
       g_.setZero();
       g_(0) = beta;
       int k = 0;
@@ -58,13 +62,13 @@ class MatrixFreeGmres {
         ++result.iterations;
         for (int i = 0; i <= k; ++i) {  // modified Gram–Schmidt in Re tr(XᴴY)
           const X& v = basis_[static_cast<std::size_t>(i)];
-          const double hik = realPart(v.conjugate().cwiseProduct(w).sum());
+          const double hik = B::innerProduct(v, w);
           hessenberg_(i, k) = hik;
-          w -= hik * v;
+          B::entries(w) -= hik * B::entries(v);
         }
-        const double norm = w.norm();
+        const double norm = B::frobeniusNorm(w);
         hessenberg_(k + 1, k) = norm;
-        if (norm > 0.0) w /= norm;
+        if (norm > 0.0) B::entries(w) /= norm;
         for (int i = 0; i < k; ++i) rotate(i, hessenberg_(i, k), hessenberg_(i + 1, k));
         const double a = hessenberg_(k, k), c = hessenberg_(k + 1, k);
         const double rho = std::hypot(a, c);
@@ -86,7 +90,8 @@ class MatrixFreeGmres {
         for (int j = i + 1; j < k; ++j) s -= hessenberg_(i, j) * y_(j);
         y_(i) = s / hessenberg_(i, i);
       }
-      for (int i = 0; i < k; ++i) x += y_(i) * basis_[static_cast<std::size_t>(i)];
+      for (int i = 0; i < k; ++i)
+        B::entries(x) += y_(i) * B::entries(basis_[static_cast<std::size_t>(i)]);
       if (result.residual <= tolerance || result.iterations >= max_iterations) return result;
     }
   }

@@ -1,0 +1,60 @@
+#include "fluid_relax/summary.h"
+
+#include "common/cli.h"
+
+namespace ddb::fluid {
+
+app::Json runSummary(const Options& o, const Settings& s, const RelaxResult<SUN>& result,
+                     const Tally& tally, const std::string& method_name, bool watch_energy,
+                     double runtime_s) {
+  const Eigen::Index n = s.W0.rows();
+  const auto system = makeZeitlinFluid(n, s.alpha);
+  const ZeitlinDiagnostics diagnostics(
+      dynamic_cast<const ZeitlinHamiltonian&>(system->hamiltonian()));
+  const bool newton = s.relax.newton;
+  const bool interrupted = result.stop == RelaxStop::kInterrupted;
+  app::Json summary;
+  summary["version"] = app::projectVersion();
+  summary["status"] = !result.ok() ? "FAILED" : interrupted ? "interrupted" : "ok";
+  summary["n"] = n;
+  summary["alpha"] = s.alpha;
+  summary["h"] = newton ? app::Json() : app::Json(s.h);
+  summary["h_source"] = newton ? app::Json() : app::Json(s.default_h ? "default" : "--h");
+  summary["steps"] = result.last.k;
+  summary["steps_requested"] = s.steps;
+  summary["t_end"] = result.last.t;
+  summary["stop"] = relaxStopName(result.stop);
+  summary["steady"] = result.steady();
+  summary["until_steady"] = s.relax.tolerance > 0 ? app::Json(s.relax.tolerance) : app::Json();
+  summary["residual_final"] = steadyStateResidual(*system, result.final);
+  summary["adaptive"] = s.relax.control.adaptive;
+  summary["newton"] = newton;
+  summary["adaptive_tol"] =
+      s.relax.control.adaptive ? app::Json(s.relax.control.tolerance) : app::Json();
+  summary["steps_rejected"] = result.steps_rejected;
+  summary["h_final"] = result.last.h;
+  summary["every"] = o.every;
+  summary["method"] = method_name;
+  summary["init"] = s.init;
+  summary["seed"] = s.init == "file" ? app::Json() : app::Json(o.seed);
+  summary["init_file"] = s.init == "file" ? app::Json(o.init_file) : app::Json();
+  summary["energy_initial"] = diagnostics.energy(s.W0);
+  summary["energy_final"] = diagnostics.energy(result.final);
+  summary["enstrophy_initial"] = diagnostics.enstrophy(s.W0);
+  summary["enstrophy"] = diagnostics.enstrophy(result.final);
+  summary["spectrum_drift_max"] = tally.drift_max;
+  summary["commutator_initial"] = diagnostics.commutatorNorm(s.W0);
+  summary["commutator_final"] = diagnostics.commutatorNorm(result.final);
+  summary["runtime_s"] = runtime_s;
+  summary["iterations_mean"] =
+      result.last.k > 0 ? static_cast<double>(tally.iterations_total) / result.last.k : 0.0;
+  summary["iterations_max"] = tally.iterations_max;
+  if (watch_energy) summary["energy_rises"] = tally.rises.count();
+  if (!result.ok()) {
+    summary["failed_step"] = result.failed_step;
+    summary["failure"] = result.failure;
+  }
+  return summary;
+}
+
+}  // namespace ddb::fluid

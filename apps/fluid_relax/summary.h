@@ -1,0 +1,25 @@
+// fluid-relax's summary.json (docs/file-formats.md, "fluid-relax"): the fields of a run,
+// whichever app ran it (fluid-relax, or fluid-relax-mpi, which adds its own).
+#pragma once
+
+#include <ddb/groups/sun.h>
+#include <ddb/integrators/relax.h>
+#include <ddb/systems/zeitlin_fluid.h>
+
+#include <string>
+
+#include "common/json.h"
+#include "fluid_relax/checkpoint.h"
+#include "fluid_relax/input.h"
+#include "fluid_relax/options.h"
+
+namespace ddb::fluid {
+
+/// summary.json of the run of `o`, `s` that ended in `result` (its final state whole),
+/// with the accumulated `tally`, its method's name and its wall time. `watch_energy`:
+/// whether energy rises were counted (app::EnergyRises::applies).
+app::Json runSummary(const Options& o, const Settings& s, const RelaxResult<SUN>& result,
+                     const Tally& tally, const std::string& method_name, bool watch_energy,
+                     double runtime_s);
+
+}  // namespace ddb::fluid

@@ -1,0 +1,46 @@
+// fluid-relax-mpi's input (docs/distributed.md, "fluid-relax-mpi"): fluid-relax's command
+// line and checks (fluid_relax/input.h) with --block, less the flags it refuses, and the
+// agreement of all ranks on the outcome: every rank checks the same input, and a rank that
+// refuses it (a file only it cannot read) refuses it for all.
+#pragma once
+
+#include <ddb/distributed/process_grid.h>
+
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <string>
+
+#include "fluid_relax/input.h"
+#include "fluid_relax/options.h"
+
+namespace ddb::fluid_mpi {
+
+constexpr const char* kApp = "fluid-relax-mpi";
+/// The default block size is this, or less where N is small: ceil(N / max(grid rows, cols)),
+/// so that every rank holds entries.
+constexpr int kDefaultBlock = 64;
+
+/// An outcome every rank agreed on and one rank has printed: the app exits with `status`.
+struct Reported {
+  int status;
+};
+
+struct MpiOptions {
+  fluid::Options relax;
+  std::string block;  // as given ("" for the default)
+};
+
+/// fluid-relax's options with --block and this app's --help footer.
+void addMpiOptions(CLI::App& cli, MpiOptions& o);
+
+/// The checks of fluid::settings(), the refused flags and --block, on every rank; bad input
+/// on any rank is Reported{2} on every rank (printed by the lowest such rank), so that no
+/// rank goes on alone. `block` is set on success.
+fluid::Settings mpiSettings(const CLI::App& cli, const MpiOptions& o, const ProcessGrid& grid,
+                            int& block);
+
+/// Runs `job` on rank 0 and agrees on its outcome: a UsageError (status 2) or any other
+/// exception (status 1) there is printed by rank 0 and returned on every rank; 0 if it ran.
+int onRankZero(const ProcessGrid& grid, const std::function<void()>& job);
+
+}  // namespace ddb::fluid_mpi

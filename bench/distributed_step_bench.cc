@@ -1,0 +1,111 @@
+// The distributed DDB Cayley step (distributed/distributed_ddb.h) timed against one
+// distributed complex N×N product (pzgemm_) in the same run, on the ranks it is started
+// with (docs/distributed.md, "Measured"): products per step = step time / product time;
+// strong scaling = the step time on 1 rank over that on P. On one rank it also times the
+// dense step (Ddb<Cayley<SUN>>), the serial engine, as the peer. State: the seeded random
+// vorticity (seed 1, ‖W‖_F = √N), fluid-relax's default h = 0.02 ħ/‖P₀‖₂, α as given,
+// Legendre tolerance 1e-12 relative as the Zeitlin benchmarks; 10 untimed steps fill the
+// predictor. Times are the largest over the ranks (MPI_Wtime between barriers). Prints one
+// JSON object from rank 0. The BLAS thread count is the environment's.
+//
+//   mpiexec -n P distributed-step-bench N [steps] [alpha] [block]
+#include <ddb/distributed/distributed_ddb.h>
+#include <ddb/distributed/process_grid.h>
+#include <ddb/integrators/ddb.h>
+#include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_initial_conditions.h>
+#include <mpi.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <string>
+
+namespace {
+
+using namespace ddb;
+
+// Seconds per call of f over `count` calls, the largest over the ranks.
+double secondsPerCall(const ProcessGrid& grid, long count, const std::function<void()>& f) {
+  MPI_Barrier(grid.comm());
+  const double begin = MPI_Wtime();
+  for (long i = 0; i < count; ++i) f();
+  MPI_Barrier(grid.comm());
+  const double local = (MPI_Wtime() - begin) / static_cast<double>(count);
+  return grid.max(local);
+}
+
+int bench(int argc, char** argv, const ProcessGrid& grid) {
+  if (argc < 2) {
+    if (grid.rank() == 0)
+      std::fprintf(stderr, "usage: distributed-step-bench N [steps] [alpha] [block]\n");
+    return 2;
+  }
+  const int n = std::atoi(argv[1]);
+  const long steps = argc > 2 ? std::atol(argv[2]) : 20;
+  const double alpha = argc > 3 ? std::atof(argv[3]) : 0.5;
+  const int block = argc > 4 ? std::atoi(argv[4]) : 64;
+  constexpr long kWarmUp = 10;
+  SolverOptions options;
+  options.relative_tolerance = 1e-12;
+
+  const Eigen::MatrixXcd W0 = randomVorticity(n, 1);
+  const ZeitlinHamiltonian hamiltonian(n);
+  const double h = 0.02 * hamiltonian.hbar() / SUN::spectralNorm(hamiltonian.streamMatrix(W0));
+
+  DistributedMatrix W(grid, n, block), a(W.layout()), b(W.layout()), c(W.layout());
+  W.scatterFrom(W0);
+  a.scatterFrom(W0);
+  b.scatterFrom(W0);
+  const double product = secondsPerCall(grid, 5, [&] { multiply(a, b, c); });
+
+  DistributedDdb ddb(W.layout(), alpha, options);
+  long k = 0, sweeps = 0, refinements = 0, newton = 0;
+  for (; k < kWarmUp; ++k) ddb.advance(W, k * h, h);
+  const double step = secondsPerCall(grid, steps, [&] {
+    ddb.advance(W, k * h, h);
+    ++k;
+    const LegendreStats& stats = ddb.legendreSolver().stats();
+    sweeps += stats.fixed_point;
+    refinements += stats.refinements;
+    newton += stats.newton;
+  });
+
+  double dense_step = 0.0;
+  if (grid.size() == 1) {
+    Ddb<Cayley<SUN>> dense(makeZeitlinFluid(n, alpha), Cayley<SUN>(), LegendreForm::kHamiltonian,
+                           options);
+    Eigen::MatrixXcd Wd = W0;
+    long j = 0;
+    for (; j < kWarmUp; ++j) dense.advance(Wd, j * h, h);
+    dense_step = secondsPerCall(grid, steps, [&] {
+      dense.advance(Wd, j * h, h);
+      ++j;
+    });
+  }
+  if (grid.rank() == 0) {
+    std::printf(
+        "{\"n\": %d, \"ranks\": %d, \"grid\": [%d, %d], \"block\": %d, \"alpha\": %g, \"steps\": "
+        "%ld, \"product_s\": %.6g, \"step_s\": %.6g, \"products_per_step\": %.4g, "
+        "\"sweeps_per_step\": %.4g, \"refinements_per_step\": %.4g, \"newton_per_step\": %.4g, "
+        "\"dense_step_s\": %s}\n",
+        n, grid.size(), grid.rows(), grid.cols(), block, alpha, steps, product, step,
+        step / product, double(sweeps) / steps, double(refinements) / steps, double(newton) / steps,
+        grid.size() == 1 ? std::to_string(dense_step).c_str() : "null");
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  MPI_Init(&argc, &argv);
+  int status = 0;
+  {
+    const ddb::ProcessGrid grid;
+    status = bench(argc, argv, grid);
+  }
+  MPI_Finalize();
+  return status;
+}

@@ -1,0 +1,155 @@
+// MatrixBackend<DistributedMatrix>: the matrix backend (core/matrix_backend.h) of a
+// block-cyclic matrix, so that the matrix groups' step formulas run unchanged on matrices
+// distributed over MPI ranks (docs/distributed.md, "One step formula"). entries(x) is this
+// rank's local array; the operands of one formula share a layout, so element-wise
+// arithmetic on local arrays is the whole matrices' arithmetic. Products are pzgemm_,
+// adjoints pztranc_, the 1-norm pzlange_, the inverse pzgetrf_ + pzgetri_; sums over the
+// ranks are ProcessGrid::sum (the same bits on every rank). All functions are collective.
+#pragma once
+
+#include <ddb/core/errors.h>
+#include <ddb/core/matrix_backend.h>
+#include <ddb/distributed/distributed_matrix.h>
+#include <ddb/distributed/distributed_product.h>
+#include <ddb/distributed/scalapack.h>
+#include <mpi.h>
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <string>
+#include <vector>
+
+namespace ddb {
+
+/// A ← A⁻¹ for a distributed A (pzgetrf_, pzgetri_), with pivots and workspaces kept
+/// between calls of one layout.
+class DistributedInverse {
+ public:
+  /// Returns false, leaving A unspecified, when A is exactly singular (on every rank).
+  bool invert(DistributedMatrix& A) {
+    const int n = A.size(), one = 1;
+    const BlockCyclicLayout& layout = A.layout();
+    pivots_.resize(static_cast<std::size_t>(layout.localRows() + layout.block()));
+    int info = 0;
+    pzgetrf_(&n, &n, A.data(), &one, &one, A.descriptor(), pivots_.data(), &info);
+    if (info != 0) return false;
+    if (work_.empty()) {  // the workspace query
+      const int query = -1;
+      std::complex<double> lwork;
+      int liwork = 0;
+      pzgetri_(&n, A.data(), &one, &one, A.descriptor(), pivots_.data(), &lwork, &query, &liwork,
+               &query, &info);
+      work_.resize(static_cast<std::size_t>(std::max(1.0, lwork.real())));
+      iwork_.resize(static_cast<std::size_t>(std::max(1, liwork)));
+    }
+    const int lwork = static_cast<int>(work_.size()), liwork = static_cast<int>(iwork_.size());
+    pzgetri_(&n, A.data(), &one, &one, A.descriptor(), pivots_.data(), work_.data(), &lwork,
+             iwork_.data(), &liwork, &info);
+    return info == 0;
+  }
+
+ private:
+  std::vector<int> pivots_, iwork_;
+  std::vector<std::complex<double>> work_;
+};
+
+template <>
+struct MatrixBackend<DistributedMatrix> {
+  using X = DistributedMatrix;
+  using Scalar = std::complex<double>;
+  using Entries = Eigen::MatrixXcd;
+  using Inverse = DistributedInverse;
+
+  static Entries& entries(X& x) { return x.local(); }
+  static const Entries& entries(const X& x) { return x.local(); }
+
+  static bool sameShape(const X& x, const X& like) { return x.sameLayout(like); }
+  static void zeroLike(X& x, const X& like) { x = DistributedMatrix(like.layout()); }
+  static Eigen::Index rows(const X& x) { return x.size(); }
+  static Eigen::Index globalSize(const X& x) { return Eigen::Index(x.size()) * x.size(); }
+
+  static void multiply(const X& a, const X& b, X& out) { ddb::multiply(a, b, out); }
+  static void multiplyByAdjoint(const X& a, const X& b, X& out) {
+    const int n = a.size(), one = 1;
+    const Scalar alpha(1.0), beta(0.0);
+    pzgemm_("N", "C", &n, &n, &n, &alpha, a.data(), &one, &one, a.descriptor(), b.data(), &one,
+            &one, b.descriptor(), &beta, out.data(), &one, &one, out.descriptor());
+  }
+  static void addAdjoint(double scale, const X& x, X& out) {
+    const int n = x.size(), one = 1;
+    const Scalar alpha(scale), beta(1.0);
+    pztranc_(&n, &n, &alpha, x.data(), &one, &one, x.descriptor(), &beta, out.data(), &one, &one,
+             out.descriptor());
+  }
+  /// x ← (x − xᴴ)/2 entry by entry as the dense backend forms it, so skew-Hermitian bit for
+  /// bit; xᴴ goes through a workspace of x's local size.
+  static void makeSkewHermitian(X& x) {
+    thread_local Entries adjoint;
+    adjoint.resize(x.local().rows(), x.local().cols());
+    const int n = x.size(), one = 1;
+    const Scalar alpha(1.0), beta(0.0);
+    pztranc_(&n, &n, &alpha, x.data(), &one, &one, x.descriptor(), &beta,
+             adjoint.size() > 0 ? adjoint.data() : x.data(), &one, &one, x.descriptor());
+    x.local() = 0.5 * (x.local() - adjoint);
+  }
+  static Scalar trace(const X& x) {
+    Scalar local(0.0);
+    forDiagonal(x, [&](int i, int j) { local += x.local()(i, j); });
+    return x.layout().grid().sum(local);
+  }
+  static void addToDiagonal(X& x, Scalar c) {
+    forDiagonal(x, [&](int i, int j) { x.local()(i, j) += c; });
+  }
+
+  static double frobeniusNorm(const X& x) {
+    return std::sqrt(x.layout().grid().sum(x.local().squaredNorm()));
+  }
+  static double frobeniusDistance(const X& x, const X& y) {
+    return std::sqrt(x.layout().grid().sum((x.local() - y.local()).squaredNorm()));
+  }
+  static double oneNorm(const X& x) {
+    thread_local std::vector<double> work;
+    work.resize(static_cast<std::size_t>(std::max(1, x.layout().localCols())));
+    const int n = x.size(), one = 1;
+    return pzlange_("1", &n, &n, x.data(), &one, &one, x.descriptor(), work.data());
+  }
+  static double innerProduct(const X& x, const X& y) {
+    return x.layout().grid().sum(x.local().conjugate().cwiseProduct(y.local()).sum().real());
+  }
+  static bool isZero(const X& x) {
+    const double largest = x.local().size() > 0 ? x.local().cwiseAbs().maxCoeff() : 0.0;
+    return !(x.layout().grid().max(largest) > 0.0);
+  }
+
+  /// out(s) = x(indices(s)), column-major linear indices into the whole matrix: each entry
+  /// from its owner (the others add zero, so the sum is exact), on every rank.
+  template <class Indices, class Out>
+  static void sampleEntries(const X& x, const Indices& indices, Out& out) {
+    const BlockCyclicLayout& layout = x.layout();
+    const ProcessGrid& grid = layout.grid();
+    const Eigen::Index n = x.size();
+    for (Eigen::Index s = 0; s < indices.size(); ++s) {
+      const int i = static_cast<int>(indices(s) % n), j = static_cast<int>(indices(s) / n);
+      out(s) = layout.ownerRow(i) == grid.row() && layout.ownerCol(j) == grid.col()
+                   ? x.local()(layout.localRow(i), layout.localCol(j))
+                   : Scalar(0.0);
+    }
+    MPI_Allreduce(MPI_IN_PLACE, out.data(), static_cast<int>(out.size()), MPI_C_DOUBLE_COMPLEX,
+                  MPI_SUM, grid.comm());
+  }
+
+ private:
+  // f(local row, local column) for every local entry on the diagonal.
+  template <class F>
+  static void forDiagonal(const X& x, F f) {
+    const BlockCyclicLayout& layout = x.layout();
+    for (int l = 0; l < layout.localCols(); ++l) {
+      const int i = layout.globalCol(l);
+      if (layout.ownerRow(i) == layout.grid().row()) f(layout.localRow(i), l);
+    }
+  }
+};
+
+}  // namespace ddb
