@@ -6,7 +6,9 @@
 // vorticity (seed 1, ‖W‖_F = √N), fluid-relax's default h = 0.02 ħ/‖P₀‖₂, α as given,
 // Legendre tolerance 1e-12 relative as the Zeitlin benchmarks; 10 untimed steps fill the
 // predictor. Times are the largest over the ranks (MPI_Wtime between barriers). Prints one
-// JSON object from rank 0. The BLAS thread count is the environment's.
+// JSON object from rank 0, with the bytes sent to other ranks per product and per step
+// (summed over the ranks; counted at the MPI calls, mpi_byte_counter.cc). The BLAS thread
+// count is the environment's.
 //
 //   mpiexec -n P distributed-step-bench N [steps] [alpha] [block]
 #include <ddb/distributed/distributed_ddb.h>
@@ -22,21 +24,30 @@
 #include <functional>
 #include <string>
 
+#include "mpi_byte_counter.h"
+
 namespace {
 
 using namespace ddb;
 
-// Seconds per call of f over `count` calls, the largest over the ranks.
-double secondsPerCall(const ProcessGrid& grid, long count, const std::function<void()>& f) {
+struct PerCall {
+  double seconds;  // the largest over the ranks
+  double bytes;    // sent to other ranks, summed over the ranks
+};
+
+// Time and bytes per call of f over `count` calls.
+PerCall perCall(const ProcessGrid& grid, long count, const std::function<void()>& f) {
   MPI_Barrier(grid.comm());
+  const std::int64_t sent = bench::mpiBytesSent();
   const double begin = MPI_Wtime();
   for (long i = 0; i < count; ++i) f();
-  MPI_Barrier(grid.comm());
   const double local = (MPI_Wtime() - begin) / static_cast<double>(count);
-  return grid.max(local);
+  const double bytes = static_cast<double>(bench::mpiBytesSent() - sent) / count;
+  MPI_Barrier(grid.comm());
+  return {grid.max(local), grid.sum(bytes)};
 }
 
-int bench(int argc, char** argv, const ProcessGrid& grid) {
+int runBench(int argc, char** argv, const ProcessGrid& grid) {
   if (argc < 2) {
     if (grid.rank() == 0)
       std::fprintf(stderr, "usage: distributed-step-bench N [steps] [alpha] [block]\n");
@@ -58,12 +69,13 @@ int bench(int argc, char** argv, const ProcessGrid& grid) {
   W.scatterFrom(W0);
   a.scatterFrom(W0);
   b.scatterFrom(W0);
-  const double product = secondsPerCall(grid, 5, [&] { multiply(a, b, c); });
+  multiply(a, b, c);  // untimed: BLACS sets up its buffers on the first call
+  const PerCall product = perCall(grid, 10, [&] { multiply(a, b, c); });
 
   DistributedDdb ddb(W.layout(), alpha, options);
   long k = 0, sweeps = 0, refinements = 0, newton = 0;
   for (; k < kWarmUp; ++k) ddb.advance(W, k * h, h);
-  const double step = secondsPerCall(grid, steps, [&] {
+  const PerCall step = perCall(grid, steps, [&] {
     ddb.advance(W, k * h, h);
     ++k;
     const LegendreStats& stats = ddb.legendreSolver().stats();
@@ -79,19 +91,20 @@ int bench(int argc, char** argv, const ProcessGrid& grid) {
     Eigen::MatrixXcd Wd = W0;
     long j = 0;
     for (; j < kWarmUp; ++j) dense.advance(Wd, j * h, h);
-    dense_step = secondsPerCall(grid, steps, [&] {
-      dense.advance(Wd, j * h, h);
-      ++j;
-    });
+    dense_step = perCall(grid, steps, [&] {
+                   dense.advance(Wd, j * h, h);
+                   ++j;
+                 }).seconds;
   }
   if (grid.rank() == 0) {
     std::printf(
         "{\"n\": %d, \"ranks\": %d, \"grid\": [%d, %d], \"block\": %d, \"alpha\": %g, \"steps\": "
         "%ld, \"product_s\": %.6g, \"step_s\": %.6g, \"products_per_step\": %.4g, "
         "\"sweeps_per_step\": %.4g, \"refinements_per_step\": %.4g, \"newton_per_step\": %.4g, "
-        "\"dense_step_s\": %s}\n",
-        n, grid.size(), grid.rows(), grid.cols(), block, alpha, steps, product, step,
-        step / product, double(sweeps) / steps, double(refinements) / steps, double(newton) / steps,
+        "\"bytes_per_product\": %.4g, \"bytes_per_step\": %.4g, \"dense_step_s\": %s}\n",
+        n, grid.size(), grid.rows(), grid.cols(), block, alpha, steps, product.seconds,
+        step.seconds, step.seconds / product.seconds, double(sweeps) / steps,
+        double(refinements) / steps, double(newton) / steps, product.bytes, step.bytes,
         grid.size() == 1 ? std::to_string(dense_step).c_str() : "null");
   }
   return 0;
@@ -104,7 +117,7 @@ int main(int argc, char** argv) {
   int status = 0;
   {
     const ddb::ProcessGrid grid;
-    status = bench(argc, argv, grid);
+    status = runBench(argc, argv, grid);
   }
   MPI_Finalize();
   return status;
