@@ -1,10 +1,14 @@
 // One step of a method on Zeitlin's fluid, N = 32..256, against one complex N×N product
 // (zeitlin/gemm/<N>) in the same run: products per step = step time / product time
-// (scripts/bench_ratios.py). State: the seeded random vorticity (seed 1, ‖W‖_F = √N),
+// (scripts/fluid_bench_table.py). State: the seeded random vorticity (seed 1, ‖W‖_F = √N),
 // h = 0.02 ħ/‖P₀‖₂, Legendre tolerance 1e-12 relative. Counters: iterations (fixed-point
 // sweeps and Newton steps), Krylov products, frozen refinements and mallocs per step. The
-// timed steps are steps 10..109 of the trajectory from that state (stepFluid). The BLAS
-// thread count is the environment's (OPENBLAS_NUM_THREADS).
+// timed steps are steps 10..109 of the trajectory from that state (stepFluid). At N = 512
+// and 1024 only ddb-cay (α = 0.5) and the product run, over steps 10..29 (a step there
+// takes up to seconds): zeitlin/ddb-cay/<N> at that h, beyond the dissipation's stability
+// bound there (the energy rises), and zeitlin-resolved/ddb-cay/<N> at
+// h = min(0.02 ħ/‖P₀‖₂, 4 ħ/(|α| ‖W₀‖₂²)) within it (docs/design.md, "Large N: the step's
+// stability bound"). The BLAS thread count is the environment's (OPENBLAS_NUM_THREADS).
 #include "zeitlin_bench.h"
 
 #include <benchmark/benchmark.h>
@@ -14,6 +18,8 @@
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -24,13 +30,24 @@ namespace {
 
 using Matrix = Eigen::MatrixXcd;
 constexpr int kSizes[] = {32, 64, 128, 256};
+constexpr int kLargeSizes[] = {512, 1024};
 constexpr double kTolerance = 1e-12;
 constexpr long kWarmUp = 10;
 constexpr long kWindow = 100;
+constexpr long kLargeWindow = 20;
 
 double benchmarkStep(const Matrix& W) {
   const ZeitlinHamiltonian hamiltonian(W.rows());
   return 0.02 * hamiltonian.hbar() / SUN::spectralNorm(hamiltonian.streamMatrix(W));
+}
+
+// The benchmark's step within the double bracket's period-2 stability bound,
+// h |α| ‖W‖₂²/ħ ≤ 4 (‖W‖₂ is a Casimir: the bound holds along the whole trajectory).
+double resolvedStep(const Matrix& W, double alpha) {
+  constexpr double kStiffness = 4.0;
+  const double norm = SUN::spectralNorm(W);
+  return std::min(benchmarkStep(W),
+                  kStiffness * zeitlinHbar(W.rows()) / (std::abs(alpha) * norm * norm));
 }
 
 std::unique_ptr<OneStepMethod<SUN>> makeBenchMethod(
@@ -63,10 +80,11 @@ const LegendreStats* legendreStats(const OneStepMethod<SUN>& method) {
   return nullptr;
 }
 
-void stepFluid(benchmark::State& state, const std::string& method_name, double alpha, int n) {
+void stepFluid(benchmark::State& state, const std::string& method_name, double alpha, int n,
+               long window, bool resolved) {
   const auto fluid = makeZeitlinFluid(n, alpha);
   const Matrix W0 = randomVorticity(n, 1);
-  const double h = benchmarkStep(W0);
+  const double h = resolved ? resolvedStep(W0, alpha) : benchmarkStep(W0);
   auto method = makeBenchMethod(method_name, fluid);
   Matrix W = W0;
   long k = 0;  // the step of the trajectory from W0
@@ -81,11 +99,11 @@ void stepFluid(benchmark::State& state, const std::string& method_name, double a
   // Whole windows: the timed steps are steps kWarmUp .. kWarmUp + kWindow − 1 of the
   // trajectory, each as often, whatever the number of iterations Google Benchmark chooses
   // (the fluid relaxes as it goes, and later steps are cheaper to predict).
-  while (state.KeepRunningBatch(kWindow)) {
+  while (state.KeepRunningBatch(window)) {
     state.PauseTiming();
     restart();
     state.ResumeTiming();
-    for (long j = 0; j < kWindow; ++j, ++k) {
+    for (long j = 0; j < window; ++j, ++k) {
       const long mallocs = tools::mallocCount();
       try {
         method->advance(W, k * h, h);
@@ -129,12 +147,25 @@ void registerZeitlinBenchmarks() {
     for (const MethodInfo& info : kMethods) {  // the table's matrix-group methods
       if ((info.groups & kMatrixGroups) == 0 || info.kind == MethodKind::kReference) continue;
       const std::string method(info.name);
-      benchmark::RegisterBenchmark(("zeitlin/" + method + size).c_str(), stepFluid, method, 0.5, n)
+      benchmark::RegisterBenchmark(("zeitlin/" + method + size).c_str(), stepFluid, method, 0.5, n,
+                                   kWindow, false)
           ->Unit(benchmark::kMicrosecond);
     }
     benchmark::RegisterBenchmark(("zeitlin-euler/ddb-cay" + size).c_str(), stepFluid,
-                                 std::string("ddb-cay"), 0.0, n)
+                                 std::string("ddb-cay"), 0.0, n, kWindow, false)
         ->Unit(benchmark::kMicrosecond);
+  }
+  // One window each: a window outlasts Google Benchmark's minimum time.
+  for (int n : kLargeSizes) {
+    const std::string size = "/" + std::to_string(n);
+    benchmark::RegisterBenchmark(("zeitlin/gemm" + size).c_str(), product, n)
+        ->Unit(benchmark::kMicrosecond);
+    for (const bool resolved : {false, true}) {
+      const std::string name = resolved ? "zeitlin-resolved/ddb-cay" : "zeitlin/ddb-cay";
+      benchmark::RegisterBenchmark((name + size).c_str(), stepFluid, std::string("ddb-cay"), 0.5, n,
+                                   kLargeWindow, resolved)
+          ->Unit(benchmark::kMicrosecond);
+    }
   }
 }
 

@@ -22,7 +22,7 @@ def load(path):
     for b in json.load(open(path))["benchmarks"]:
         if b.get("run_type") == "aggregate":
             continue
-        m = re.fullmatch(r"(zeitlin(?:-euler)?/[a-z0-9-]+)/(\d+)", b["name"])
+        m = re.fullmatch(r"(zeitlin(?:-[a-z]+)?/[a-z0-9-]+)/(\d+)", b["name"])
         if m:
             runs.setdefault(m.group(1), {})[int(m.group(2))] = b
     return runs

@@ -187,6 +187,42 @@ TEST(ZeitlinFluid, DdbKeepsTheSpectrumAndMovesTheEnergyOneWay) {
   }
 }
 
+// The exact flow loses energy (dE/dt = −α‖[P, W]‖_F²/(ħN) ≤ 0 for α > 0), and so does
+// DDB Cayley within the stability bound of its dissipative factor, which is explicit in
+// the state: the stiffness s = h|α|‖W‖₂²/ħ (‖W‖₂ a Casimir) must stay below about 6. At
+// s = 4 the energy falls at every step, at s = 10 a period-2 mode of the large scales
+// grows and the energy rises (docs/design.md, "Large N: the step's stability bound"; the
+// benchmark's h = 0.02 ħ/‖P₀‖₂ reaches s = 8.5 at N = 512).
+TEST(ZeitlinFluid, DdbCayleysEnergyFallsWithinTheDissipationsStabilityBound) {
+  const double alpha = 0.5;
+  for (int n : {32, 64}) {
+    const auto fluid = makeZeitlinFluid(n, alpha);
+    const ZeitlinDiagnostics diagnostics(
+        static_cast<const ZeitlinHamiltonian&>(fluid->hamiltonian()));
+    const Matrix W0 = randomVorticity(n, 1);
+    const double norm = SUN::casimirs(W0).cwiseAbs().maxCoeff();  // ‖W₀‖₂
+    for (double stiffness : {4.0, 10.0}) {
+      auto method = makeMethod<SUN>("ddb-cay", fluid);
+      const double h = stiffness * zeitlinHbar(n) / (alpha * norm * norm);
+      double previous = diagnostics.energy(W0), largest = previous;
+      int rises = 0;
+      // The unstable runs reach their largest energy within 40 steps (and take many sweeps).
+      const long steps = stiffness < 6.0 ? 200 : 40;
+      integrate(*method, W0, 0.0, h, steps, [&](long, double, const Matrix& W) {
+        const double energy = diagnostics.energy(W);
+        if (energy - previous > 1e-15 * previous) ++rises;
+        largest = std::max(largest, energy);
+        previous = energy;
+      });
+      if (stiffness < 6.0) {
+        EXPECT_EQ(rises, 0) << "N = " << n << ", s = " << stiffness;
+      } else {
+        EXPECT_GT(largest, 1.5 * diagnostics.energy(W0)) << "N = " << n << ", s = " << stiffness;
+      }
+    }
+  }
+}
+
 // The isospectral midpoint rule for Ẇ = [B(W), W], B = P/ħ, from its own formula:
 //   W_k = (I − hB/2) W̃ (I + hB/2),  W_{k+1} = (I + hB/2) W̃ (I − hB/2),  B = B(W̃).
 Matrix isospectralMidpoint(const ZeitlinHamiltonian& hamiltonian, const Matrix& W, double h) {
