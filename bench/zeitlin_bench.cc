@@ -24,6 +24,7 @@
 #include <string>
 
 #include "malloc_counter.h"
+#include "zeitlin_steps.h"
 
 namespace ddb::bench {
 namespace {
@@ -35,20 +36,6 @@ constexpr double kTolerance = 1e-12;
 constexpr long kWarmUp = 10;
 constexpr long kWindow = 100;
 constexpr long kLargeWindow = 20;
-
-double benchmarkStep(const Matrix& W) {
-  const ZeitlinHamiltonian hamiltonian(W.rows());
-  return 0.02 * hamiltonian.hbar() / SUN::spectralNorm(hamiltonian.streamMatrix(W));
-}
-
-// The benchmark's step within the double bracket's period-2 stability bound,
-// h |α| ‖W‖₂²/ħ ≤ 4 (‖W‖₂ is a Casimir: the bound holds along the whole trajectory).
-double resolvedStep(const Matrix& W, double alpha) {
-  constexpr double kStiffness = 4.0;
-  const double norm = SUN::spectralNorm(W);
-  return std::min(benchmarkStep(W),
-                  kStiffness * zeitlinHbar(W.rows()) / (std::abs(alpha) * norm * norm));
-}
 
 std::unique_ptr<OneStepMethod<SUN>> makeBenchMethod(
     const std::string& name, std::shared_ptr<const LiePoissonSystem<SUN>> fluid) {
