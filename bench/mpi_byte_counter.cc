@@ -1,5 +1,7 @@
-// Counts the bytes this rank sends to other ranks by intercepting the MPI calls that send
-// (the MPI profiling interface: each definition here counts, then calls PMPI_...). Linked
+// Counts the bytes this rank sends to other ranks by intercepting the MPI calls below (the
+// MPI profiling interface: each definition here counts, then calls PMPI_...); a call not
+// among them (MPI_Gather, MPI_Scatter, MPI_Alltoall, non-blocking collectives) would not
+// be counted. Linked
 // into distributed-step-bench only, where it sees the calls of the library, of BLACS and of
 // ScaLAPACK alike. What is counted is the payload each call states: point-to-point sends
 // (blocking, non-blocking, persistent at MPI_Start, the send half of MPI_Sendrecv), and
@@ -72,6 +74,12 @@ int MPI_Send_init(const void* buf, int count, MPI_Datatype type, int dest, int t
 int MPI_Start(MPI_Request* request) {
   if (const auto it = persistent.find(*request); it != persistent.end()) sent += it->second;
   return PMPI_Start(request);
+}
+int MPI_Startall(int count, MPI_Request requests[]) {
+  for (int i = 0; i < count; ++i) {
+    if (const auto it = persistent.find(requests[i]); it != persistent.end()) sent += it->second;
+  }
+  return PMPI_Startall(count, requests);
 }
 int MPI_Request_free(MPI_Request* request) {
   persistent.erase(*request);

@@ -9,6 +9,7 @@
 
 #include <ddb/core/errors.h>
 #include <ddb/core/matrix_backend.h>
+#include <ddb/distributed/distributed_inverse.h>
 #include <ddb/distributed/distributed_matrix.h>
 #include <ddb/distributed/distributed_product.h>
 #include <ddb/distributed/scalapack.h>
@@ -22,38 +23,6 @@
 #include <vector>
 
 namespace ddb {
-
-/// A ← A⁻¹ for a distributed A (pzgetrf_, pzgetri_), with pivots and workspaces kept
-/// between calls of one layout.
-class DistributedInverse {
- public:
-  /// Returns false, leaving A unspecified, when A is exactly singular (on every rank).
-  bool invert(DistributedMatrix& A) {
-    const int n = A.size(), one = 1;
-    const BlockCyclicLayout& layout = A.layout();
-    pivots_.resize(static_cast<std::size_t>(layout.localRows() + layout.block()));
-    int info = 0;
-    pzgetrf_(&n, &n, A.data(), &one, &one, A.descriptor(), pivots_.data(), &info);
-    if (info != 0) return false;
-    if (work_.empty()) {  // the workspace query
-      const int query = -1;
-      std::complex<double> lwork;
-      int liwork = 0;
-      pzgetri_(&n, A.data(), &one, &one, A.descriptor(), pivots_.data(), &lwork, &query, &liwork,
-               &query, &info);
-      work_.resize(static_cast<std::size_t>(std::max(1.0, lwork.real())));
-      iwork_.resize(static_cast<std::size_t>(std::max(1, liwork)));
-    }
-    const int lwork = static_cast<int>(work_.size()), liwork = static_cast<int>(iwork_.size());
-    pzgetri_(&n, A.data(), &one, &one, A.descriptor(), pivots_.data(), work_.data(), &lwork,
-             iwork_.data(), &liwork, &info);
-    return info == 0;
-  }
-
- private:
-  std::vector<int> pivots_, iwork_;
-  std::vector<std::complex<double>> work_;
-};
 
 template <>
 struct MatrixBackend<DistributedMatrix> {

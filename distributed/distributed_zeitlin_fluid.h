@@ -49,12 +49,11 @@ class DistributedZeitlinFluid {
   static double energy(const Dual& W, const Dual& P) {
     return -B::innerProduct(P, W) / (2.0 * W.size());
   }
-  /// ‖[P, W]‖_F with [P, W] = PW − (PW)ᴴ (both skew-Hermitian): one product; `product` and
-  /// `commutator` are workspaces of W's layout. Collective.
+  /// ‖[P, W]‖_F = ‖[W, P]‖_F, [W, P] = (PW)ᴴ − PW (both skew-Hermitian): one product;
+  /// `product` and `commutator` are workspaces of W's layout. Collective.
   static double commutatorNorm(const Dual& W, const Dual& P, Dual& product, Dual& commutator) {
     B::multiply(P, W, product);
-    B::entries(commutator) = B::entries(product);
-    B::addAdjoint(-1.0, product, commutator);
+    SUN::commutatorFromProduct(product, commutator);
     return B::frobeniusNorm(commutator);
   }
 

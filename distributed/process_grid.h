@@ -8,6 +8,8 @@
 #include <ddb/distributed/scalapack.h>
 #include <mpi.h>
 
+#include <algorithm>
+#include <cmath>
 #include <complex>
 #include <stdexcept>
 #include <string>
@@ -72,7 +74,8 @@ class ProcessGrid {
     MPI_Allgather(&local, 1, MPI_DOUBLE, gathered_.data(), 1, MPI_DOUBLE, comm_);
     double largest = gathered_[0];
     for (const double value : gathered_) {
-      if (!(value <= largest)) largest = value;
+      if (std::isnan(value)) return value;
+      largest = std::max(largest, value);
     }
     return largest;
   }

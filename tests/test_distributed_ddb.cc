@@ -84,12 +84,28 @@ TEST_P(DistributedDdbTest, AgreesWithTheDenseStepSweepForSweep) {
   const Eigen::MatrixXcd W_distributed = Wd.gather();
   if (grid_.rank() == 0) {
     EXPECT_LT(relativeDistance(W_distributed, W), 1e-13);
-    // The step moved W (α ≠ 0 also lowered its energy), so the agreement is not W0's.
+    // The step moved W, so the agreement is not W0's; and the energy (the serial
+    // diagnostics on the gathered W) moved the way α's sign says (Proposition 3.3).
     EXPECT_GT(relativeDistance(W_distributed, W0), 1e-3);
+    const ZeitlinHamiltonian hamiltonian(n());
+    const ZeitlinDiagnostics diagnostics(hamiltonian);
+    const double rise = diagnostics.energy(W_distributed) - diagnostics.energy(W0);
+    if (alpha() > 0) {
+      EXPECT_LT(rise, 0.0);
+    } else if (alpha() < 0) {
+      EXPECT_GT(rise, 0.0);
+    }
     const Eigen::VectorXd initial = spectrum(W0), final = spectrum(W_distributed);
     EXPECT_LT((final - initial).norm() / initial.norm(), 1e-12);
   }
 }
+
+// One block of N = 16: every rank but rank 0 holds no entry at all.
+INSTANTIATE_TEST_SUITE_P(EmptyRanks, DistributedDdbTest,
+                         testing::Values(std::make_tuple(16, 16, 0.5)),
+                         [](const testing::TestParamInfo<std::tuple<int, int, double>>&) {
+                           return std::string("N16_block16_alphaplus05");
+                         });
 
 INSTANTIATE_TEST_SUITE_P(SizesBlocksAndAlphas, DistributedDdbTest,
                          testing::Combine(testing::Values(16, 33, 64), testing::Values(5),

@@ -121,10 +121,12 @@ int relax(const MpiOptions& mo, const Settings& s, int block, const ProcessGrid&
     fluid.streamMatrixInto(state, P);
     return DistributedZeitlinFluid::energy(state, P) * static_cast<double>(n) / fluid.hbar();
   };
+  // r = ‖[P, W]‖/(‖P‖ ‖W‖), 0 where ‖P‖ ‖W‖ = 0 (SteadyStateProbe's convention).
   const auto residualOf = [&](const DistributedMatrix& state) {
     fluid.streamMatrixInto(state, P);
-    return DistributedZeitlinFluid::commutatorNorm(state, P, product, commutator) /
-           (B::frobeniusNorm(P) * B::frobeniusNorm(state));
+    const double scale = B::frobeniusNorm(P) * B::frobeniusNorm(state);
+    const double norm = DistributedZeitlinFluid::commutatorNorm(state, P, product, commutator);
+    return scale > 0.0 ? norm / scale : 0.0;
   };
 
   Tally tally;
@@ -248,7 +250,6 @@ int run(int argc, char** argv, const ProcessGrid& grid) {
   MpiOptions o;
   addMpiOptions(cli, o);
   std::optional<int> status;
-  std::string message;
   try {
     status = app::parseCommandLine(cli, argc, argv);
   } catch (const app::UsageError& e) {
@@ -276,7 +277,9 @@ int main(int argc, char** argv) {
   {
     const ddb::ProcessGrid grid;
     // --help and --version are printed once.
-    if (grid.rank() != 0 && std::freopen("/dev/null", "w", stdout) == nullptr) return 1;
+    if (grid.rank() != 0 && std::freopen("/dev/null", "w", stdout) == nullptr) {
+      MPI_Abort(MPI_COMM_WORLD, ddb::app::kExitFailed);
+    }
     try {
       status = run(argc, argv, grid);
     } catch (const Reported& reported) {

@@ -32,8 +32,9 @@ void refuseUnsupported(const CLI::App& cli, const fluid::Options& o) {
 
 int readBlock(const MpiOptions& o, const ProcessGrid& grid, long n) {
   if (o.block.empty()) {
-    const long per_process =
-        (n + std::max(grid.rows(), grid.cols()) - 1) / std::max(grid.rows(), grid.cols());
+    // ⌊N/q⌋ gives every process row and column at least one block (⌈N/q⌉ may not: N = 6
+    // on a 1×5 grid would give 3 blocks of 2).
+    const long per_process = n / std::max(grid.rows(), grid.cols());
     return static_cast<int>(std::clamp<long>(per_process, 1, kDefaultBlock));
   }
   const double block = app::parseNumber("--block", o.block, o.block);
@@ -85,7 +86,7 @@ void addMpiOptions(CLI::App& cli, MpiOptions& o) {
   cli.add_option(
       "--block", o.block,
       "block size of the block-cyclic layout (default: " + std::to_string(kDefaultBlock) +
-          ", or N / max(grid rows, grid cols) rounded up if smaller)");
+          ", or N / max(grid rows, grid cols) rounded down if smaller)");
   cli.footer(
       "\nfluid-relax-mpi is fluid-relax's ddb-cay relaxation with every N x N matrix "
       "distributed over the MPI ranks\n(docs/distributed.md): start it with mpirun -np P. "

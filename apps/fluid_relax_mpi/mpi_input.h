@@ -16,8 +16,8 @@
 namespace ddb::fluid_mpi {
 
 constexpr const char* kApp = "fluid-relax-mpi";
-/// The default block size is this, or less where N is small: ceil(N / max(grid rows, cols)),
-/// so that every rank holds entries.
+/// The default block size is this, or less where N is small: max(1, ⌊N / max(grid rows,
+/// cols)⌋), so that every rank holds entries when N ≥ max(grid rows, cols).
 constexpr int kDefaultBlock = 64;
 
 /// An outcome every rank agreed on and one rank has printed: the app exits with `status`.
