@@ -116,18 +116,8 @@ int relax(const MpiOptions& mo, const Settings& s, int block, const ProcessGrid&
   DistributedMatrix trial(W.layout()), P(W.layout()), product(W.layout()), commutator(W.layout());
   DistributedDdb ddb(W.layout(), s.alpha);
   const DistributedZeitlinFluid& fluid = ddb.system();
-  // H = N·E/ħ (the energy fluid-relax watches for rises) and r of a state, distributed.
-  const auto energyOf = [&](const DistributedMatrix& state) {
-    fluid.streamMatrixInto(state, P);
-    return DistributedZeitlinFluid::energy(state, P) * static_cast<double>(n) / fluid.hbar();
-  };
-  // r = ‖[P, W]‖/(‖P‖ ‖W‖), 0 where ‖P‖ ‖W‖ = 0 (SteadyStateProbe's convention).
-  const auto residualOf = [&](const DistributedMatrix& state) {
-    fluid.streamMatrixInto(state, P);
-    const double scale = B::frobeniusNorm(P) * B::frobeniusNorm(state);
-    const double norm = DistributedZeitlinFluid::commutatorNorm(state, P, product, commutator);
-    return scale > 0.0 ? norm / scale : 0.0;
-  };
+  const bool watch_energy = app::EnergyRises::applies(true, s.alpha);
+  const bool probing = s.relax.tolerance > 0;
 
   Tally tally;
   std::string write_error;  // rank 0's first failed write
@@ -149,12 +139,26 @@ int relax(const MpiOptions& mo, const Settings& s, int block, const ProcessGrid&
   };
   EveryKth<const DistributedMatrix*, decltype(historyRow)> history(o.every, historyRow);
 
-  const bool watch_energy = app::EnergyRises::applies(true, s.alpha);
-  const bool probing = s.relax.tolerance > 0;
   RelaxResult<SUN> result;
   RelaxState& at = result.last;
-  if (watch_energy) tally.rises.observe(0, 0.0, energyOf(W));
-  at.residual = probing ? residualOf(W) : NAN;
+  // The current state's H = N·E/ħ (the energy fluid-relax watches for rises) and
+  // r = ‖[P, W]‖/(‖P‖ ‖W‖) (0 where ‖P‖ ‖W‖ = 0, SteadyStateProbe's convention), from one
+  // Poisson solve, distributed; only what the run reads.
+  const auto observeState = [&] {
+    if (!watch_energy && !probing) return;
+    fluid.streamMatrixInto(W, P);
+    if (watch_energy) {
+      at.energy = DistributedZeitlinFluid::energy(W, P) * static_cast<double>(n) / fluid.hbar();
+      tally.rises.observe(at.k, at.t, at.energy);
+    }
+    if (probing) {
+      const double scale = B::frobeniusNorm(P) * B::frobeniusNorm(W);
+      const double norm = DistributedZeitlinFluid::commutatorNorm(W, P, product, commutator);
+      at.residual = scale > 0.0 ? norm / scale : 0.0;
+    }
+  };
+  at.residual = NAN;
+  observeState();
   history(0, 0.0, &W);
   app::Progress progress(o.log.quiet || !root);
   const std::string label = "ddb-cay N=" + std::to_string(n) + " P=" + std::to_string(grid.size());
@@ -191,8 +195,7 @@ int relax(const MpiOptions& mo, const Settings& s, int block, const ProcessGrid&
     const long iterations = stats.fixed_point + stats.newton;
     tally.iterations_total += iterations;
     tally.iterations_max = std::max(tally.iterations_max, iterations);
-    if (watch_energy) tally.rises.observe(at.k, at.t, at.energy = energyOf(W));
-    if (probing) at.residual = residualOf(W);
+    observeState();
     history(at.k, at.t, &W);
     flags = agreeOnFlags(grid, {signals.received(), write_error.empty() ? 0 : 1});
     if (flags.write_failed != 0) break;
