@@ -42,3 +42,4 @@
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
+#include <ddb/systems/zeitlin_step_size.h>

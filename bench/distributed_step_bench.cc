@@ -3,8 +3,8 @@
 // with (docs/distributed.md, "Measured"): products per step = step time / product time;
 // strong scaling = the step time on 1 rank over that on P. On one rank it also times the
 // dense step (Ddb<Cayley<SUN>>), the serial engine, as the peer. State: the seeded random
-// vorticity (seed 1, ‖W‖_F = √N), h = min(0.02 ħ/‖P₀‖₂, 4ħ/(|α| ‖W₀‖₂²)) (zeitlin_steps.h:
-// fluid-relax's default within the double bracket's stability bound), α as given,
+// vorticity (seed 1, ‖W‖_F = √N), h = min(0.02 ħ/‖P₀‖₂, 4ħ/(|α| ‖W₀‖₂²)) (fluid-relax's
+// default, systems/zeitlin_step_size.h), α as given,
 // Legendre tolerance 1e-12 relative as the Zeitlin benchmarks; 10 untimed steps fill the
 // predictor. Times are the largest over the ranks (MPI_Wtime between barriers). Prints one
 // JSON object from rank 0, with the bytes sent to other ranks per product and per step
@@ -17,6 +17,7 @@
 #include <ddb/integrators/ddb.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
+#include <ddb/systems/zeitlin_step_size.h>
 #include <mpi.h>
 
 #include <algorithm>
@@ -26,7 +27,6 @@
 #include <string>
 
 #include "mpi_byte_counter.h"
-#include "zeitlin_steps.h"
 
 namespace {
 
@@ -64,7 +64,7 @@ int runBench(int argc, char** argv, const ProcessGrid& grid) {
   options.relative_tolerance = 1e-12;
 
   const Eigen::MatrixXcd W0 = randomVorticity(n, 1);
-  const double h = bench::resolvedStep(W0, alpha);
+  const double h = zeitlinDefaultStep(W0, alpha);
 
   DistributedMatrix W(grid, n, block), a(W.layout()), b(W.layout()), c(W.layout());
   W.scatterFrom(W0);

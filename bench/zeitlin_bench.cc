@@ -8,7 +8,8 @@
 // takes up to seconds): zeitlin/ddb-cay/<N> at that h, beyond the dissipation's stability
 // bound there (the energy rises), and zeitlin-resolved/ddb-cay/<N> at
 // h = min(0.02 ħ/‖P₀‖₂, 4 ħ/(|α| ‖W₀‖₂²)) within it (docs/design.md, "Large N: the step's
-// stability bound"). The BLAS thread count is the environment's (OPENBLAS_NUM_THREADS).
+// stability bound"; fluid-relax's default, systems/zeitlin_step_size.h). The BLAS thread count is
+// the environment's (OPENBLAS_NUM_THREADS).
 #include "zeitlin_bench.h"
 
 #include <benchmark/benchmark.h>
@@ -17,6 +18,7 @@
 #include <ddb/integrators/symmetric_ddb.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
+#include <ddb/systems/zeitlin_step_size.h>
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +26,6 @@
 #include <string>
 
 #include "malloc_counter.h"
-#include "zeitlin_steps.h"
 
 namespace ddb::bench {
 namespace {
@@ -71,7 +72,7 @@ void stepFluid(benchmark::State& state, const std::string& method_name, double a
                long window, bool resolved) {
   const auto fluid = makeZeitlinFluid(n, alpha);
   const Matrix W0 = randomVorticity(n, 1);
-  const double h = resolved ? resolvedStep(W0, alpha) : benchmarkStep(W0);
+  const double h = resolved ? zeitlinDefaultStep(W0, alpha) : zeitlinContractionStep(W0);
   auto method = makeBenchMethod(method_name, fluid);
   Matrix W = W0;
   long k = 0;  // the step of the trajectory from W0

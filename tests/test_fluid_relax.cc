@@ -212,6 +212,37 @@ TEST(FluidRelax, DefaultStepIsTwoHundredthsOfHbarOverTheStreamNorm) {
   EXPECT_EQ(readCsv(out / "history.csv", &header).size(), steps + 1);
 }
 
+// With a large α the default h is the stiffness bound h|α|‖W₀‖₂²/ħ = 4 (docs/design.md,
+// "Large N: the step's stability bound"), and the energy falls at every step; 2.5 times
+// that h (stiffness 10) is past the bound and the energy rises.
+TEST(FluidRelax, DefaultStepKeepsTheDissipationWithinItsStabilityBound) {
+  const fs::path out = freshFolder("default_h_stiff");
+  ASSERT_EQ(run("--quiet --n 32 --alpha 50 --steps 100 --out " + out.string()).status, 0);
+  const auto summary = readJson(out / "summary.json");
+  const Matrix W0 = ddb::randomVorticity(32, 1);
+  const ddb::ZeitlinHamiltonian hamiltonian(32);
+  const auto largestSingularValue = [](const Matrix& A) {
+    return Eigen::JacobiSVD<Matrix>(A).singularValues()(0);
+  };
+  const double w = largestSingularValue(W0);
+  const double stiffness_h = 4.0 * hamiltonian.hbar() / (50.0 * w * w);
+  ASSERT_LT(stiffness_h,
+            0.02 * hamiltonian.hbar() / largestSingularValue(hamiltonian.streamMatrix(W0)));
+  EXPECT_NEAR(jsonNumber(summary, "h"), stiffness_h, 1e-14 * stiffness_h);
+  EXPECT_EQ(jsonNumber(summary, "energy_rises"), 0);
+  EXPECT_LT(jsonNumber(summary, "energy_final"), jsonNumber(summary, "energy_initial"));
+
+  const fs::path past = freshFolder("default_h_past");
+  std::ostringstream past_h;
+  past_h.precision(17);
+  past_h << 2.5 * stiffness_h;
+  ASSERT_EQ(
+      run("--quiet --n 32 --alpha 50 --steps 100 --h " + past_h.str() + " --out " + past.string())
+          .status,
+      0);
+  EXPECT_GT(jsonNumber(readJson(past / "summary.json"), "energy_rises"), 0);
+}
+
 TEST(FluidRelax, InitFileRoundTripContinuesTheLongerRun) {
   const fs::path first = freshFolder("first"), second = freshFolder("second"),
                  whole = freshFolder("whole");

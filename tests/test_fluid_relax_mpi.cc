@@ -166,10 +166,11 @@ TEST(FluidRelaxMpi, StopsWhenSteadyAtTheSerialAppsStep) {
 // flags this app does not have.
 TEST(FluidRelaxMpi, RefusesBadInputOnEveryRankOnce) {
   const fs::path out = freshFolder("ddb_mpi_", "bad");
-  // fluid-relax's own checks are tested on fluid-relax (test_bad_inputs): here one of them,
-  // a parse error, and this app's own.
+  // fluid-relax's own checks are tested on fluid-relax (test_bad_inputs): here one of them
+  // with this app's bound on N (the group's, not fluid-relax's 1024), a parse error, and
+  // this app's own.
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"--n 1 --steps 10", "--n"},
+      {"--n 4097 --steps 10", "--n = 4097: must be in [2, 4096]"},
       {"--steps 10 --bogus", "bogus"},
       {"--n 16 --steps 10 --block 17", "--block"},
       {"--steps 10 --block 2.5", "--block"},

@@ -3,10 +3,12 @@
 #include <ddb/groups/sun.h>
 #include <ddb/integrators/method_table.h>
 #include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_step_size.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "common/cli.h"
@@ -43,6 +45,23 @@ void requireRepresentableStep(const CLI::App& cli, const Options& o, const Setti
   if (cli.count("--h") > 0) app::usageError("--h", o.h, why);
   if (!o.init_file.empty()) app::usageError("--init-file", o.init_file, why);
   throw std::logic_error("a generated vorticity overflows: " + why);
+}
+
+/// zeitlinDefaultStep (docs/file-formats.md, "fluid-relax"), which must be a normal double:
+/// a huge α or W₀ makes its stiffness limit underflow. The flag named is --alpha if the
+/// default α would give a normal step, else the initial vorticity.
+double defaultStep(const Options& o, const Settings& s) {
+  const auto normal = [](double h) { return h >= std::numeric_limits<double>::min(); };
+  const double h = zeitlinDefaultStep(s.W0, s.alpha);
+  if (normal(h)) return h;
+  const std::string why = fmt::format(
+      "the default step min({} hbar/|P0|_2, {} hbar/(|alpha||W0|_2^2)) = {:.3g} underflows; "
+      "give --h",
+      kZeitlinContractionRate, kZeitlinStiffness, h);
+  const double default_alpha = app::parseNumber("--alpha", Options().alpha, Options().alpha);
+  if (normal(zeitlinDefaultStep(s.W0, default_alpha))) app::usageError("--alpha", o.alpha, why);
+  if (!o.init_file.empty()) app::usageError("--init-file", o.init_file, why);
+  throw std::logic_error("a generated vorticity underflows the step: " + why);
 }
 
 /// --newton's requirements: a tolerance, no time and no step to choose, dissipation.
@@ -88,7 +107,7 @@ std::string defaultText(const Checkpoint& c, const std::string& flag) {
 
 }  // namespace
 
-Settings settings(const CLI::App& cli, const Options& o) {
+Settings settings(const CLI::App& cli, const Options& o, Eigen::Index max_n) {
   Settings s;
   app::requireChoice("--method", o.method, app::namesOf(fluidMethods()));
   s.alpha = app::parseNumber("--alpha", o.alpha, o.alpha);
@@ -106,7 +125,7 @@ Settings settings(const CLI::App& cli, const Options& o) {
   }
   readRelaxOptions(cli, o, s);
   app::InitialVorticity initial =
-      app::initialVorticity(cli, {o.n, o.seed, o.init, o.init_file}, {kMaxN, ""});
+      app::initialVorticity(cli, {o.n, o.seed, o.init, o.init_file}, {max_n, ""});
   s.W0 = std::move(initial.W);
   s.init = initial.init;
 
@@ -117,8 +136,7 @@ Settings settings(const CLI::App& cli, const Options& o) {
   }
   s.default_h = o.h.empty();
   if (s.default_h) {
-    const ZeitlinHamiltonian hamiltonian(s.W0.rows());
-    s.h = kStepFactor * hamiltonian.hbar() / SUN::spectralNorm(hamiltonian.streamMatrix(s.W0));
+    s.h = defaultStep(o, s);
   } else {
     s.h = app::parseNumber("--h", o.h, o.h);
     if (!(s.h > 0)) app::usageError("--h", o.h, "must be > 0");

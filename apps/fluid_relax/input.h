@@ -33,7 +33,7 @@ struct Settings {
 /// the method, α, --steps or --t-end, --until-steady, --adaptive and --adaptive-tol, W0
 /// (--init-file read and checked, or generated), h (given or the default) and a first step that
 /// does not overflow.
-Settings settings(const CLI::App& cli, const Options& o);
+Settings settings(const CLI::App& cli, const Options& o, Eigen::Index max_n);
 
 struct Checkpoint;
 

@@ -240,7 +240,7 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
 int runRelax(int argc, char** argv) {
   CLI::App cli{"Relax Zeitlin's SU(N) fluid on the sphere with double-bracket dissipation", kApp};
   Options o;
-  addOptions(cli, o);
+  addOptions(cli, o, kMaxN);
   if (const auto status = app::parseCommandLine(cli, argc, argv)) return *status;
   app::setupLogging(o.log);
   // The run's options: this command line's, or a resumed run's recorded ones.
@@ -254,7 +254,7 @@ int runRelax(int argc, char** argv) {
     run_options = c.options;
     status = relax(c.options, c.settings, c.given, &c);
   } else {
-    const Settings s = settings(cli, o);
+    const Settings s = settings(cli, o, kMaxN);
     out = s.out;
     status = relax(o, s, givenFlags(cli), nullptr);
   }

@@ -1,6 +1,7 @@
 #include "fluid_relax/options.h"
 
 #include <ddb/integrators/method_table.h>
+#include <ddb/systems/zeitlin_step_size.h>
 
 #include "common/cli.h"
 #include "common/format.h"
@@ -18,15 +19,17 @@ std::vector<std::pair<std::string, std::string>> fluidMethods() {
   return methods;
 }
 
-void addOptions(CLI::App& cli, Options& o) {
-  cli.add_option("--n", o.n, "resolution N, 2 <= N <= " + std::to_string(kMaxN))
+void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n) {
+  cli.add_option("--n", o.n, "resolution N, 2 <= N <= " + std::to_string(max_n))
       ->capture_default_str();
   cli.add_option("--alpha", o.alpha,
                  "double-bracket coefficient (> 0 relaxes to lower energy, < 0 raises it)")
       ->capture_default_str();
   cli.add_option("--h", o.h,
-                 "step size (default " + app::number(kStepFactor) +
-                     " hbar/||P0||_2, P0 the initial stream matrix; recorded in summary.json)");
+                 "step size (default min(" + app::number(kZeitlinContractionRate) +
+                     " hbar/||P0||_2, " + app::number(kZeitlinStiffness) +
+                     " hbar/(|alpha| ||W0||_2^2)), P0 the initial stream matrix; recorded in "
+                     "summary.json)");
   cli.add_option("--steps", o.steps, "number of steps (exactly one of --steps and --t-end)");
   cli.add_option("--t-end", o.t_end,
                  "final time: round(T/h) steps of the given --h, or with the default h the "

@@ -20,9 +20,6 @@ constexpr const char* kApp = "fluid-relax";
 // state's spectrum is computed for spectrum_drift.
 constexpr Eigen::Index kMaxN = 1024;
 constexpr long kMaxSteps = 1000000000L;
-// Default step: h = kStepFactor·ħ/‖P₀‖₂, the fixed point's contraction rate h‖P‖₂/ħ of
-// docs/conventions.md §2 kept small, so that a Legendre solve takes a few iterations.
-constexpr double kStepFactor = 0.02;
 // Without --checkpoint-every, a checkpoint after the first step that ends this long after
 // the last one: a killed run loses at most about this much work.
 constexpr double kCheckpointSeconds = 300.0;
@@ -47,6 +44,6 @@ struct Options {
 };
 
 /// Adds every option of Options, --version and the --help footer.
-void addOptions(CLI::App& cli, Options& o);
+void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n);
 
 }  // namespace ddb::fluid

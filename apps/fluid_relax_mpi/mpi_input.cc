@@ -82,7 +82,7 @@ int runAndAgree(const ProcessGrid& grid, bool here, const std::function<void()>&
 }  // namespace
 
 void addMpiOptions(CLI::App& cli, MpiOptions& o) {
-  fluid::addOptions(cli, o.relax);
+  fluid::addOptions(cli, o.relax, kMaxN);
   cli.add_option(
       "--block", o.block,
       "block size of the block-cyclic layout (default: " + std::to_string(kDefaultBlock) +
@@ -105,7 +105,7 @@ fluid::Settings mpiSettings(const CLI::App& cli, const MpiOptions& o, const Proc
   fluid::Settings s;
   const int agreed = runAndAgree(grid, true, [&] {
     refuseUnsupported(cli, o.relax);
-    s = fluid::settings(cli, o.relax);
+    s = fluid::settings(cli, o.relax, kMaxN);
     block = readBlock(o, grid, s.W0.rows());
   });
   if (agreed != 0) throw Reported{agreed};

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <ddb/distributed/process_grid.h>
+#include <ddb/groups/sun.h>
 
 #include <CLI/CLI.hpp>
 #include <functional>
@@ -16,6 +17,10 @@
 namespace ddb::fluid_mpi {
 
 constexpr const char* kApp = "fluid-relax-mpi";
+/// The largest N: the group's (SUN::kMaxN), not fluid-relax's, since the sizes one machine
+/// cannot step in time are this app's purpose. W₀ is still made whole on every rank and
+/// each history row's state gathered whole on rank 0.
+constexpr Eigen::Index kMaxN = SUN::kMaxN;
 /// The default block size is this, or less where N is small: max(1, ⌊N / max(grid rows,
 /// cols)⌋), so that every rank holds entries when N ≥ max(grid rows, cols).
 constexpr int kDefaultBlock = 64;
