@@ -15,6 +15,7 @@
 
 #include <Eigen/Core>
 #include <complex>
+#include <limits>
 
 namespace ddb {
 
@@ -64,8 +65,19 @@ struct MatrixBackend {
   static double frobeniusNorm(const X& x) { return x.norm(); }
   /// ‖x − y‖_F.
   static double frobeniusDistance(const X& x, const X& y) { return (x - y).norm(); }
-  /// ‖x‖₁, the largest column sum of |x_ij| (an upper bound of ‖x‖₂ for normal x).
-  static double oneNorm(const X& x) { return x.cwiseAbs().colwise().sum().maxCoeff(); }
+  /// ‖x‖₁, the largest column sum of |x_ij| (an upper bound of ‖x‖₂ for normal x). |z| is
+  /// √(Re² + Im²), vectorised: std::abs of a complex calls hypot, which made this norm a
+  /// visible share of a fluid step (docs/design.md, "Threads"). Where |z|² may have under-
+  /// or overflowed (a norm that is tiny or not finite) hypot's exact |z| is used. NaN
+  /// entries make it NaN.
+  static double oneNorm(const X& x) {
+    constexpr double kSquaresExact = 1e-100;  // entries lost below √(smallest double) are
+                                              // below rounding relative to this norm
+    const double fast =
+        x.cwiseAbs2().cwiseSqrt().colwise().sum().template maxCoeff<Eigen::PropagateNaN>();
+    if (fast >= kSquaresExact && fast <= std::numeric_limits<double>::max()) return fast;
+    return x.cwiseAbs().colwise().sum().template maxCoeff<Eigen::PropagateNaN>();
+  }
   /// Re tr(xᴴy), the real inner product.
   static double innerProduct(const X& x, const X& y) {
     return Eigen::numext::real(x.conjugate().cwiseProduct(y).sum());

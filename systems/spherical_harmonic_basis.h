@@ -8,14 +8,19 @@
 //   m > 0: T_lm[k, k+m] = T_lm[k+m, k] = i (−1)^m v_{l,m}[k]/√2,
 //   m < 0: T_lm[k, k+|m|] = (−1)^m v_{l,|m|}[k]/√2 = −T_lm[k+|m|, k].
 // Coefficients are stored at index l² + l + m (l = 0..N−1, |m| <= l): N² of them.
+// The eigenvectors are not stored (all blocks hold N³/3 numbers: 2.9 GB at N = 1024): each
+// transform computes each block's in O((N − m)²) (twisted factorisations, eigenvectors())
+// and applies them at once, so that a transform costs O(N³) and holds O(N²).
 #pragma once
 
+#include <ddb/core/errors.h>
 #include <ddb/systems/hoppe_yau_laplacian.h>
 
 #include <Eigen/Core>
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <complex>
+#include <limits>
+#include <string>
 #include <vector>
 
 namespace ddb {
@@ -23,23 +28,11 @@ namespace ddb {
 class SphericalHarmonicBasis {
  public:
   explicit SphericalHarmonicBasis(const HoppeYauLaplacian& laplacian)
-      : n_(laplacian.size()), vectors_(static_cast<std::size_t>(n_)) {
-    Eigen::VectorXd diagonal, subdiagonal;
+      : n_(laplacian.size()),
+        diagonals_(static_cast<std::size_t>(n_)),
+        subdiagonals_(static_cast<std::size_t>(n_)) {
     for (Eigen::Index m = 0; m < n_; ++m) {
-      laplacian.block(m, diagonal, subdiagonal);
-      Eigen::MatrixXd& v = vectors_[static_cast<std::size_t>(m)];
-      if (diagonal.size() == 1) {
-        v = Eigen::MatrixXd::Ones(1, 1);
-      } else {
-        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen;
-        eigen.computeFromTridiagonal(diagonal, subdiagonal);
-        v = eigen.eigenvectors().rowwise().reverse();  // column l − m: eigenvalue −l(l+1)
-      }
-      const double sign = (m % 2 == 0) ? 1.0 : -1.0;
-      for (Eigen::Index c = 0; c < v.cols(); ++c) {
-        v.col(c) *= std::sqrt(double(n_)) / v.col(c).norm();
-        if (v(v.rows() - 1, c) * sign < 0) v.col(c) *= -1.0;
-      }
+      laplacian.block(m, diagonals_[std::size_t(m)], subdiagonals_[std::size_t(m)]);
     }
   }
 
@@ -48,36 +41,43 @@ class SphericalHarmonicBasis {
 
   /// T_lm as an N×N complex matrix.
   Eigen::MatrixXcd element(Eigen::Index l, Eigen::Index m) const {
-    Eigen::VectorXd coefficients = Eigen::VectorXd::Zero(n_ * n_);
-    coefficients(index(l, m)) = 1.0;
-    return matrix(coefficients);
+    if (!(l >= 0 && l < n_ && std::abs(m) <= l)) {
+      throwInvalid("(l, m)", "(" + std::to_string(l) + ", " + std::to_string(m) + ")",
+                   "must have 0 <= l < N and |m| <= l");
+    }
+    Workspace w;
+    const Eigen::Index a = std::abs(m);
+    blockVectors(a, w);
+    Eigen::VectorXd coefficients = Eigen::VectorXd::Zero(n_ - a);
+    coefficients(l - a) = 1.0;
+    Eigen::MatrixXcd T = Eigen::MatrixXcd::Zero(n_, n_);
+    addBlock(a, w.vectors.matrix().transpose() * coefficients, m >= 0 ? 1.0 : 0.0,
+             m >= 0 ? 0.0 : 1.0, T);
+    return T;
   }
 
   /// ω_lm = Re tr(T_lmᴴ W)/N for every (l, m), at index(l, m).
   Eigen::VectorXd coefficients(const Eigen::MatrixXcd& W) const {
+    requireSize(W);
     Eigen::VectorXd omega = Eigen::VectorXd::Zero(n_ * n_);
+    Workspace w;
     for (Eigen::Index m = 0; m < n_; ++m) {
-      const Eigen::MatrixXd& v = vectors_[static_cast<std::size_t>(m)];
-      const double sign = (m % 2 == 0) ? 1.0 : -1.0;
-      for (Eigen::Index l = m; l < n_; ++l) {
-        const auto vl = v.col(l - m);
-        double plus = 0.0, minus = 0.0;
-        for (Eigen::Index k = 0; k < n_ - m; ++k) {
-          if (m == 0) {
-            plus += vl(k) * W(k, k).imag();  // Re(conj(i v) w) = v Im w
-          } else {
-            // m > 0: Re(conj(i s v/√2)(W[k,k+m] + W[k+m,k])); m < 0: s v/√2 (W[k,k+m] − W[k+m,k]).
-            plus += vl(k) * (W(k, k + m) + W(k + m, k)).imag();
-            minus += vl(k) * (W(k, k + m) - W(k + m, k)).real();
-          }
-        }
-        if (m == 0) {
-          omega(index(l, 0)) = plus / double(n_);
-        } else {
-          omega(index(l, m)) = sign * plus / (std::sqrt(2.0) * double(n_));
-          omega(index(l, -m)) = sign * minus / (std::sqrt(2.0) * double(n_));
-        }
+      const Eigen::Index length = n_ - m;
+      blockVectors(m, w);
+      // m = 0: Re(conj(i v) w) = v Im w. m > 0: Re(conj(i s v/√2)(W[k,k+m] + W[k+m,k]));
+      // m < 0: s v/√2 (W[k,k+m] − W[k+m,k]), s = (−1)^m.
+      w.plus.resize(length);
+      w.minus.resize(length);
+      for (Eigen::Index k = 0; k < length; ++k) {
+        w.plus(k) = m == 0 ? W(k, k).imag() : (W(k, k + m) + W(k + m, k)).imag();
+        w.minus(k) = m == 0 ? 0.0 : (W(k, k + m) - W(k + m, k)).real();
       }
+      const double scale = m == 0 ? 1.0 / double(n_) : sign(m) / (std::sqrt(2.0) * double(n_));
+      w.projected.noalias() = w.vectors.matrix() * w.plus;
+      for (Eigen::Index l = m; l < n_; ++l) omega(index(l, m)) = scale * w.projected(l - m);
+      if (m == 0) continue;
+      w.projected.noalias() = w.vectors.matrix() * w.minus;
+      for (Eigen::Index l = m; l < n_; ++l) omega(index(l, -m)) = scale * w.projected(l - m);
     }
     return omega;
   }
@@ -89,30 +89,140 @@ class SphericalHarmonicBasis {
                    "must be N^2 = " + std::to_string(n_ * n_));
     }
     Eigen::MatrixXcd W = Eigen::MatrixXcd::Zero(n_, n_);
-    const std::complex<double> i(0, 1);
+    Workspace w;
+    Eigen::VectorXd block;
     for (Eigen::Index m = 0; m < n_; ++m) {
-      const Eigen::MatrixXd& v = vectors_[static_cast<std::size_t>(m)];
-      const double scale = ((m % 2 == 0) ? 1.0 : -1.0) / std::sqrt(2.0);
-      for (Eigen::Index l = m; l < n_; ++l) {
-        const auto vl = v.col(l - m);
-        for (Eigen::Index k = 0; k < n_ - m; ++k) {
-          if (m == 0) {
-            W(k, k) += i * (omega(index(l, 0)) * vl(k));
-            continue;
-          }
-          const std::complex<double> plus = i * (scale * omega(index(l, m)) * vl(k));
-          const double minus = scale * omega(index(l, -m)) * vl(k);
-          W(k, k + m) += plus + minus;
-          W(k + m, k) += plus - minus;
-        }
-      }
+      blockVectors(m, w);
+      block.resize(n_ - m);
+      for (Eigen::Index l = m; l < n_; ++l) block(l - m) = omega(index(l, m));
+      addBlock(m, w.vectors.matrix().transpose() * block, 1.0, 0.0, W);
+      if (m == 0) continue;
+      for (Eigen::Index l = m; l < n_; ++l) block(l - m) = omega(index(l, -m));
+      addBlock(m, w.vectors.matrix().transpose() * block, 0.0, 1.0, W);
     }
     return W;
   }
 
+  /// Workspaces of eigenvectors(), reused from block to block.
+  struct TwistedFactors {
+    Eigen::ArrayXXd plus, minus;  // (eigenvalue, row): the pivots D₊, D₋
+    Eigen::ArrayXd smallest, twist;
+  };
+
+  /// The eigenvectors (unnormalised rows of `z`) of the symmetric tridiagonal
+  /// matrix of `diagonal` (n) and `subdiagonal` (n − 1) for its eigenvalues `lambda`, in
+  /// O(n) each: the twisted factorisation (Parlett and Dhillon, "Fernando's solution to
+  /// Wilkinson's problem", Linear Algebra Appl. 1997). T − λI = L₊D₊L₊ᵀ from the top and
+  /// U₋D₋U₋ᵀ from the bottom; at the twist r where γ_r = D₊(r) + D₋(r) − (d_r − λ) is
+  /// smallest in modulus, z_r = 1 and z follows from the two bidiagonal factors, each step a
+  /// product, so no recurrence runs against its growing solution. The pivots of all
+  /// eigenvalues are computed together, a row at a time, so that the divisions are
+  /// vectorised. The Laplacian's blocks have known eigenvalues, so none is computed:
+  /// Eigen's QR iteration took O(n³) per block and made the basis O(N⁴) (docs/design.md,
+  /// "The spherical-harmonic basis").
+  static void eigenvectors(const Eigen::VectorXd& diagonal, const Eigen::VectorXd& subdiagonal,
+                           const Eigen::ArrayXd& lambda, TwistedFactors& f, Eigen::ArrayXXd& z) {
+    const Eigen::Index n = diagonal.size(), count = lambda.size();
+    // A zero pivot is replaced by a tiny one: its ratio is then huge, as the exact
+    // eigenvector's is (the standard treatment, same paper).
+    const double tiny = std::numeric_limits<double>::min() / std::numeric_limits<double>::epsilon();
+    const auto pivot = [tiny](auto&& values) { return (values == 0.0).select(tiny, values); };
+    f.plus.resize(count, n);
+    f.minus.resize(count, n);
+    f.plus.col(0) = pivot(diagonal(0) - lambda);
+    for (Eigen::Index i = 1; i < n; ++i) {
+      const double e2 = subdiagonal(i - 1) * subdiagonal(i - 1);
+      f.plus.col(i) = pivot((diagonal(i) - lambda) - e2 / f.plus.col(i - 1));
+    }
+    f.minus.col(n - 1) = pivot(diagonal(n - 1) - lambda);
+    for (Eigen::Index i = n - 2; i >= 0; --i) {
+      const double e2 = subdiagonal(i) * subdiagonal(i);
+      f.minus.col(i) = pivot((diagonal(i) - lambda) - e2 / f.minus.col(i + 1));
+    }
+    // The twist of each eigenvalue, as a double for the masks below.
+    f.twist.setZero(count);
+    f.smallest.setConstant(count, INFINITY);
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const Eigen::ArrayXd gamma = (f.plus.col(k) + f.minus.col(k) - (diagonal(k) - lambda)).abs();
+      for (Eigen::Index j = 0; j < count; ++j) {
+        if (gamma(j) < f.smallest(j)) {
+          f.smallest(j) = gamma(j);
+          f.twist(j) = double(k);
+        }
+      }
+    }
+    // Row j of z is eigenvalue j's vector: z_r = 1, z_i = z_{i+1}·(−e_i/D₊(i)) above the
+    // twist r, z_i = z_{i−1}·(−e_{i−1}/D₋(i)) below it; a column at a time for every
+    // eigenvalue, with masks in place of branches: (r − i) clamped to [0, 1] is 1 above the
+    // twist, 1 − |r − i| clamped at 0 is 1 at it. Masked ratios meet zeros of z, and the
+    // ratios are finite (the pivots are not 0), so no 0·inf arises.
+    z.resize(count, n);
+    const auto ratio = [&](double e, const auto& pivots) { return -e / pivots; };
+    z.col(n - 1) = (1.0 - (f.twist - double(n - 1)).abs()).max(0.0);
+    for (Eigen::Index i = n - 2; i >= 0; --i) {
+      z.col(i) = (f.twist - double(i)).max(0.0).min(1.0) * ratio(subdiagonal(i), f.plus.col(i)) *
+                     z.col(i + 1) +
+                 (1.0 - (f.twist - double(i)).abs()).max(0.0);
+    }
+    for (Eigen::Index i = 1; i < n; ++i) {
+      z.col(i) += (double(i) - f.twist).max(0.0).min(1.0) *
+                  ratio(subdiagonal(i - 1), f.minus.col(i)) * z.col(i - 1);
+    }
+  }
+
  private:
+  struct Workspace {
+    TwistedFactors factors;
+    Eigen::ArrayXd lambda;
+    Eigen::ArrayXXd vectors;  // row l − m: v_{l,m}
+    Eigen::ArrayXd scale;
+    Eigen::VectorXd plus, minus, projected;
+  };
+
+  static double sign(Eigen::Index m) { return m % 2 == 0 ? 1.0 : -1.0; }
+
+  void requireSize(const Eigen::MatrixXcd& W) const {
+    if (W.rows() != n_ || W.cols() != n_) {
+      throwInvalid("W", std::to_string(W.rows()) + "x" + std::to_string(W.cols()),
+                   "must be N x N, N = " + std::to_string(n_));
+    }
+  }
+
+  /// w.vectors = v_{l,m}, l = m..N−1: block m's eigenvectors for −l(l+1) (docs/conventions.md
+  /// §2), scaled to ‖v‖ = √N with the sign of their last component (−1)^m.
+  void blockVectors(Eigen::Index m, Workspace& w) const {
+    const Eigen::Index length = n_ - m;
+    w.lambda.resize(length);
+    for (Eigen::Index l = m; l < n_; ++l) w.lambda(l - m) = -double(l) * double(l + 1);
+    eigenvectors(diagonals_[std::size_t(m)], subdiagonals_[std::size_t(m)], w.lambda, w.factors,
+                 w.vectors);
+    // ‖v‖ = √N, last component of sign (−1)^m.
+    w.scale = std::sqrt(double(n_)) / w.vectors.matrix().rowwise().norm().array();
+    w.scale *=
+        (w.vectors.col(length - 1) * sign(m) < 0.0).select(-1.0, Eigen::ArrayXd::Ones(length));
+    w.vectors.colwise() *= w.scale;
+  }
+
+  /// W += Σ_l (c_plus T_{l,m} + c_minus T_{l,−m}) weighted by the block combination
+  /// `values` = Σ_l ω_l v_{l,m} (m ≥ 0; c_minus is ignored for m = 0).
+  void addBlock(Eigen::Index m, const Eigen::VectorXd& values, double c_plus, double c_minus,
+                Eigen::MatrixXcd& W) const {
+    const std::complex<double> i(0, 1);
+    if (m == 0) {
+      for (Eigen::Index k = 0; k < n_; ++k) W(k, k) += i * (c_plus * values(k));
+      return;
+    }
+    const double scale = sign(m) / std::sqrt(2.0);
+    for (Eigen::Index k = 0; k < n_ - m; ++k) {
+      const std::complex<double> plus = i * (scale * c_plus * values(k));
+      const double minus = scale * c_minus * values(k);
+      W(k, k + m) += plus + minus;
+      W(k + m, k) += plus - minus;
+    }
+  }
+
   Eigen::Index n_;
-  std::vector<Eigen::MatrixXd> vectors_;  // vectors_[m].col(l − m) = v_{l,m}
+  std::vector<Eigen::VectorXd> diagonals_, subdiagonals_;  // of block m = 0..N−1
 };
 
 }  // namespace ddb

@@ -128,6 +128,53 @@ TEST(SphericalHarmonicBasis, OrthonormalEigenmatricesWithT10EqualRoot3X3) {
   }
 }
 
+// The transform against one built on Eigen's QR eigenvectors of each diagonal block (the
+// eigensolver the basis used before its twisted factorisations; docs/conventions.md §2's
+// conventions, written out here), and the round trip at sizes where the blocks' eigenvalues
+// spread over four orders of magnitude.
+TEST(SphericalHarmonicBasis, CoefficientsMatchEigensEigenvectorsOfEachBlock) {
+  for (int n : {2, 17, 48, 129}) {
+    const HoppeYauLaplacian laplacian(n);
+    const SphericalHarmonicBasis basis(laplacian);
+    const Matrix W = randomVorticity(n, 5);
+    Eigen::VectorXd expected = Eigen::VectorXd::Zero(n * n);
+    Eigen::VectorXd diagonal, subdiagonal;
+    for (int m = 0; m < n; ++m) {
+      laplacian.block(m, diagonal, subdiagonal);
+      Eigen::MatrixXd v = Eigen::MatrixXd::Ones(1, 1);
+      if (n - m > 1) {
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen;
+        eigen.computeFromTridiagonal(diagonal, subdiagonal);
+        ASSERT_LT((eigen.eigenvalues().reverse().array() -
+                   Eigen::ArrayXd::LinSpaced(n - m, m, n - 1).unaryExpr([](double l) {
+                     return -l * (l + 1);
+                   }))
+                      .abs()
+                      .maxCoeff(),
+                  1e-9 * n * n)
+            << "the block's eigenvalues are -l(l+1)";
+        v = eigen.eigenvectors().rowwise().reverse();
+      }
+      const double sign = m % 2 == 0 ? 1.0 : -1.0;
+      for (int l = m; l < n; ++l) {
+        Eigen::VectorXd vl = v.col(l - m) * std::sqrt(double(n)) / v.col(l - m).norm();
+        if (vl(n - m - 1) * sign < 0) vl = -vl;
+        double plus = 0, minus = 0;
+        for (int k = 0; k < n - m; ++k) {
+          plus += vl(k) * (m == 0 ? W(k, k).imag() : (W(k, k + m) + W(k + m, k)).imag());
+          minus += m == 0 ? 0.0 : vl(k) * (W(k, k + m) - W(k + m, k)).real();
+        }
+        const double scale = m == 0 ? 1.0 / n : sign / (std::sqrt(2.0) * n);
+        expected(SphericalHarmonicBasis::index(l, m)) = scale * plus;
+        if (m > 0) expected(SphericalHarmonicBasis::index(l, -m)) = scale * minus;
+      }
+    }
+    const Eigen::VectorXd omega = basis.coefficients(W);
+    EXPECT_LT((omega - expected).norm(), 1e-12 * expected.norm()) << "N = " << n;
+    EXPECT_LT((basis.matrix(omega) - W).norm(), 1e-12 * W.norm()) << "N = " << n;
+  }
+}
+
 // dE/dt = −α‖[P, W]‖²/(ħN) against the central difference of E along the vector field;
 // Z constant along it.
 TEST(ZeitlinFluid, EnergyRateMatchesCentralDifferencesAndEnstrophyIsConstant) {
