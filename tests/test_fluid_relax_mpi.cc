@@ -8,16 +8,25 @@
 // "Checkpoints"): a run stopped and resumed on the same ranks and block size ends with every
 // file byte for byte the uninterrupted run's (fluid.hdf5's datasets bit for bit); either
 // app resumes the other's checkpoint and agrees with the uninterrupted serial run to
-// rounding; --h5 writes fluid-relax's fluid.hdf5 to rounding; bad resumes are refused.
+// rounding; --h5 writes fluid-relax's fluid.hdf5 to rounding; bad resumes are refused; a
+// SIGTERM to one rank leaves a checkpoint and exit status 143, and the resumed run is the
+// uninterrupted one's to the bit.
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <complex>
 #include <cstring>
+#include <fstream>
 #include <set>
+#include <sstream>
 #include <string>
+#include <thread>
 #include <tuple>
 #include <vector>
 
@@ -398,6 +407,46 @@ TEST(FluidRelaxMpiCheckpoint, RefusesBadResumesOnEveryRankOnce) {
     }
   }
   for (const fs::path& folder : {done, corrupt, adaptive}) fs::remove_all(folder);
+}
+
+// Starts `mpiexec -n 2 fluid-relax-mpi arguments` (output discarded), waits for its first
+// checkpoint, sends SIGTERM to one rank (as a batch system signals the tasks) and returns
+// mpiexec's exit status.
+int startAndTerminateOneRank(const std::string& arguments) {
+  std::vector<std::string> words{MPIEXEC_PATH, "-n", "2", FLUID_RELAX_MPI_PATH};
+  std::stringstream ss(arguments);
+  for (std::string word; ss >> word;) words.push_back(word);
+  const pid_t child =
+      startUntilCheckpoint(words, words[words.size() - 1], kMpiEnvironment.variables);
+  // mpiexec's children are the ranks.
+  std::ifstream children("/proc/" + std::to_string(child) + "/task/" + std::to_string(child) +
+                         "/children");
+  pid_t rank = 0;
+  children >> rank;
+  if (rank > 0) ::kill(rank, SIGTERM);
+  return waitForExit(child);
+}
+
+// A run stopped by SIGTERM under mpiexec (at whatever step the signal finds it) writes its
+// outputs and a checkpoint and exits 143; resumed, it ends as the uninterrupted run, to the
+// bit.
+TEST(FluidRelaxMpiCheckpoint, SigtermLeavesACheckpointThatResumesToTheBit) {
+  const fs::path whole = freshFolder("ddb_mpi_", "sigterm_whole");
+  const fs::path stopped = freshFolder("ddb_mpi_", "sigterm_stopped");
+  const std::string run = "--n 16 --alpha 0.5 --every 3 --checkpoint-every 5 --steps 600";
+  EXPECT_EQ(startAndTerminateOneRank(run + " --out " + stopped.string()), 143);
+  const auto summary = readJson(stopped / "summary.json");
+  EXPECT_EQ(summary["stop"], "interrupted");
+  EXPECT_LT(summary["steps"].get<long>(), 600);
+  const AppResult resumed = runMpi(2, "--quiet --resume " + stopped.string());
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  const AppResult a = runMpi(2, run + " --quiet --out " + whole.string());
+  ASSERT_EQ(a.status, 0) << a.output;
+  for (const char* file : {"history.csv", "W_final.csv", "omega_final.csv", "checkpoint.ddb"}) {
+    EXPECT_TRUE(readFile(stopped / file) == readFile(whole / file)) << file;
+  }
+  fs::remove_all(whole);
+  fs::remove_all(stopped);
 }
 
 }  // namespace
