@@ -11,11 +11,13 @@
 // complex); distributed/distributed_backend.h specialises it for DistributedMatrix.
 #pragma once
 
+#include <ddb/core/binary_record.h>
 #include <ddb/core/detail/dense_inverse.h>
 
 #include <Eigen/Core>
 #include <complex>
 #include <limits>
+#include <utility>
 
 namespace ddb {
 
@@ -88,6 +90,16 @@ struct MatrixBackend {
   template <class Indices, class Out>
   static void sampleEntries(const X& x, const Indices& indices, Out& out) {
     for (Eigen::Index s = 0; s < indices.size(); ++s) out(s) = x(indices(s));
+  }
+
+  /// x, whole, into a record (a warm start: OneStepMethod::saveWarmStart).
+  static void save(BinaryRecordWriter& out, const X& x) { out.put(x); }
+  /// x ← the matrix a record holds, of x's shape (else CorruptRecord).
+  static void load(BinaryRecordReader& in, X& x) {
+    X read;
+    in.get(read);
+    if (!sameShape(read, x)) throw CorruptRecord("a matrix of another size than the state");
+    x = std::move(read);
   }
 };
 

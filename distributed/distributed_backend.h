@@ -7,6 +7,7 @@
 // ranks are ProcessGrid::sum (the same bits on every rank). All functions are collective.
 #pragma once
 
+#include <ddb/core/binary_record.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/matrix_backend.h>
 #include <ddb/distributed/distributed_inverse.h>
@@ -107,6 +108,19 @@ struct MatrixBackend<DistributedMatrix> {
     }
     MPI_Allreduce(MPI_IN_PLACE, out.data(), static_cast<int>(out.size()), MPI_C_DOUBLE_COMPLEX,
                   MPI_SUM, grid.comm());
+  }
+
+  /// x, gathered whole, into rank 0's record; the other ranks' records get an empty matrix
+  /// (only rank 0's is written: docs/distributed.md, "Checkpoints").
+  static void save(BinaryRecordWriter& out, const X& x) { out.put(x.gather()); }
+  /// x ← the whole matrix that every rank's copy of the record holds (each keeps its blocks).
+  static void load(BinaryRecordReader& in, X& x) {
+    Eigen::MatrixXcd whole;
+    in.get(whole);
+    if (whole.rows() != x.size() || whole.cols() != x.size()) {
+      throw CorruptRecord("a matrix of another size than the state");
+    }
+    x.assignBlocksOf(whole);
   }
 
  private:

@@ -24,6 +24,16 @@ class DistributedDdb {
   const Solver& legendreSolver() const { return legendre_; }
   void reset() { legendre_.reset(); }
 
+  /// The Legendre solver's warm start, in the dense solver's record (its matrices gathered
+  /// whole into rank 0's record; MatrixBackend<DistributedMatrix>::save), so that a resumed
+  /// run continues the uninterrupted one to the bit (docs/distributed.md, "Checkpoints").
+  void saveWarmStart(BinaryRecordWriter& out) const { legendre_.saveWarmStart(out); }
+  /// Restores it from every rank's copy of such a record, dense or distributed, for states
+  /// of `layout`.
+  void loadWarmStart(BinaryRecordReader& in, const BlockCyclicLayout& layout) {
+    legendre_.loadWarmStart(in, DistributedMatrix(layout));
+  }
+
   /// W ← the DDB Cayley step of W at time t with step h.
   void advance(DistributedMatrix& W, double t, double h) {
     advanceMatrixDdb<SUN>(system_, legendre_, transport_, W, t, h);

@@ -77,13 +77,14 @@ class CorrectionPredictor {
     out.put(count_);
     out.put(order_);
     const int kept = std::min(count_, kOrder);  // slots 0..kept−1 are filled
-    for (int i = 0; i < kept; ++i) out.put(corrections_[static_cast<std::size_t>(i)]);
+    for (int i = 0; i < kept; ++i) B::save(out, corrections_[static_cast<std::size_t>(i)]);
     if (kept > 0) {
       out.put(sketches_);
       out.put(coefficients_);
     }
   }
-  /// Restores what save() wrote, for states of the size of `like`.
+  /// Restores what save() wrote, for states of the size (and, distributed, the layout) of
+  /// `like`.
   void load(BinaryRecordReader& in, const Matrix& like) {
     in.expectTag("correction predictor");
     reset();
@@ -92,13 +93,7 @@ class CorrectionPredictor {
     const int kept = std::min(count, kOrder);
     if (kept == 0) return;
     allocate(like);
-    for (int i = 0; i < kept; ++i) {
-      Matrix& c = corrections_[static_cast<std::size_t>(i)];
-      in.get(c);
-      if (c.rows() != like.rows() || c.cols() != like.cols()) {
-        throw CorruptRecord("a remembered correction of another size than the state");
-      }
-    }
+    for (int i = 0; i < kept; ++i) B::load(in, corrections_[static_cast<std::size_t>(i)]);
     const Eigen::Index samples = sketches_.rows();
     in.get(sketches_);
     in.get(coefficients_);

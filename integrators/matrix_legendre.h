@@ -105,11 +105,14 @@ class MatrixLegendreSolver {
   const LegendreStats& stats() const { return stats_; }
 
   /// The warm start (OneStepMethod::saveWarmStart): the predictors with their step sizes
-  /// and ages, and the last measured contraction rate.
+  /// and ages, and the last measured contraction rate. Its matrices are whole
+  /// (MatrixBackend::save), so that a dense solver and a distributed one read each other's.
   void saveWarmStart(BinaryRecordWriter& out) const {
     out.tag("matrix legendre solver");
-    out.put(static_cast<std::int64_t>(p_.rows()));
-    out.put(static_cast<std::int64_t>(p_.cols()));
+    // The state's rows and columns (0 before the first solve): the states are square.
+    const auto n = static_cast<std::int64_t>(B::rows(p_));
+    out.put(n);
+    out.put(n);
     out.put(rate_);
     out.put(clock_);
     for (std::size_t i = 0; i < kPredictors; ++i) {
@@ -118,20 +121,14 @@ class MatrixLegendreSolver {
       predictors_[i].save(out);
     }
   }
+  /// Restores what saveWarmStart wrote (a dense solver, for states of the record's size).
   void loadWarmStart(BinaryRecordReader& in) {
-    in.expectTag("matrix legendre solver");
-    const auto rows = in.get<std::int64_t>(), cols = in.get<std::int64_t>();
-    if (rows < 0 || cols < 0) throw CorruptRecord("a negative state size");
-    reset();
-    if (rows > 0) allocate(Dual::Zero(rows, cols));
-    in.get(rate_);
-    in.get(clock_);
-    for (std::size_t i = 0; i < kPredictors; ++i) {
-      in.get(predictor_h_[i]);
-      in.get(last_used_[i]);
-      predictors_[i].load(in, p_);
-    }
+    static_assert(kDense, "a distributed solver loads for its states' layout: (in, like)");
+    readWarmStart(in, nullptr);
   }
+  /// Restores it for states of `like`'s size and layout (a distributed solver); a record of
+  /// another size is corrupt.
+  void loadWarmStart(BinaryRecordReader& in, const Dual& like) { readWarmStart(in, &like); }
   void setStrategy(MatrixLegendreStrategy strategy) {
     if (!kDense && strategy == MatrixLegendreStrategy::kCeres) {
       throw InvalidArgument("strategy = ceres is invalid: Ceres solves dense matrices only");
@@ -314,6 +311,27 @@ class MatrixLegendreSolver {
       B::zeroLike(*m, like);
     }
     forgetPredictions();
+  }
+
+  void readWarmStart(BinaryRecordReader& in, const Dual* like) {
+    in.expectTag("matrix legendre solver");
+    const auto rows = in.get<std::int64_t>(), cols = in.get<std::int64_t>();
+    if (rows < 0 || cols != rows) throw CorruptRecord("a negative or non-square state size");
+    reset();
+    if (rows > 0 && like != nullptr) {
+      if (B::rows(*like) != rows)
+        throw CorruptRecord("a warm start of another size than the state");
+      allocate(*like);
+    } else if (rows > 0) {
+      if constexpr (kDense) allocate(Dual::Zero(rows, cols));
+    }
+    in.get(rate_);
+    in.get(clock_);
+    for (std::size_t i = 0; i < kPredictors; ++i) {
+      in.get(predictor_h_[i]);
+      in.get(last_used_[i]);
+      predictors_[i].load(in, p_);
+    }
   }
 
   // Corrections scale with h, so only same-h ones extrapolate: one predictor per step size,

@@ -86,6 +86,66 @@ struct RelaxResult {
   bool ok() const { return stop != RelaxStop::kFailure; }
 };
 
+/// The times of accepted steps as integrate() counts them: t = t_start + j·h over a stretch
+/// of equal steps h, so that a fixed-h run lands on the same times however it was resumed.
+struct StepTimes {
+  double t_start = 0.0, h = 0.0;
+  long j = 0;
+
+  /// The time after an accepted step of `step` from t (a new stretch if the step changed).
+  double after(double t, double step) {
+    if (step != h) {
+      t_start = t;
+      h = step;
+      j = 0;
+    }
+    return t_start + static_cast<double>(++j) * step;
+  }
+};
+
+/// Relaxation's record (Relaxation::save) up to its step control: the accepted state's
+/// record, the state, the steps rejected and the step times. A caller that takes the steps
+/// itself (fluid-relax-mpi, on distributed states gathered whole for this) writes it, then
+/// EnergyStepControl::save and the method's warm start, and so writes Relaxation's record
+/// (docs/file-formats.md, "Checkpoints").
+template <class Dual>
+void saveRelaxCursor(BinaryRecordWriter& out, const RelaxState& s, const Dual& state,
+                     long steps_rejected, const StepTimes& times) {
+  out.tag("relaxation");
+  out.put(s.k);
+  out.put(s.t);
+  out.put(s.h);
+  out.put(s.energy);
+  out.put(s.residual);
+  out.put(state);
+  out.put(steps_rejected);
+  out.put(times.t_start);
+  out.put(times.h);
+  out.put(times.j);
+}
+
+/// Reads what saveRelaxCursor wrote, for a state of `state`'s size; throws CorruptRecord.
+template <class Dual>
+void loadRelaxCursor(BinaryRecordReader& in, RelaxState& s, Dual& state, long& steps_rejected,
+                     StepTimes& times) {
+  in.expectTag("relaxation");
+  in.get(s.k);
+  in.get(s.t);
+  in.get(s.h);
+  in.get(s.energy);
+  in.get(s.residual);
+  Dual mu = state;
+  in.get(mu);
+  if (mu.rows() != state.rows() || mu.cols() != state.cols() || !mu.allFinite() || s.k < 0) {
+    throw CorruptRecord("a relaxation state of another size, negative index or not finite");
+  }
+  state = mu;
+  in.get(steps_rejected);
+  in.get(times.t_start);
+  in.get(times.h);
+  in.get(times.j);
+}
+
 namespace detail {
 
 /// The message of `failure` as integrate() would raise it at step k.
@@ -123,7 +183,7 @@ class Relaxation {
     if (options.newton) throwInvalid("newton", "true", "a Newton search takes no method and no h");
     control_.emplace(options.control, requirePositive("h", h0));
     start(mu0, "adaptive");
-    h_stretch_ = control_->h();
+    times_.h = control_->h();
     method_->reset();
   }
 
@@ -196,17 +256,10 @@ class Relaxation {
         }
         continue;
       }
-      // Times as in integrate(): t = t_start + j·h over a stretch of equal steps, so that a
-      // fixed-h run lands on the same times.
-      if (h != h_stretch_) {
-        t_start_ = state().t;
-        h_stretch_ = h;
-        j_ = 0;
-      }
       std::swap(result_.final, trial_);
       RelaxState& s = cursor();
       ++s.k;
-      s.t = t_start_ + static_cast<double>(++j_) * h;
+      s.t = times_.after(s.t, h);
       s.h = h;
       s.energy = energy;
       s.residual = residualAt(result_.final);
@@ -231,18 +284,7 @@ class Relaxation {
   /// The cursor: the accepted state and its record, the stretch of equal steps, the step
   /// control and the method's warm start.
   void save(BinaryRecordWriter& out) const {
-    out.tag("relaxation");
-    const RelaxState& s = state();
-    out.put(s.k);
-    out.put(s.t);
-    out.put(s.h);
-    out.put(s.energy);
-    out.put(s.residual);
-    out.put(result_.final);
-    out.put(result_.steps_rejected);
-    out.put(t_start_);
-    out.put(h_stretch_);
-    out.put(j_);
+    saveRelaxCursor(out, state(), result_.final, result_.steps_rejected, times_);
     if (newton_) {
       newton_->save(out);
     } else {
@@ -252,24 +294,7 @@ class Relaxation {
   }
   /// Continues from what save() wrote, with this object's method, system and options.
   void load(BinaryRecordReader& in) {
-    in.expectTag("relaxation");
-    RelaxState& s = cursor();
-    in.get(s.k);
-    in.get(s.t);
-    in.get(s.h);
-    in.get(s.energy);
-    in.get(s.residual);
-    Dual mu = result_.final;
-    in.get(mu);
-    if (mu.rows() != result_.final.rows() || mu.cols() != result_.final.cols() || !mu.allFinite() ||
-        s.k < 0) {
-      throw CorruptRecord("a relaxation state of another size, negative index or not finite");
-    }
-    result_.final = mu;
-    in.get(result_.steps_rejected);
-    in.get(t_start_);
-    in.get(h_stretch_);
-    in.get(j_);
+    loadRelaxCursor(in, cursor(), result_.final, result_.steps_rejected, times_);
     if (newton_) {
       newton_->load(in);
     } else {
@@ -359,8 +384,7 @@ class Relaxation {
   SteadyStateProbe<G> probe_;
   RelaxResult<G> result_;
   bool stopped_ = false;
-  double t_start_ = 0.0, h_stretch_ = 0.0;
-  long j_ = 0;
+  StepTimes times_;
   Dual trial_;
 };
 

@@ -6,13 +6,16 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -85,6 +88,41 @@ inline AppResult runProgram(const std::string& program, const std::string& argum
   std::stringstream ss(arguments);
   for (std::string word; ss >> word;) words.push_back(word);
   return runProgram(program, std::move(words), environment);
+}
+
+/// Starts `words` (the program first) in the background with the variables of
+/// `environment` added, stderr discarded and a SIGALRM after 120 s; waits until
+/// `out`/checkpoint.ddb exists (at most 60 s) and returns the child's pid, for the caller
+/// to signal it (or its children) and waitForExit() it.
+inline pid_t startUntilCheckpoint(std::vector<std::string> words, const fs::path& out,
+                                  const std::vector<std::string>& environment = {}) {
+  std::vector<char*> argv;
+  for (auto& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    for (const std::string& variable : environment) {
+      const auto equals = variable.find('=');
+      ::setenv(variable.substr(0, equals).c_str(), variable.substr(equals + 1).c_str(), 1);
+    }
+    std::FILE* null = std::fopen("/dev/null", "w");
+    if (null != nullptr) ::dup2(::fileno(null), STDERR_FILENO);
+    ::alarm(120);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(out / "checkpoint.ddb") && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return child;
+}
+
+/// The exit status of `child` (-signal if a signal killed it), once it has ended.
+inline int waitForExit(pid_t child) {
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
 }
 
 /// The JSON file at `path`, parsed (summary.json keeps its key order: ordered_json).

@@ -54,25 +54,9 @@ int startAndSignal(const std::string& arguments, const fs::path& out, int signal
   std::vector<std::string> words{FLUID_RELAX_PATH};
   std::stringstream ss(arguments + " --out " + out.string());
   for (std::string word; ss >> word;) words.push_back(word);
-  std::vector<char*> argv;
-  for (auto& word : words) argv.push_back(word.data());
-  argv.push_back(nullptr);
-  const pid_t child = ::fork();
-  if (child == 0) {
-    std::FILE* null = std::fopen("/dev/null", "w");
-    if (null != nullptr) ::dup2(::fileno(null), STDERR_FILENO);
-    ::alarm(120);
-    ::execv(argv[0], argv.data());
-    ::_exit(127);
-  }
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!fs::exists(out / "checkpoint.ddb") && std::chrono::steady_clock::now() < deadline) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
+  const pid_t child = startUntilCheckpoint(words, out);
   for (int i = 0; i < times; ++i) ::kill(child, signal);
-  int status = 0;
-  ::waitpid(child, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
+  return waitForExit(child);
 }
 
 class Checkpoint : public ::testing::Test {

@@ -14,12 +14,14 @@
 #include "app_test_support.h"
 #include "common/exit_status.h"
 #include "fluid_relax/fluid_h5.h"
+#include "h5_test_support.h"
 
 namespace {
 
 using ddb::app::IoError;
 using ddb::fluid::FluidH5;
 using ddb::fluid::FluidH5Attributes;
+using ddb::test::readAll;
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
@@ -56,25 +58,6 @@ void appendFrame(FluidH5& h5, long step) {
   h5.append({step, 0.5 * double(step), W, omega, 1.0 + step, 2.0 + step, 3.0 + step, 4.0 + step});
 }
 
-/// The whole dataset `name` of `file` read as `type` (H5T_NATIVE_*), and its row count.
-template <typename T>
-std::vector<T> readAll(const fs::path& file, const char* name, hid_t type, hsize_t* rows) {
-  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  const hid_t d = H5Dopen2(f, name, H5P_DEFAULT);
-  const hid_t space = H5Dget_space(d);
-  std::vector<hsize_t> dims(static_cast<std::size_t>(H5Sget_simple_extent_ndims(space)));
-  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-  hsize_t count = 1;
-  for (const hsize_t dim : dims) count *= dim;
-  std::vector<T> values(count);
-  if (count > 0) H5Dread(d, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
-  *rows = dims[0];
-  H5Sclose(space);
-  H5Dclose(d);
-  H5Fclose(f);
-  return values;
-}
-
 fs::path freshFile(const std::string& name) {
   const fs::path dir = ddb::test::freshFolder("fluid_h5_test_", name);
   fs::create_directories(dir);
@@ -104,9 +87,7 @@ TEST(FluidH5, AppendWritesEachFrameAsGiven) {
     EXPECT_EQ(drift[f], 4.0 + double(steps[f]));
   }
   // mat[f][j][k] = W(j, k): row-major on disk, h5py's complex as {r, i}.
-  const hid_t complex = H5Tcreate(H5T_COMPOUND, 2 * sizeof(double));
-  H5Tinsert(complex, "r", 0, H5T_NATIVE_DOUBLE);
-  H5Tinsert(complex, "i", sizeof(double), H5T_NATIVE_DOUBLE);
+  const hid_t complex = ddb::test::complexType();
   const auto mat = readAll<std::complex<double>>(path, "mat", complex, &rows);
   H5Tclose(complex);
   ASSERT_EQ(mat.size(), std::size_t(4 * kN * kN));

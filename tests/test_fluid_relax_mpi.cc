@@ -4,18 +4,34 @@
 // history.csv row by row and summary.json key by key equal to rounding (the Legendre
 // iteration counts up to a stopping test decided the other way at the tolerance's edge);
 // --until-steady stops at the same step; bad input is refused by every rank with fluid-relax's
-// message, once, exit status 2 and nothing written.
+// message, once, exit status 2 and nothing written. Checkpoints (docs/distributed.md,
+// "Checkpoints"): a run stopped and resumed on the same ranks and block size ends with every
+// file byte for byte the uninterrupted run's (fluid.hdf5's datasets bit for bit); either
+// app resumes the other's checkpoint and agrees with the uninterrupted serial run to
+// rounding; --h5 writes fluid-relax's fluid.hdf5 to rounding; bad resumes are refused; a
+// SIGTERM to one rank leaves a checkpoint and exit status 143, and the resumed run is the
+// uninterrupted one's to the bit.
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <complex>
+#include <cstring>
+#include <fstream>
 #include <set>
+#include <sstream>
 #include <string>
+#include <thread>
 #include <tuple>
 #include <vector>
 
 #include "app_test_support.h"
+#include "h5_test_support.h"
 
 namespace ddb::test {
 namespace {
@@ -30,6 +46,17 @@ AppResult runMpi(int ranks, const std::string& arguments) {
   return runProgram(MPIEXEC_PATH,
                     "-n " + std::to_string(ranks) + " " + FLUID_RELAX_MPI_PATH + " " + arguments,
                     kMpiEnvironment);
+}
+
+// The app's messages on stderr: one, not one per rank, for an outcome all ranks share.
+std::size_t messageCount(const std::string& error) {
+  const std::string prefix = "fluid-relax-mpi: ";
+  std::size_t count = 0;
+  for (std::size_t at = error.find(prefix); at != std::string::npos;
+       at = error.find(prefix, at + 1)) {
+    ++count;
+  }
+  return count;
 }
 
 double relative(double a, double b) {
@@ -182,15 +209,245 @@ TEST(FluidRelaxMpi, RefusesBadInputOnEveryRankOnce) {
     EXPECT_EQ(r.status, 2) << arguments << "\n" << r.output;
     EXPECT_NE(r.error.find(flag), std::string::npos) << arguments << "\n" << r.error;
     // One message, not one per rank.
-    const std::string prefix = "fluid-relax-mpi: ";
-    std::size_t count = 0;
-    for (std::size_t at = r.error.find(prefix); at != std::string::npos;
-         at = r.error.find(prefix, at + 1)) {
-      ++count;
-    }
-    EXPECT_EQ(count, 1u) << arguments << "\n" << r.error;
+    EXPECT_EQ(messageCount(r.error), 1u) << arguments << "\n" << r.error;
     EXPECT_FALSE(fs::exists(out)) << arguments;
   }
+}
+
+// ---- Checkpoints, --resume and --h5 ----
+
+// Rows every 3 steps and a checkpoint every 7, so that a run of 20 ends on a held-back row
+// after periodic checkpoints; α = 0.5, so that the Legendre solver's warm start (the
+// predictor's remembered corrections) decides its iterates.
+const std::string kResumable = "--alpha 0.5 --every 3 --checkpoint-every 7 --h5 --quiet";
+
+/// fluid.hdf5's per-frame datasets, numbers and matrices.
+struct Frames {
+  std::vector<long long> step;
+  std::vector<double> time, qtime, energy, enstrophy, commutator, drift, state;
+  std::vector<std::complex<double>> mat;
+};
+
+Frames readFrames(const fs::path& dir) {
+  const fs::path file = dir / "fluid.hdf5";
+  hsize_t rows = 0;
+  Frames f;
+  f.step = readAll<long long>(file, "step", H5T_NATIVE_LLONG, &rows);
+  f.time = readAll<double>(file, "time", H5T_NATIVE_DOUBLE, &rows);
+  f.qtime = readAll<double>(file, "qtime", H5T_NATIVE_DOUBLE, &rows);
+  f.energy = readAll<double>(file, "energy_euler", H5T_NATIVE_DOUBLE, &rows);
+  f.enstrophy = readAll<double>(file, "enstrophy", H5T_NATIVE_DOUBLE, &rows);
+  f.commutator = readAll<double>(file, "commutator_norm", H5T_NATIVE_DOUBLE, &rows);
+  f.drift = readAll<double>(file, "spectrum_drift", H5T_NATIVE_DOUBLE, &rows);
+  f.state = readAll<double>(file, "state", H5T_NATIVE_DOUBLE, &rows);
+  const hid_t complex = complexType();
+  f.mat = readAll<std::complex<double>>(file, "mat", complex, &rows);
+  H5Tclose(complex);
+  return f;
+}
+
+template <class T>
+bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+}
+
+void expectSameBits(const Frames& a, const Frames& b) {
+  EXPECT_TRUE(sameBits(a.step, b.step));
+  EXPECT_TRUE(sameBits(a.time, b.time));
+  EXPECT_TRUE(sameBits(a.qtime, b.qtime));
+  EXPECT_TRUE(sameBits(a.energy, b.energy));
+  EXPECT_TRUE(sameBits(a.enstrophy, b.enstrophy));
+  EXPECT_TRUE(sameBits(a.commutator, b.commutator));
+  EXPECT_TRUE(sameBits(a.drift, b.drift));
+  EXPECT_TRUE(sameBits(a.state, b.state));
+  EXPECT_TRUE(sameBits(a.mat, b.mat));
+}
+
+// ‖a − b‖/‖b‖ over a whole dataset.
+template <class T>
+double datasetDistance(const std::vector<T>& a, const std::vector<T>& b) {
+  double difference = 0.0, norm = 0.0;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    difference += std::norm(a[i] - b[i]);
+    norm += std::norm(b[i]);
+  }
+  return std::sqrt(difference / norm);
+}
+
+// The tolerances of the comparisons above: the matrices (W as mat, ω as state) as W_final,
+// history's numbers as history.csv's, times and steps exact.
+void expectSameFrames(const fs::path& found, const fs::path& serial) {
+  const Frames a = readFrames(found), b = readFrames(serial);
+  ASSERT_EQ(a.step, b.step);
+  ASSERT_GT(b.step.size(), 2u);
+  EXPECT_EQ(a.time, b.time);
+  EXPECT_EQ(a.qtime, b.qtime);
+  for (std::size_t f = 0; f < b.step.size(); ++f) {
+    EXPECT_LT(relative(a.energy[f], b.energy[f]), 1e-11) << "frame " << f;
+    EXPECT_LT(relative(a.enstrophy[f], b.enstrophy[f]), 1e-11) << "frame " << f;
+    EXPECT_LT(relative(a.commutator[f], b.commutator[f]), 1e-11) << "frame " << f;
+    EXPECT_LT(a.drift[f], 1e-13) << "frame " << f;
+  }
+  ASSERT_EQ(a.mat.size(), b.mat.size());
+  ASSERT_EQ(a.state.size(), b.state.size());
+  EXPECT_LT(datasetDistance(a.mat, b.mat), 1e-13);
+  EXPECT_LT(datasetDistance(a.state, b.state), 1e-12);
+}
+
+nlohmann::ordered_json summaryWithoutRuntime(const fs::path& out) {
+  nlohmann::ordered_json summary = readJson(out / "summary.json");
+  summary.erase("runtime_s");
+  return summary;
+}
+
+TEST(FluidRelaxMpiCheckpoint, ResumedRunContinuesTheUninterruptedOneToTheBit) {
+  const fs::path whole = freshFolder("ddb_mpi_", "whole");
+  const fs::path resumed = freshFolder("ddb_mpi_", "resumed");
+  const AppResult a = runMpi(2, kResumable + " --n 16 --steps 40 --out " + whole.string());
+  ASSERT_EQ(a.status, 0) << a.output;
+  const AppResult b = runMpi(2, kResumable + " --n 16 --steps 20 --out " + resumed.string());
+  ASSERT_EQ(b.status, 0) << b.output;
+  const AppResult c = runMpi(2, "--quiet --steps 40 --resume " + resumed.string());
+  ASSERT_EQ(c.status, 0) << c.output;
+  for (const char* file :
+       {"history.csv", "W_final.csv", "omega_initial.csv", "omega_final.csv", "checkpoint.ddb"}) {
+    EXPECT_TRUE(readFile(resumed / file) == readFile(whole / file)) << file;
+  }
+  EXPECT_EQ(summaryWithoutRuntime(resumed), summaryWithoutRuntime(whole));
+  expectSameBits(readFrames(resumed), readFrames(whole));
+  EXPECT_EQ(readFrames(whole).step.size(), 15u);  // rows 0, 3, ..., 39 and 40
+  fs::remove_all(whole);
+  fs::remove_all(resumed);
+}
+
+// A checkpoint of either app resumed by the other: the runs end where the uninterrupted
+// serial run does, to the rounding the MPI runs differ by (pzgemm's sums).
+TEST(FluidRelaxMpiCheckpoint, EitherAppResumesTheOthersCheckpoint) {
+  const fs::path serial = freshFolder("ddb_mpi_serial_", "cross");
+  const fs::path mpi_then_serial = freshFolder("ddb_mpi_", "mpi_then_serial");
+  const fs::path serial_then_mpi = freshFolder("ddb_mpi_", "serial_then_mpi");
+  const std::string common = kResumable + " --n 33";
+  AppResult r = runProgram(FLUID_RELAX_PATH, common + " --steps 40 --out " + serial.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  r = runMpi(2, common + " --block 5 --steps 20 --out " + mpi_then_serial.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  r = runProgram(FLUID_RELAX_PATH, "--quiet --steps 40 --resume " + mpi_then_serial.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  r = runProgram(FLUID_RELAX_PATH, common + " --steps 20 --out " + serial_then_mpi.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  r = runMpi(2, "--quiet --block 5 --steps 40 --resume " + serial_then_mpi.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  for (const fs::path& resumed : {mpi_then_serial, serial_then_mpi}) {
+    SCOPED_TRACE(resumed.string());
+    EXPECT_LT(matrixDistance(readCsv(resumed / "W_final.csv", nullptr),
+                             readCsv(serial / "W_final.csv", nullptr)),
+              1e-12);
+    expectSameHistory(resumed, serial);
+    expectSameFrames(resumed, serial);
+    EXPECT_EQ(readJson(resumed / "summary.json")["steps"], 40);
+  }
+  fs::remove_all(serial);
+  fs::remove_all(mpi_then_serial);
+  fs::remove_all(serial_then_mpi);
+}
+
+TEST(FluidRelaxMpiCheckpoint, H5IsTheSerialAppsFile) {
+  const fs::path serial = freshFolder("ddb_mpi_serial_", "h5");
+  const fs::path mpi = freshFolder("ddb_mpi_", "h5");
+  const std::string common = "--n 33 --alpha -0.5 --steps 30 --every 4 --h5 --quiet";
+  const AppResult s = runProgram(FLUID_RELAX_PATH, common + " --out " + serial.string());
+  ASSERT_EQ(s.status, 0) << s.output;
+  const AppResult m = runMpi(4, common + " --block 5 --out " + mpi.string());
+  ASSERT_EQ(m.status, 0) << m.output;
+  expectSameFrames(mpi, serial);
+  fs::remove_all(serial);
+  fs::remove_all(mpi);
+}
+
+// Every file of a folder with its bytes: what a refused resume must leave as it was.
+std::vector<std::pair<std::string, std::string>> folderBytes(const fs::path& dir) {
+  std::vector<std::pair<std::string, std::string>> files;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    files.emplace_back(entry.path().filename().string(), readFile(entry.path()));
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+TEST(FluidRelaxMpiCheckpoint, RefusesBadResumesOnEveryRankOnce) {
+  const fs::path done = freshFolder("ddb_mpi_", "done");
+  const fs::path corrupt = freshFolder("ddb_mpi_", "corrupt");
+  const fs::path adaptive = freshFolder("ddb_mpi_", "adaptive");
+  AppResult r = runMpi(2, kResumable + " --n 16 --steps 10 --out " + done.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  fs::copy(done, corrupt);
+  {
+    std::string bytes = readFile(corrupt / "checkpoint.ddb");
+    bytes[bytes.size() / 2] ^= 1;
+    std::ofstream(corrupt / "checkpoint.ddb", std::ios::binary) << bytes;
+  }
+  r = runProgram(FLUID_RELAX_PATH, "--n 8 --steps 3 --adaptive --quiet --out " + adaptive.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const fs::path missing = freshFolder("ddb_mpi_", "missing");
+  const std::vector<std::tuple<std::string, fs::path, std::string>> cases = {
+      {"--resume " + missing.string(), missing, "no checkpoint to resume from"},
+      {"--steps 20 --resume " + corrupt.string(), corrupt, "is corrupt (checksum mismatch)"},
+      {"--resume " + done.string(), done, "the run has taken 10 steps, its cap 10"},
+      {"--steps 20 --resume " + adaptive.string(), adaptive, "its run used --adaptive"},
+  };
+  for (const auto& [arguments, folder, message] : cases) {
+    const bool existed = fs::exists(folder);
+    const auto before = existed ? folderBytes(folder) : decltype(folderBytes(folder)){};
+    const AppResult bad = runMpi(2, arguments);
+    EXPECT_EQ(bad.status, 2) << arguments << "\n" << bad.output;
+    EXPECT_NE(bad.error.find(message), std::string::npos) << arguments << "\n" << bad.error;
+    EXPECT_EQ(messageCount(bad.error), 1u) << arguments << "\n" << bad.error;
+    EXPECT_EQ(fs::exists(folder), existed) << arguments;
+    if (existed) {
+      EXPECT_EQ(folderBytes(folder), before) << arguments;
+    }
+  }
+  for (const fs::path& folder : {done, corrupt, adaptive}) fs::remove_all(folder);
+}
+
+// Starts `mpiexec -n 2 fluid-relax-mpi arguments` (output discarded), waits for its first
+// checkpoint, sends SIGTERM to one rank (as a batch system signals the tasks) and returns
+// mpiexec's exit status.
+int startAndTerminateOneRank(const std::string& arguments) {
+  std::vector<std::string> words{MPIEXEC_PATH, "-n", "2", FLUID_RELAX_MPI_PATH};
+  std::stringstream ss(arguments);
+  for (std::string word; ss >> word;) words.push_back(word);
+  const pid_t child =
+      startUntilCheckpoint(words, words[words.size() - 1], kMpiEnvironment.variables);
+  // mpiexec's children are the ranks.
+  std::ifstream children("/proc/" + std::to_string(child) + "/task/" + std::to_string(child) +
+                         "/children");
+  pid_t rank = 0;
+  children >> rank;
+  if (rank > 0) ::kill(rank, SIGTERM);
+  return waitForExit(child);
+}
+
+// A run stopped by SIGTERM under mpiexec (at whatever step the signal finds it) writes its
+// outputs and a checkpoint and exits 143; resumed, it ends as the uninterrupted run, to the
+// bit.
+TEST(FluidRelaxMpiCheckpoint, SigtermLeavesACheckpointThatResumesToTheBit) {
+  const fs::path whole = freshFolder("ddb_mpi_", "sigterm_whole");
+  const fs::path stopped = freshFolder("ddb_mpi_", "sigterm_stopped");
+  const std::string run = "--n 16 --alpha 0.5 --every 3 --checkpoint-every 5 --steps 600";
+  EXPECT_EQ(startAndTerminateOneRank(run + " --out " + stopped.string()), 143);
+  const auto summary = readJson(stopped / "summary.json");
+  EXPECT_EQ(summary["stop"], "interrupted");
+  EXPECT_LT(summary["steps"].get<long>(), 600);
+  const AppResult resumed = runMpi(2, "--quiet --resume " + stopped.string());
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  const AppResult a = runMpi(2, run + " --quiet --out " + whole.string());
+  ASSERT_EQ(a.status, 0) << a.output;
+  for (const char* file : {"history.csv", "W_final.csv", "omega_final.csv", "checkpoint.ddb"}) {
+    EXPECT_TRUE(readFile(stopped / file) == readFile(whole / file)) << file;
+  }
+  fs::remove_all(whole);
+  fs::remove_all(stopped);
 }
 
 }  // namespace

@@ -1,5 +1,8 @@
 #include "fluid_relax/checkpoint.h"
 
+#include <spdlog/fmt/fmt.h>
+
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <set>
@@ -91,7 +94,7 @@ GivenFlags givenFlags(const CLI::App& cli) {
   for (const CLI::Option* option : cli.get_options()) {
     static const std::set<std::string> kFree{
         "--out",  "--resume",  "--steps", "--t-end", "--checkpoint-every",
-        "--plot", "--verbose", "--quiet"};
+        "--plot", "--verbose", "--quiet", "--block"};
     if (option->count() == 0 || kFree.count(option->get_name()) > 0) continue;
     std::string text;
     for (const std::string& result : option->results()) text += (text.empty() ? "" : ",") + result;
@@ -100,9 +103,9 @@ GivenFlags givenFlags(const CLI::App& cli) {
   return given;
 }
 
-void writeCheckpoint(const std::filesystem::path& out, const Options& o, const GivenFlags& given,
-                     const Settings& s, const Tally& tally, std::uint64_t history_bytes,
-                     std::int64_t h5_frames, const Relaxation<SUN>& relaxation) {
+BinaryRecordWriter beginCheckpoint(const Options& o, const GivenFlags& given, const Settings& s,
+                                   const Tally& tally, std::uint64_t history_bytes,
+                                   std::int64_t h5_frames) {
   BinaryRecordWriter record;
   record.tag(kTag);
   record.put(kLayout);
@@ -123,16 +126,28 @@ void writeCheckpoint(const std::filesystem::path& out, const Options& o, const G
   record.tag("files");
   record.put(history_bytes);
   record.put(h5_frames);
-  relaxation.save(record);
+  return record;
+}
+
+void writeCheckpoint(const std::filesystem::path& out, const BinaryRecordWriter& record) {
   app::writeFileAtomically(out / kCheckpointFile, record.sealed());
 }
 
-Checkpoint readCheckpoint(const std::string& dir) {
+std::string readCheckpointBytes(const std::string& dir) {
   const std::filesystem::path path = std::filesystem::path(dir) / kCheckpointFile;
   std::ifstream file(path, std::ios::binary);
   if (!file) app::usageError("--resume", dir, "no checkpoint to resume from: " + path.string());
   std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
   if (file.bad()) app::usageError("--resume", dir, "cannot read " + path.string());
+  return bytes;
+}
+
+Checkpoint readCheckpoint(const std::string& dir) {
+  return parseCheckpoint(dir, readCheckpointBytes(dir));
+}
+
+Checkpoint parseCheckpoint(const std::string& dir, std::string bytes) {
+  const std::filesystem::path path = std::filesystem::path(dir) / kCheckpointFile;
   Checkpoint c;
   try {
     BinaryRecordReader in = BinaryRecordReader::unseal(std::move(bytes));
@@ -165,6 +180,32 @@ Checkpoint readCheckpoint(const std::string& dir) {
                     path.string() + " is corrupt (" + corrupt.what() + "): refusing to use it");
   }
   return c;
+}
+
+void resumeRelaxation(Checkpoint& c, const std::string& dir,
+                      const std::function<RelaxState(BinaryRecordReader&)>& load) {
+  RelaxState at;
+  try {
+    at = load(c.relaxation);
+    c.relaxation.expectEnd();
+  } catch (const CorruptRecord& corrupt) {
+    app::usageError(
+        "--resume", dir,
+        std::string(kCheckpointFile) + " is corrupt (" + corrupt.what() + "): refusing to use it");
+  }
+  const bool time_capped = std::isfinite(c.settings.relax.t_end);
+  if (!time_capped && at.k >= c.settings.relax.max_steps) {
+    app::usageError("--resume", dir,
+                    fmt::format("the run has taken {} steps, its cap {}; give a larger --steps "
+                                "or --t-end",
+                                at.k, c.settings.relax.max_steps));
+  }
+  if (time_capped && at.t >= c.settings.relax.t_end * (1 - 1e-12)) {
+    app::usageError("--resume", dir,
+                    fmt::format("the run has reached t = {}, its cap; give a larger --t-end or "
+                                "--steps",
+                                at.t));
+  }
 }
 
 }  // namespace ddb::fluid

@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
 
@@ -26,7 +27,8 @@ constexpr const char* kCheckpointFile = "checkpoint.ddb";
 
 /// The flags of a command line that define the run, as given: name → value text. The
 /// others (--out, --resume, --steps, --t-end, --checkpoint-every, --plot, --verbose,
-/// --quiet) do not change the states a run computes: a resumed run may give them anew, and
+/// --quiet) do not change the states a run computes, and fluid-relax-mpi's --block changes
+/// them by rounding only, as the number of ranks does: a resumed run may give them anew, and
 /// a checkpoint does not record them, so that it is the same whatever they were.
 using GivenFlags = std::map<std::string, std::string>;
 GivenFlags givenFlags(const CLI::App& cli);
@@ -49,13 +51,31 @@ struct Checkpoint {
   BinaryRecordReader relaxation{""};
 };
 
-/// Writes OUT/checkpoint.ddb atomically; throws IoError naming it.
-void writeCheckpoint(const std::filesystem::path& out, const Options& o, const GivenFlags& given,
-                     const Settings& s, const Tally& tally, std::uint64_t history_bytes,
-                     std::int64_t h5_frames, const Relaxation<SUN>& relaxation);
+/// A checkpoint up to the relaxation's record, which the caller appends (Relaxation::save,
+/// or fluid-relax-mpi's writer of the same record) before writeCheckpoint().
+BinaryRecordWriter beginCheckpoint(const Options& o, const GivenFlags& given, const Settings& s,
+                                   const Tally& tally, std::uint64_t history_bytes,
+                                   std::int64_t h5_frames);
 
-/// Reads DIR/checkpoint.ddb for `--resume DIR`; a missing, unreadable, truncated or
-/// corrupted one (its checksum) is a UsageError naming --resume and the file.
+/// Writes OUT/checkpoint.ddb atomically; throws IoError naming it.
+void writeCheckpoint(const std::filesystem::path& out, const BinaryRecordWriter& record);
+
+/// The bytes of DIR/checkpoint.ddb for `--resume DIR`; a missing or unreadable one is a
+/// UsageError naming --resume and the file.
+std::string readCheckpointBytes(const std::string& dir);
+
+/// The checkpoint in `bytes`, read from DIR for `--resume DIR`; a truncated or corrupted one
+/// (its checksum) is a UsageError naming --resume and the file.
+Checkpoint parseCheckpoint(const std::string& dir, std::string bytes);
+
+/// readCheckpoint then parseCheckpoint.
 Checkpoint readCheckpoint(const std::string& dir);
+
+/// Loads the relaxation's record of `c` with `load`, which returns the loaded state
+/// (Relaxation::load, or fluid-relax-mpi's reader of the same record), and checks that the
+/// resumed run's cap lies beyond it: a corrupt record or a cap already reached is a
+/// UsageError naming --resume DIR.
+void resumeRelaxation(Checkpoint& c, const std::string& dir,
+                      const std::function<RelaxState(BinaryRecordReader&)>& load);
 
 }  // namespace ddb::fluid

@@ -7,8 +7,6 @@
 #include <ddb/integrators/method_table.h>
 #include <ddb/integrators/relax.h>
 #include <ddb/integrators/run.h>
-#include <ddb/integrators/steady_state_probe.h>
-#include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <spdlog/fmt/chrono.h>
 #include <spdlog/spdlog.h>
@@ -25,12 +23,10 @@
 #include "common/exit_status.h"
 #include "common/json.h"
 #include "common/logging.h"
-#include "common/plot.h"
 #include "common/progress.h"
 #include "common/spectrum_drift.h"
 #include "common/stop_signals.h"
 #include "fluid_relax/checkpoint.h"
-#include "fluid_relax/fluid_h5.h"
 #include "fluid_relax/input.h"
 #include "fluid_relax/options.h"
 #include "fluid_relax/outputs.h"
@@ -40,33 +36,6 @@ namespace {
 
 using namespace ddb;
 using namespace ddb::fluid;
-
-// The checkpoint's state as the run's first: a checkpoint that the relaxation cannot read is
-// bad input, and so is a cap the run has already reached.
-void resumeFrom(Checkpoint& c, Relaxation<SUN>& run, const Options& o) {
-  try {
-    run.load(c.relaxation);
-    c.relaxation.expectEnd();
-  } catch (const CorruptRecord& corrupt) {
-    app::usageError(
-        "--resume", o.resume,
-        std::string(kCheckpointFile) + " is corrupt (" + corrupt.what() + "): refusing to use it");
-  }
-  const RelaxState& at = run.state();
-  const bool time_capped = std::isfinite(c.settings.relax.t_end);
-  if (!time_capped && at.k >= c.settings.relax.max_steps) {
-    app::usageError("--resume", o.resume,
-                    fmt::format("the run has taken {} steps, its cap {}; give a larger --steps "
-                                "or --t-end",
-                                at.k, c.settings.relax.max_steps));
-  }
-  if (time_capped && at.t >= c.settings.relax.t_end * (1 - 1e-12)) {
-    app::usageError("--resume", o.resume,
-                    fmt::format("the run has reached t = {}, its cap; give a larger --t-end or "
-                                "--steps",
-                                at.t));
-  }
-}
 
 int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoint* resume) {
   const auto start = std::chrono::steady_clock::now();
@@ -84,7 +53,10 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
                                : Relaxation<SUN>(*method, *system, s.W0, s.h, s.relax);
   Tally tally;
   if (resume != nullptr) {
-    resumeFrom(*resume, run, o);
+    resumeRelaxation(*resume, o.resume, [&](BinaryRecordReader& in) {
+      run.load(in);
+      return run.state();
+    });
     tally = resume->tally;
   }
   app::prepareOutputFolder(resume != nullptr ? "--resume" : "--out",
@@ -105,32 +77,11 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   }
   const app::SpectrumDrift<SUN> spectrumDrift(s.W0);
 
-  std::optional<HistoryCsv> history_csv;
-  if (resume != nullptr) {
-    history_csv.emplace(s.out / "history.csv", resume->history_bytes);
-  } else {
-    history_csv.emplace(s.out / "history.csv");
-  }
-  const SphericalHarmonicBasis basis(hamiltonian.laplacian());
-  std::optional<FluidH5> h5;  // --h5: every history row's state, too
-  if (o.h5 || o.animate) {
-    h5 = resume != nullptr
-             ? FluidH5::reopen(s.out / kFluidH5, resume->h5_frames)
-             : FluidH5::create(s.out / kFluidH5, h5Attributes(o, s, hamiltonian.hbar()));
-  }
+  HistoryFiles files(o, s, *system, resume);
   // A row points at the run's current state; the one EveryKth holds back for finish() is
   // the last, which they still point to then.
-  // r of each written row (relax() evaluates it only for --until-steady or --adaptive).
-  SteadyStateProbe<SUN> rowProbe(*system);
   auto historyRow = [&](long k, double t, const std::pair<const RelaxState*, const Matrix*>& at) {
-    const Matrix& W = *at.second;
-    rowProbe.evaluate(W);
-    const double energy = diagnostics.energy(W), enstrophy = diagnostics.enstrophy(W),
-                 commutator = diagnostics.commutatorNorm(W);
-    history_csv->write(t, energy, enstrophy, commutator, tally.drift, at.first->h,
-                       rowProbe.residual());
-    if (h5)
-      h5->append({k, t, W, basis.coefficients(W), energy, enstrophy, commutator, tally.drift});
+    files.write(k, t, at.first->h, *at.second, tally.drift);
   };
   EveryKth<std::pair<const RelaxState*, const Matrix*>, decltype(historyRow)> history(o.every,
                                                                                       historyRow);
@@ -159,10 +110,12 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
     });
   };
   // The files that grow are on disk up to the lengths the checkpoint records.
-  const auto checkpoint = [&](std::uint64_t history_bytes, std::int64_t h5_frames) {
+  const auto checkpoint = [&](const HistoryFiles::Lengths& lengths) {
     const auto begin = std::chrono::steady_clock::now();
-    if (h5) h5->flush();
-    writeCheckpoint(s.out, o, given, s, tally, history_bytes, h5_frames, run);
+    BinaryRecordWriter record =
+        beginCheckpoint(o, given, s, tally, lengths.history_bytes, lengths.h5_frames);
+    run.save(record);
+    writeCheckpoint(s.out, record);
     last_checkpoint = std::chrono::steady_clock::now();
     const std::time_t now = std::time(nullptr);
     checkpoint_time = fmt::format("{:%H:%M:%S} (step {})", fmt::localtime(now), run.state().k);
@@ -188,17 +141,15 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
     const bool due = o.checkpoint_every > 0 ? run.state().k % o.checkpoint_every == 0
                                             : std::chrono::steady_clock::now() - last_checkpoint >=
                                                   std::chrono::duration<double>(kCheckpointSeconds);
-    if (due) checkpoint(history_csv->sync(), h5 ? h5->frames() : 0);
+    if (due) checkpoint(files.sync());
   }
   progress.clear();
   // The checkpoint of the final state records history.csv and fluid.hdf5 without the
   // held-back last row, which a run resumed from it writes again (or not, if it goes past it).
-  const std::uint64_t history_bytes = history_csv->sync();
-  const std::int64_t h5_frames = h5 ? h5->frames() : 0;
+  const HistoryFiles::Lengths lengths = files.sync();
   history.finish();
-  history_csv->commit();
-  if (h5) h5->flush();
-  if (checkpointed_at != run.state().k) checkpoint(history_bytes, h5_frames);
+  files.commit();
+  if (checkpointed_at != run.state().k) checkpoint(lengths);
   tally.rises.warnIfAny(method_name);
 
   const RelaxResult<SUN>& result = run.result();
@@ -216,8 +167,8 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
     return app::kExitFailed;
   }
   writeMatrixCsv(s.out / "W_final.csv", result.final);
-  writeOmegaCsv(s.out / "omega_initial.csv", basis, s.W0);
-  writeOmegaCsv(s.out / "omega_final.csv", basis, result.final);
+  writeOmegaCsv(s.out / "omega_initial.csv", files.basis(), s.W0);
+  writeOmegaCsv(s.out / "omega_final.csv", files.basis(), result.final);
   app::writeJsonFile(s.out / "summary.json", summary);
   if (interrupted) {
     spdlog::warn(
@@ -258,18 +209,7 @@ int runRelax(int argc, char** argv) {
     out = s.out;
     status = relax(o, s, givenFlags(cli), nullptr);
   }
-  const bool figures_asked = run_options.plot || run_options.animate;
-  if (status != app::kExitOk) {
-    if (figures_asked && status == app::kExitFailed) spdlog::error("no figures: the run failed");
-    return status;
-  }
-  int figures = app::kExitOk;
-  if (run_options.animate) {
-    figures = app::runPlotScript(DDB_ANIMATE_SCRIPT,
-                                 {(out / kFluidH5).string(), (out / "fluid.mp4").string()});
-  }
-  if (run_options.plot) figures = std::max(figures, app::runPlotScript(DDB_PLOT_SCRIPT, out));
-  return figures;
+  return makeFigures(run_options, out, status, DDB_PLOT_SCRIPT, DDB_ANIMATE_SCRIPT);
 }
 
 }  // namespace

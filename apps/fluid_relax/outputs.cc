@@ -1,6 +1,13 @@
 #include "fluid_relax/outputs.h"
 
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+
 #include "common/cli.h"
+#include "common/exit_status.h"
+#include "common/plot.h"
+#include "fluid_relax/checkpoint.h"
 
 namespace ddb::fluid {
 
@@ -21,6 +28,63 @@ void HistoryCsv::write(double t, double energy, double enstrophy, double commuta
   row_.put(h);
   row_.put(residual);
   row_.writeTo(file_);
+}
+
+HistoryFiles::HistoryFiles(const Options& o, const Settings& s, const LiePoissonSystem<SUN>& system,
+                           const Checkpoint* resume)
+    : hamiltonian_(dynamic_cast<const ZeitlinHamiltonian&>(system.hamiltonian())),
+      diagnostics_(hamiltonian_),
+      probe_(system),
+      basis_(hamiltonian_.laplacian()) {
+  if (resume != nullptr) {
+    csv_.emplace(s.out / "history.csv", resume->history_bytes);
+  } else {
+    csv_.emplace(s.out / "history.csv");
+  }
+  if (o.h5 || o.animate) {
+    h5_ = resume != nullptr
+              ? FluidH5::reopen(s.out / kFluidH5, resume->h5_frames)
+              : FluidH5::create(s.out / kFluidH5, h5Attributes(o, s, hamiltonian_.hbar()));
+  }
+}
+
+void HistoryFiles::write(long k, double t, double h, const Eigen::MatrixXcd& W, double drift) {
+  probe_.evaluate(W);
+  const double energy = diagnostics_.energy(W), enstrophy = diagnostics_.enstrophy(W),
+               commutator = diagnostics_.commutatorNorm(W);
+  csv_->write(t, energy, enstrophy, commutator, drift, h, probe_.residual());
+  if (h5_) h5_->append({k, t, W, basis_.coefficients(W), energy, enstrophy, commutator, drift});
+}
+
+HistoryFiles::Lengths HistoryFiles::sync() {
+  Lengths lengths;
+  lengths.history_bytes = csv_->sync();
+  if (h5_) {
+    h5_->flush();
+    lengths.h5_frames = h5_->frames();
+  }
+  return lengths;
+}
+
+void HistoryFiles::commit() {
+  csv_->commit();
+  if (h5_) h5_->flush();
+}
+
+int makeFigures(const Options& o, const std::filesystem::path& out, int status,
+                const char* plot_script, const char* animate_script) {
+  const bool figures_asked = o.plot || o.animate;
+  if (status != app::kExitOk) {
+    if (figures_asked && status == app::kExitFailed) spdlog::error("no figures: the run failed");
+    return status;
+  }
+  int figures = app::kExitOk;
+  if (o.animate) {
+    figures = app::runPlotScript(animate_script,
+                                 {(out / kFluidH5).string(), (out / "fluid.mp4").string()});
+  }
+  if (o.plot) figures = std::max(figures, app::runPlotScript(plot_script, out));
+  return figures;
 }
 
 FluidH5Attributes h5Attributes(const Options& o, const Settings& s, double hbar) {

@@ -1,13 +1,16 @@
 // fluid-relax's CSV files (docs/file-formats.md, "fluid-relax"): history.csv as the run
-// goes (continued by a resumed run), W_final.csv in the layout of --init-file, omega_initial.csv
-// and omega_final.csv.
+// goes (continued by a resumed run) with fluid.hdf5's frames beside it, W_final.csv in the
+// layout of --init-file, omega_initial.csv and omega_final.csv.
 #pragma once
 
+#include <ddb/integrators/steady_state_probe.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
+#include <ddb/systems/zeitlin_fluid.h>
 
 #include <Eigen/Core>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 
 #include "common/atomic_file.h"
 #include "common/csv_row.h"
@@ -42,6 +45,46 @@ constexpr const char* kFluidH5 = "fluid.hdf5";
 
 /// fluid.hdf5's root attributes for the run of `o`, `s` (ħ of the run's Hamiltonian).
 FluidH5Attributes h5Attributes(const Options& o, const Settings& s, double hbar);
+
+struct Checkpoint;
+
+/// The files of the history rows: history.csv's row of a state and, with --h5 or --animate,
+/// its frame in fluid.hdf5, from one evaluation of the state's numbers; fluid-relax's, and
+/// fluid-relax-mpi's on rank 0 from the gathered states.
+class HistoryFiles {
+ public:
+  /// The lengths a checkpoint records: history.csv's bytes, fluid.hdf5's frames (0 without).
+  struct Lengths {
+    std::uint64_t history_bytes = 0;
+    std::int64_t h5_frames = 0;
+  };
+
+  /// New files in s.out, or (resume) a resumed run's, continued from the lengths its
+  /// checkpoint recorded. `system` is the run's fluid (makeZeitlinFluid). Throws IoError.
+  HistoryFiles(const Options& o, const Settings& s, const LiePoissonSystem<SUN>& system,
+               const Checkpoint* resume);
+  /// The row of state k at time t reached by a step h (0 for k = 0), of spectrum drift `drift`.
+  void write(long k, double t, double h, const Eigen::MatrixXcd& W, double drift);
+  /// Makes the rows written durable (before a checkpoint) and returns their lengths.
+  Lengths sync();
+  /// Completes history.csv under its name and writes fluid.hdf5 to the disk.
+  void commit();
+  const SphericalHarmonicBasis& basis() const { return basis_; }
+
+ private:
+  const ZeitlinHamiltonian& hamiltonian_;
+  ZeitlinDiagnostics diagnostics_;
+  SteadyStateProbe<SUN> probe_;  // r of each row, whether or not the run evaluates it
+  SphericalHarmonicBasis basis_;
+  std::optional<HistoryCsv> csv_;
+  std::optional<FluidH5> h5_;
+};
+
+/// The figures a finished run asks for, once it ended with exit status `status`: with
+/// --animate fluid.hdf5's animation (fluid.mp4) by `animate_script`, with --plot the figures
+/// by `plot_script` (the app's own paths); none after a failure. Returns the app's exit status.
+int makeFigures(const Options& o, const std::filesystem::path& out, int status,
+                const char* plot_script, const char* animate_script);
 
 /// W in the layout of --init-file: row j is Re W[j, :] then Im W[j, :].
 void writeMatrixCsv(const std::filesystem::path& path, const Eigen::MatrixXcd& W);

@@ -6,14 +6,14 @@
 // adds mpi_ranks, process_grid and block_size. The energy (for energy rises) and the
 // residual (for --until-steady) of every step are evaluated distributed. Exit statuses as
 // fluid-relax's, agreed by every rank: 2 bad input on any rank (nothing written), 1 a failed
-// step or a file rank 0 could not write, 130/143 a SIGINT/SIGTERM on any rank (outputs
-// written, no checkpoint); anything unexpected on one rank ends the job (MPI_Abort).
+// step or a file rank 0 could not write, 130/143 a SIGINT/SIGTERM on any rank (outputs and a
+// checkpoint written); anything unexpected on one rank ends the job (MPI_Abort). Checkpoints
+// are fluid-relax's record (docs/distributed.md, "Checkpoints"), so either app resumes the
+// other's; with --h5, rank 0 appends fluid.hdf5's frames as fluid-relax does.
 #include <ddb/distributed/distributed_ddb.h>
 #include <ddb/distributed/process_grid.h>
 #include <ddb/integrators/relax.h>
 #include <ddb/integrators/run.h>
-#include <ddb/integrators/steady_state_probe.h>
-#include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <mpi.h>
 #include <spdlog/spdlog.h>
@@ -32,7 +32,6 @@
 #include "common/exit_status.h"
 #include "common/json.h"
 #include "common/logging.h"
-#include "common/plot.h"
 #include "common/progress.h"
 #include "common/spectrum_drift.h"
 #include "common/stop_signals.h"
@@ -48,78 +47,107 @@ using namespace ddb::fluid;
 using namespace ddb::fluid_mpi;
 using B = MatrixBackend<DistributedMatrix>;
 
-// What rank 0 makes of gathered states: fluid-relax's history rows and final files.
+// What rank 0 makes of gathered states: fluid-relax's history rows (history.csv, and
+// fluid.hdf5 with --h5) and final files.
 class RankZeroOutputs {
  public:
-  RankZeroOutputs(const Settings& s, Eigen::Index n)
-      : system_(makeZeitlinFluid(n, s.alpha)),
-        hamiltonian_(dynamic_cast<const ZeitlinHamiltonian&>(system_->hamiltonian())),
-        diagnostics_(hamiltonian_),
+  RankZeroOutputs(const Options& o, const Settings& s, const Checkpoint* resume)
+      : system_(makeZeitlinFluid(s.W0.rows(), s.alpha)),
         drift_(s.W0),
-        probe_(*system_),
-        history_(s.out / "history.csv") {}
+        files_(o, s, *system_, resume) {}
 
-  /// One history.csv row; returns the state's spectrum drift.
-  double row(double t, double h, const Matrix& W) {
-    probe_.evaluate(W);
+  /// One history row; returns the state's spectrum drift.
+  double row(long k, double t, double h, const Matrix& W) {
     const double drift = drift_(W);
-    history_.write(t, diagnostics_.energy(W), diagnostics_.enstrophy(W),
-                   diagnostics_.commutatorNorm(W), drift, h, probe_.residual());
+    files_.write(k, t, h, W, drift);
     return drift;
   }
-  void commitHistory() { history_.commit(); }
+  HistoryFiles::Lengths sync() { return files_.sync(); }
+  void commit() { files_.commit(); }
   void writeFinalState(const Settings& s, const Matrix& W) {
-    const SphericalHarmonicBasis basis(hamiltonian_.laplacian());
     writeMatrixCsv(s.out / "W_final.csv", W);
-    writeOmegaCsv(s.out / "omega_initial.csv", basis, s.W0);
-    writeOmegaCsv(s.out / "omega_final.csv", basis, W);
+    writeOmegaCsv(s.out / "omega_initial.csv", files_.basis(), s.W0);
+    writeOmegaCsv(s.out / "omega_final.csv", files_.basis(), W);
   }
 
  private:
   std::shared_ptr<const LiePoissonSystem<SUN>> system_;
-  const ZeitlinHamiltonian& hamiltonian_;
-  ZeitlinDiagnostics diagnostics_;
   app::SpectrumDrift<SUN> drift_;
-  SteadyStateProbe<SUN> probe_;
-  HistoryCsv history_;
+  HistoryFiles files_;
 };
 
-// Once per step every rank learns whether any rank received a stop signal and whether rank
-// 0 failed to write a file: the largest of each over the ranks.
+// Once per step every rank learns whether any rank received a stop signal, whether rank 0
+// failed to write a file and whether a checkpoint is due (rank 0's clock decides): the
+// largest of each over the ranks.
 struct StepFlags {
-  int signal = 0, write_failed = 0;
+  int signal = 0, write_failed = 0, checkpoint_due = 0;
 };
 StepFlags agreeOnFlags(const ProcessGrid& grid, StepFlags mine) {
-  int values[2] = {mine.signal, mine.write_failed};
-  MPI_Allreduce(MPI_IN_PLACE, values, 2, MPI_INT, MPI_MAX, grid.comm());
-  return {values[0], values[1]};
+  int values[3] = {mine.signal, mine.write_failed, mine.checkpoint_due};
+  MPI_Allreduce(MPI_IN_PLACE, values, 3, MPI_INT, MPI_MAX, grid.comm());
+  return {values[0], values[1], values[2]};
 }
 
-int relax(const MpiOptions& mo, const Settings& s, int block, const ProcessGrid& grid) {
+int relax(MpiRun& run, const ProcessGrid& grid) {
   const auto start = std::chrono::steady_clock::now();
-  const Options& o = mo.relax;
+  const Options& o = run.options;
+  const Settings& s = run.settings;
+  Checkpoint* resume = run.resume ? &*run.resume : nullptr;
   const bool root = grid.rank() == 0;
   const Eigen::Index n = s.W0.rows();
-  if (const int status = onRankZero(grid, [&] { app::prepareOutputFolder("--out", o.out, s.out); }))
-    throw Reported{status};
-  // ---- from here on, files are written: failures are exit status 1 ----
-  std::optional<RankZeroOutputs> outputs;
-  if (const int status = onRankZero(grid, [&] { outputs.emplace(s, n); })) throw Reported{status};
-  spdlog::info(
-      "N = {}, alpha = {}, {} init, ddb-cay on {} ranks ({}x{} grid, block {}): {} steps of h = "
-      "{}{}",
-      n, s.alpha, s.init, grid.size(), grid.rows(), grid.cols(), block, s.steps, s.h,
-      s.default_h ? " (default)" : "");
 
-  DistributedMatrix W(grid, static_cast<int>(n), block);
-  W.scatterFrom(s.W0);
+  DistributedMatrix W(grid, static_cast<int>(n), run.block);
   DistributedMatrix trial(W.layout()), P(W.layout()), product(W.layout()), commutator(W.layout());
   DistributedDdb ddb(W.layout(), s.alpha);
   const DistributedZeitlinFluid& fluid = ddb.system();
+  // The cursor of fluid-relax's Relaxation, kept alike so that the checkpoints are its
+  // record (docs/file-formats.md, "Checkpoints"): the state's record, the step control (fixed
+  // steps here) and the step times.
+  RelaxResult<SUN> result;
+  RelaxState& at = result.last;
+  EnergyStepControl control(s.relax.control, s.h);
+  StepTimes times;
+  times.h = control.h();
+  Tally tally;
+  if (resume != nullptr) {
+    // Every rank reads its copy of the record and keeps its blocks of the state and of the
+    // warm start: no rank waits for another, and every rank fails alike.
+    const int status = onEveryRank(grid, [&] {
+      resumeRelaxation(*resume, o.resume, [&](BinaryRecordReader& in) {
+        Matrix whole = s.W0;
+        loadRelaxCursor(in, at, whole, result.steps_rejected, times);
+        control.load(in);
+        ddb.loadWarmStart(in, W.layout());
+        W.assignBlocksOf(whole);
+        return at;
+      });
+    });
+    if (status != 0) throw Reported{status};
+    tally = resume->tally;
+  } else {
+    W.scatterFrom(s.W0);
+    at.residual = NAN;
+  }
+  if (const int status = onRankZero(grid, [&] {
+        app::prepareOutputFolder(resume != nullptr ? "--resume" : "--out",
+                                 resume != nullptr ? o.resume : o.out, s.out);
+      })) {
+    throw Reported{status};
+  }
+  // ---- from here on, files are written: failures are exit status 1 ----
+  std::optional<RankZeroOutputs> outputs;
+  if (const int status = onRankZero(grid, [&] { outputs.emplace(o, s, resume); })) {
+    throw Reported{status};
+  }
+  if (resume != nullptr) spdlog::info("resuming {} at step {}, t = {}", s.out.string(), at.k, at.t);
+  spdlog::info(
+      "N = {}, alpha = {}, {} init, ddb-cay on {} ranks ({}x{} grid, block {}): {} steps of h = "
+      "{}{}",
+      n, s.alpha, s.init, grid.size(), grid.rows(), grid.cols(), run.block, s.steps, s.h,
+      s.default_h ? " (default)" : "");
+
   const bool watch_energy = app::EnergyRises::applies(true, s.alpha);
   const bool probing = s.relax.tolerance > 0;
-
-  Tally tally;
   std::string write_error;  // rank 0's first failed write
   const auto onRoot = [&](const std::function<void()>& write) {
     if (!root || !write_error.empty()) return;
@@ -133,22 +161,24 @@ int relax(const MpiOptions& mo, const Settings& s, int block, const ProcessGrid&
   const auto historyRow = [&](long k, double t, const DistributedMatrix* state) {
     const Matrix whole = state->gather();
     onRoot([&] {
-      tally.drift = outputs->row(t, k == 0 ? 0.0 : s.h, whole);
+      tally.drift = outputs->row(k, t, k == 0 ? 0.0 : s.h, whole);
       tally.drift_max = std::max(tally.drift_max, tally.drift);
     });
   };
   EveryKth<const DistributedMatrix*, decltype(historyRow)> history(o.every, historyRow);
 
-  RelaxResult<SUN> result;
-  RelaxState& at = result.last;
-  // The current state's H = N·E/ħ (the energy fluid-relax watches for rises) and
-  // r = ‖[P, W]‖/(‖P‖ ‖W‖) (0 where ‖P‖ ‖W‖ = 0, SteadyStateProbe's convention), from one
-  // Poisson solve, distributed; only what the run reads.
+  // H = N·E/ħ of W (the energy fluid-relax watches for rises), from P = W's stream matrix.
+  const auto energyFromStream = [&] {
+    return DistributedZeitlinFluid::energy(W, P) * static_cast<double>(n) / fluid.hbar();
+  };
+  // The current state's H and r = ‖[P, W]‖/(‖P‖ ‖W‖) (0 where ‖P‖ ‖W‖ = 0,
+  // SteadyStateProbe's convention), from one Poisson solve, distributed; only what the run
+  // reads.
   const auto observeState = [&] {
     if (!watch_energy && !probing) return;
     fluid.streamMatrixInto(W, P);
     if (watch_energy) {
-      at.energy = DistributedZeitlinFluid::energy(W, P) * static_cast<double>(n) / fluid.hbar();
+      at.energy = energyFromStream();
       tally.rises.observe(at.k, at.t, at.energy);
     }
     if (probing) {
@@ -157,9 +187,40 @@ int relax(const MpiOptions& mo, const Settings& s, int block, const ProcessGrid&
       at.residual = scale > 0.0 ? norm / scale : 0.0;
     }
   };
-  at.residual = NAN;
-  observeState();
-  history(0, 0.0, &W);
+  // A checkpoint of the current state, written by rank 0 from the gathered state and warm
+  // start (collective); the files that grow are on disk up to `lengths` (rank 0's).
+  auto last_checkpoint = std::chrono::steady_clock::now();
+  long checkpointed_at = -1;  // the step of the last checkpoint
+  const auto checkpoint = [&](const HistoryFiles::Lengths& lengths) {
+    if (!watch_energy) {
+      // Relaxation's record holds H of every state, which this run evaluates only here.
+      fluid.streamMatrixInto(W, P);
+      at.energy = energyFromStream();
+    }
+    BinaryRecordWriter record;
+    if (root) {
+      record = beginCheckpoint(o, run.given, s, tally, lengths.history_bytes, lengths.h5_frames);
+    }
+    saveRelaxCursor(record, at, W.gather(), result.steps_rejected, times);
+    control.save(record);
+    ddb.saveWarmStart(record);
+    onRoot([&] { writeCheckpoint(s.out, record); });
+    last_checkpoint = std::chrono::steady_clock::now();
+    checkpointed_at = at.k;
+  };
+  const auto syncedLengths = [&] {
+    HistoryFiles::Lengths lengths;
+    onRoot([&] { lengths = outputs->sync(); });
+    return lengths;
+  };
+
+  if (resume == nullptr) {
+    observeState();
+    history(0, 0.0, &W);
+  } else if (at.k % o.every != 0) {
+    // The checkpoint's state is the last row, held back (its length excludes that row).
+    history(at.k, at.t, &W);
+  }
   app::Progress progress(o.log.quiet || !root);
   const std::string label = "ddb-cay N=" + std::to_string(n) + " P=" + std::to_string(grid.size());
   app::StopSignals signals;
@@ -175,55 +236,68 @@ int relax(const MpiOptions& mo, const Settings& s, int block, const ProcessGrid&
     }
     // The step from a copy, so that a failed step keeps the state before it. Its decisions
     // use values reduced alike on every rank, so every rank fails alike.
+    const double h = control.h();
     B::entries(trial) = B::entries(W);
     try {
-      ddb.advance(trial, at.t, s.h);
-      if (!std::isfinite(B::frobeniusNorm(trial))) {
-        throw NonFiniteState("ddb-cay", -1, at.t, s.h, B::entries(trial));
+      ddb.advance(trial, at.t, h);
+      // Named by the norm every rank agrees on, not by a rank's own block of entries.
+      const double norm = B::frobeniusNorm(trial);
+      if (!std::isfinite(norm)) {
+        const Eigen::Matrix<double, 1, 1> value(norm);
+        throw NonFiniteState("ddb-cay", -1, at.t, h, value, "state's Frobenius norm");
       }
     } catch (const SolveFailure& failure) {
-      result.failure = detail::messageAtStep(failure, at.k, at.t, s.h);
+      result.failure = detail::messageAtStep(failure, at.k, at.t, h);
       result.failed_step = at.k;
       result.stop = RelaxStop::kFailure;
       break;
     }
     W.swap(trial);
     ++at.k;
-    at.t = static_cast<double>(at.k) * s.h;
-    at.h = s.h;
+    at.t = times.after(at.t, h);
+    at.h = h;
     const LegendreStats& stats = ddb.legendreSolver().stats();
     const long iterations = stats.fixed_point + stats.newton;
     tally.iterations_total += iterations;
     tally.iterations_max = std::max(tally.iterations_max, iterations);
     observeState();
     history(at.k, at.t, &W);
-    flags = agreeOnFlags(grid, {signals.received(), write_error.empty() ? 0 : 1});
+    const bool due = o.checkpoint_every > 0 ? at.k % o.checkpoint_every == 0
+                                            : std::chrono::steady_clock::now() - last_checkpoint >=
+                                                  std::chrono::duration<double>(kCheckpointSeconds);
+    flags =
+        agreeOnFlags(grid, {signals.received(), write_error.empty() ? 0 : 1, root && due ? 1 : 0});
     if (flags.write_failed != 0) break;
     if (flags.signal != 0) {
       result.stop = RelaxStop::kInterrupted;
       break;
     }
+    if (flags.checkpoint_due != 0) checkpoint(syncedLengths());
     progress.update(label, at.k, s.relax.max_steps,
-                    [&] { return fmt::format("t {:.6g}  h {:.3g}", at.t, s.h); });
+                    [&] { return fmt::format("t {:.6g}  h {:.3g}", at.t, h); });
   }
   progress.clear();
+  // As fluid-relax: the checkpoint of the final state records the files without the
+  // held-back last row, which a run resumed from it writes again (or not, if it goes past).
+  const HistoryFiles::Lengths lengths = syncedLengths();
   history.finish();
+  onRoot([&] { outputs->commit(); });
+  if (checkpointed_at != at.k) checkpoint(lengths);
   result.final = W.gather();
   const double runtime_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   onRoot([&] {
-    outputs->commitHistory();
     tally.rises.warnIfAny("ddb-cay");
     app::Json summary = runSummary(o, s, result, tally, "ddb-cay", watch_energy, runtime_s);
     summary["mpi_ranks"] = grid.size();
     summary["process_grid"] = {grid.rows(), grid.cols()};
-    summary["block_size"] = block;
+    summary["block_size"] = run.block;
     // A failed run writes no final state (docs/file-formats.md), as fluid-relax.
     if (result.ok()) outputs->writeFinalState(s, result.final);
     app::writeJsonFile(s.out / "summary.json", summary);
   });
   if (flags.write_failed == 0) {
-    flags = agreeOnFlags(grid, {flags.signal, write_error.empty() ? 0 : 1});
+    flags = agreeOnFlags(grid, {flags.signal, write_error.empty() ? 0 : 1, 0});
   }
   if (flags.write_failed != 0) {
     if (root) std::fprintf(stderr, "%s: %s\n", fluid_mpi::kApp, write_error.c_str());
@@ -236,8 +310,11 @@ int relax(const MpiOptions& mo, const Settings& s, int block, const ProcessGrid&
     return app::kExitFailed;
   }
   if (result.stop == RelaxStop::kInterrupted) {
-    spdlog::warn("stopped by {} after step {} (t = {}): wrote the outputs to {}",
-                 app::StopSignals::name(flags.signal), at.k, at.t, s.out.string());
+    spdlog::warn(
+        "stopped by {} after step {} (t = {}): wrote the outputs and a checkpoint to {}; "
+        "continue with: mpirun -np {} fluid-relax-mpi --resume {}",
+        app::StopSignals::name(flags.signal), at.k, at.t, s.out.string(), grid.size(),
+        s.out.string());
     return app::StopSignals::exitStatus(flags.signal);
   }
   spdlog::info("{} at step {}, t = {}: spectrum drift <= {:.2e}, {:.3g} s; wrote {}",
@@ -263,13 +340,10 @@ int run(int argc, char** argv, const ProcessGrid& grid) {
   if (status) return *status;
   app::setupLogging(o.relax.log);
   if (grid.rank() != 0) spdlog::set_level(spdlog::level::off);
-  int block = 0;
-  const Settings s = mpiSettings(cli, o, grid, block);
-  int result = relax(o, s, block, grid);
-  if (result == app::kExitOk && o.relax.plot && grid.rank() == 0) {
-    result = app::runPlotScript(DDB_PLOT_SCRIPT, s.out);
-  }
-  return result;
+  MpiRun run = mpiRun(cli, o, grid);
+  const int result = relax(run, grid);
+  if (grid.rank() != 0) return result;
+  return makeFigures(run.options, run.settings.out, result, DDB_PLOT_SCRIPT, DDB_ANIMATE_SCRIPT);
 }
 
 }  // namespace

@@ -20,14 +20,51 @@ void refuseUnsupported(const CLI::App& cli, const fluid::Options& o) {
   if (o.method != "ddb-cay") {
     app::usageError("--method", o.method, "fluid-relax-mpi runs ddb-cay only");
   }
-  for (const char* flag :
-       {"--adaptive", "--newton", "--checkpoint-every", "--resume", "--h5", "--animate"}) {
+  for (const char* flag : {"--adaptive", "--newton"}) {
     if (cli.count(flag) > 0) {
       throw app::UsageError(std::string(flag) +
                             ": not available in fluid-relax-mpi (docs/distributed.md); run "
                             "fluid-relax for it");
     }
   }
+}
+
+// A checkpoint of a run this app cannot continue (fluid-relax's other methods, --adaptive,
+// --newton) is refused naming --resume.
+void refuseForeignRun(const std::string& dir, const fluid::Checkpoint& c) {
+  std::string what;
+  if (c.settings.relax.newton) {
+    what = "--newton";
+  } else if (c.options.method != "ddb-cay") {
+    what = "--method " + c.options.method;
+  } else if (c.settings.relax.control.adaptive) {
+    what = "--adaptive";
+  }
+  if (!what.empty()) {
+    app::usageError("--resume", dir,
+                    "its run used " + what +
+                        ", which fluid-relax-mpi does not have (docs/distributed.md); resume it "
+                        "with fluid-relax");
+  }
+}
+
+// The checkpoint's bytes on every rank: read by rank 0 and broadcast, so that every rank
+// reads the same record whatever file systems the ranks see.
+std::string broadcastCheckpointBytes(const ProcessGrid& grid, const std::string& dir) {
+  std::string bytes;
+  if (const int status = onRankZero(grid, [&] { bytes = fluid::readCheckpointBytes(dir); })) {
+    throw Reported{status};
+  }
+  unsigned long long size = bytes.size();
+  MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG_LONG, 0, grid.comm());
+  bytes.resize(size);
+  // In pieces whose count fits MPI's int.
+  constexpr unsigned long long kPiece = 1ULL << 30;
+  for (unsigned long long at = 0; at < size; at += kPiece) {
+    MPI_Bcast(bytes.data() + at, static_cast<int>(std::min(kPiece, size - at)), MPI_CHAR, 0,
+              grid.comm());
+  }
+  return bytes;
 }
 
 int readBlock(const MpiOptions& o, const ProcessGrid& grid, long n) {
@@ -90,30 +127,53 @@ void addMpiOptions(CLI::App& cli, MpiOptions& o) {
   cli.footer(
       "\nfluid-relax-mpi is fluid-relax's ddb-cay relaxation with every N x N matrix "
       "distributed over the MPI ranks\n(docs/distributed.md): start it with mpirun -np P. "
-      "Not available here: --method other than ddb-cay,\n--adaptive, --newton, "
-      "--checkpoint-every, --resume, --h5, --animate.\n\nInitial vorticities (--init; all "
+      "Not available here: --method other than ddb-cay,\n--adaptive, --newton.\n\nInitial "
+      "vorticities (--init; all "
       "scaled to ||W||_F = sqrt(N), seeded by --seed):\n" +
       app::describeChoices(app::initDescriptions()) +
       "\nFiles in --out (written by rank 0): history.csv, W_final.csv, omega_initial.csv, "
-      "omega_final.csv, summary.json\n(docs/file-formats.md). Exit status: 0 ok, 1 a step "
-      "failed or a file could not be written, 2 bad input\n(nothing written), 130/143 "
-      "stopped by SIGINT/SIGTERM (outputs written).\n");
+      "omega_final.csv, summary.json,\ncheckpoint.ddb (fluid-relax's: either app resumes "
+      "it), fluid.hdf5 with --h5 or --animate\n(docs/file-formats.md). Exit status: 0 ok, 1 "
+      "a step failed or a file could not be written, 2 bad input\n(nothing written), 130/143 "
+      "stopped by SIGINT/SIGTERM (outputs and a checkpoint written).\n");
 }
 
-fluid::Settings mpiSettings(const CLI::App& cli, const MpiOptions& o, const ProcessGrid& grid,
-                            int& block) {
-  fluid::Settings s;
-  const int agreed = runAndAgree(grid, true, [&] {
-    refuseUnsupported(cli, o.relax);
-    s = fluid::settings(cli, o.relax, kMaxN);
-    block = readBlock(o, grid, s.W0.rows());
+MpiRun mpiRun(const CLI::App& cli, const MpiOptions& o, const ProcessGrid& grid) {
+  MpiRun run;
+  if (const int status = onEveryRank(grid, [&] { refuseUnsupported(cli, o.relax); })) {
+    throw Reported{status};
+  }
+  if (!o.relax.resume.empty()) {
+    std::string bytes = broadcastCheckpointBytes(grid, o.relax.resume);
+    const int status = onEveryRank(grid, [&] {
+      fluid::Checkpoint c = fluid::parseCheckpoint(o.relax.resume, std::move(bytes));
+      refuseForeignRun(o.relax.resume, c);
+      fluid::resumeSettings(cli, o.relax, c);
+      run.options = c.options;
+      run.given = c.given;
+      run.settings = c.settings;
+      run.block = readBlock(o, grid, run.settings.W0.rows());
+      run.resume.emplace(std::move(c));
+    });
+    if (status != 0) throw Reported{status};
+    return run;
+  }
+  const int status = onEveryRank(grid, [&] {
+    run.options = o.relax;
+    run.given = fluid::givenFlags(cli);
+    run.settings = fluid::settings(cli, o.relax, kMaxN);
+    run.block = readBlock(o, grid, run.settings.W0.rows());
   });
-  if (agreed != 0) throw Reported{agreed};
-  return s;
+  if (status != 0) throw Reported{status};
+  return run;
 }
 
 int onRankZero(const ProcessGrid& grid, const std::function<void()>& job) {
   return runAndAgree(grid, grid.rank() == 0, job);
+}
+
+int onEveryRank(const ProcessGrid& grid, const std::function<void()>& job) {
+  return runAndAgree(grid, true, job);
 }
 
 }  // namespace ddb::fluid_mpi

@@ -1,5 +1,6 @@
 // fluid-relax-mpi's input (docs/distributed.md, "fluid-relax-mpi"): fluid-relax's command
-// line and checks (fluid_relax/input.h) with --block, less the flags it refuses, and the
+// line and checks (fluid_relax/input.h, and fluid_relax/checkpoint.h for --resume) with
+// --block, less the flags it refuses, and the
 // agreement of all ranks on the outcome: every rank checks the same input, and a rank that
 // refuses it (a file only it cannot read) refuses it for all.
 #pragma once
@@ -9,8 +10,10 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <optional>
 #include <string>
 
+#include "fluid_relax/checkpoint.h"
 #include "fluid_relax/input.h"
 #include "fluid_relax/options.h"
 
@@ -38,14 +41,29 @@ struct MpiOptions {
 /// fluid-relax's options with --block and this app's --help footer.
 void addMpiOptions(CLI::App& cli, MpiOptions& o);
 
-/// The checks of fluid::settings(), the refused flags and --block, on every rank; bad input
-/// on any rank is Reported{2} on every rank (printed by the lowest such rank), so that no
-/// rank goes on alone. `block` is set on success.
-fluid::Settings mpiSettings(const CLI::App& cli, const MpiOptions& o, const ProcessGrid& grid,
-                            int& block);
+/// The run a command line asks for, the same on every rank: a new run's options and
+/// settings, or (--resume DIR) the resumed run's recorded ones with its checkpoint, as
+/// fluid-relax makes them (fluid::resumeSettings).
+struct MpiRun {
+  fluid::Options options;
+  fluid::GivenFlags given;
+  fluid::Settings settings;
+  std::optional<fluid::Checkpoint> resume;
+  int block = 0;
+};
+
+/// The checks of fluid::settings() (or of fluid-relax's --resume: rank 0 reads the checkpoint
+/// and broadcasts its bytes, every rank reads them), the refused flags and --block, on every
+/// rank; bad input on any rank is Reported{2} on every rank (printed by the lowest such
+/// rank), so that no rank goes on alone.
+MpiRun mpiRun(const CLI::App& cli, const MpiOptions& o, const ProcessGrid& grid);
 
 /// Runs `job` on rank 0 and agrees on its outcome: a UsageError (status 2) or any other
 /// exception (status 1) there is printed by rank 0 and returned on every rank; 0 if it ran.
 int onRankZero(const ProcessGrid& grid, const std::function<void()>& job);
+
+/// Runs `job` on every rank and agrees on the outcomes likewise (printed by the lowest rank
+/// of the worst one).
+int onEveryRank(const ProcessGrid& grid, const std::function<void()>& job);
 
 }  // namespace ddb::fluid_mpi
