@@ -103,10 +103,11 @@ class SphericalHarmonicBasis {
     return W;
   }
 
+ private:
   /// Workspaces of eigenvectors(), reused from block to block.
   struct TwistedFactors {
     Eigen::ArrayXXd plus, minus;  // (eigenvalue, row): the pivots D₊, D₋
-    Eigen::ArrayXd smallest, twist;
+    Eigen::ArrayXd smallest, twist, gamma;
   };
 
   /// The eigenvectors (unnormalised rows of `z`) of the symmetric tridiagonal
@@ -143,10 +144,10 @@ class SphericalHarmonicBasis {
     f.twist.setZero(count);
     f.smallest.setConstant(count, INFINITY);
     for (Eigen::Index k = 0; k < n; ++k) {
-      const Eigen::ArrayXd gamma = (f.plus.col(k) + f.minus.col(k) - (diagonal(k) - lambda)).abs();
+      f.gamma = (f.plus.col(k) + f.minus.col(k) - (diagonal(k) - lambda)).abs();
       for (Eigen::Index j = 0; j < count; ++j) {
-        if (gamma(j) < f.smallest(j)) {
-          f.smallest(j) = gamma(j);
+        if (f.gamma(j) < f.smallest(j)) {
+          f.smallest(j) = f.gamma(j);
           f.twist(j) = double(k);
         }
       }
@@ -170,7 +171,6 @@ class SphericalHarmonicBasis {
     }
   }
 
- private:
   struct Workspace {
     TwistedFactors factors;
     Eigen::ArrayXd lambda;
