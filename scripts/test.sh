@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Sets everything up, builds in Release and runs the whole test suite through ctest;
 # then uses the library the two ways others do: installed into a temporary prefix
-# (both examples/ configured with find_package, built and run; each exits non-zero
-# if its check fails) and added with add_subdirectory by tests/subproject_consumer.
+# (the examples/ configured with find_package, built and run, examples/distributed under
+# mpiexec when the distributed layer was built; each exits non-zero if its check fails)
+# and added with add_subdirectory by tests/subproject_consumer.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -20,6 +21,18 @@ for example in custom_system hamiltonian_observer; do
   cmake --build "$scratch/$example" -j2
   "$scratch/$example/app"
 done
+# The distributed layer's example on 2 ranks, with the environment of the MPI tests in ctest
+# (tests/CMakeLists.txt): root allowed, oversubscribed, idle ranks yield, one BLAS thread.
+if [[ -f "$scratch/prefix/share/ddb/cmake/ddbDistributedTargets.cmake" ]]; then
+  echo "== examples/distributed against the installed package, on 2 ranks"
+  cmake -S examples/distributed -B "$scratch/distributed" -DCMAKE_BUILD_TYPE=Release \
+        -DCMAKE_PREFIX_PATH="$scratch/prefix"
+  cmake --build "$scratch/distributed" -j2
+  OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 \
+    OMPI_MCA_mpi_yield_when_idle=1 OPENBLAS_NUM_THREADS=1 mpiexec -n 2 "$scratch/distributed/app"
+else
+  echo "== examples/distributed skipped: the distributed layer was not built (docs/distributed.md)"
+fi
 
 # Debug catches a build type overwritten unconditionally, the empty one a default
 # imposed on the parent; the disabled packages make any REQUIRED lookup of them fail.
