@@ -74,6 +74,11 @@ class BinaryRecordReader {
  public:
   /// Reads `bytes` as written by BinaryRecordWriter::bytes().
   explicit BinaryRecordReader(std::string bytes) : bytes_(std::move(bytes)) {}
+  BinaryRecordReader(const BinaryRecordReader&) = default;
+  BinaryRecordReader(BinaryRecordReader&&) = default;
+  BinaryRecordReader& operator=(const BinaryRecordReader&) = default;
+  BinaryRecordReader& operator=(BinaryRecordReader&&) = default;
+  virtual ~BinaryRecordReader() = default;
   /// Reads a sealed record: checks and strips the checksum.
   static BinaryRecordReader unseal(std::string sealed) {
     std::uint64_t sum = 0;
@@ -95,8 +100,8 @@ class BinaryRecordReader {
     if constexpr (std::is_same_v<T, std::string>) {
       const auto size = get<std::uint64_t>();
       require(size);
-      std::string text(bytes_.data() + at_, size);
-      at_ += size;
+      std::string text(size, '\0');
+      take(text.data(), size);
       return text;
     } else {
       static_assert(std::is_arithmetic_v<T>, "get<T>: a number or a string");
@@ -127,20 +132,32 @@ class BinaryRecordReader {
     take(m.data(), bytes);
   }
   /// Whether every byte was read.
-  bool atEnd() const { return at_ == bytes_.size(); }
+  virtual bool atEnd() const { return at_ == bytes_.size(); }
   void expectEnd() const {
     if (!atEnd()) throw CorruptRecord("unexpected bytes after the record's end");
   }
 
- private:
-  void require(std::size_t size) const {
-    if (size > bytes_.size() - at_) throw CorruptRecord("ends early");
+ protected:
+  // Where the bytes come from: this reader's own. A reader of a record that one process of
+  // several holds (distributed/rank_zero_record_reader.h) overrides them and atEnd, so that the
+  // layouts' readers (get, expectTag) serve it unchanged.
+  /// Fails unless `size` more bytes are there to read.
+  virtual void require(std::size_t size) const {
+    if (!holds(size)) throw CorruptRecord("ends early");
   }
-  void take(void* out, std::size_t size) {
+  /// Copies the next `size` bytes into `out`.
+  virtual void take(void* out, std::size_t size) {
     require(size);
+    takeHere(out, size);
+  }
+  bool holds(std::size_t size) const { return size <= bytes_.size() - at_; }
+  /// The next `size` bytes of this reader's own, which the caller checked with holds().
+  void takeHere(void* out, std::size_t size) {
     std::memcpy(out, bytes_.data() + at_, size);
     at_ += size;
   }
+
+ private:
   std::string bytes_;
   std::size_t at_ = 0;
 };

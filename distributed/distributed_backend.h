@@ -13,6 +13,7 @@
 #include <ddb/distributed/distributed_inverse.h>
 #include <ddb/distributed/distributed_matrix.h>
 #include <ddb/distributed/distributed_product.h>
+#include <ddb/distributed/rank_zero_record_reader.h>
 #include <ddb/distributed/scalapack.h>
 #include <mpi.h>
 
@@ -20,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -113,14 +115,14 @@ struct MatrixBackend<DistributedMatrix> {
   /// x, gathered whole, into rank 0's record; the other ranks' records get an empty matrix
   /// (only rank 0's is written: docs/distributed.md, "Checkpoints").
   static void save(BinaryRecordWriter& out, const X& x) { out.put(x.gather()); }
-  /// x ← the whole matrix that every rank's copy of the record holds (each keeps its blocks).
+  /// x ← the whole matrix of rank 0's record, scattered: the record is read on every rank
+  /// through a RankZeroRecordReader, so that only rank 0 holds it whole.
   static void load(BinaryRecordReader& in, X& x) {
-    Eigen::MatrixXcd whole;
-    in.get(whole);
-    if (whole.rows() != x.size() || whole.cols() != x.size()) {
-      throw CorruptRecord("a matrix of another size than the state");
+    auto* shared = dynamic_cast<RankZeroRecordReader*>(&in);
+    if (shared == nullptr) {
+      throw std::logic_error("a distributed matrix is read through a RankZeroRecordReader");
     }
-    x.assignBlocksOf(whole);
+    shared->getDistributed(x);
   }
 
  private:

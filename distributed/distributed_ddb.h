@@ -28,8 +28,8 @@ class DistributedDdb {
   /// whole into rank 0's record; MatrixBackend<DistributedMatrix>::save), so that a resumed
   /// run continues the uninterrupted one to the bit (docs/distributed.md, "Checkpoints").
   void saveWarmStart(BinaryRecordWriter& out) const { legendre_.saveWarmStart(out); }
-  /// Restores it from every rank's copy of such a record, dense or distributed, for states
-  /// of `layout`.
+  /// Restores it from such a record, dense or distributed, held by rank 0 and read on every
+  /// rank through a RankZeroRecordReader, for states of `layout`.
   void loadWarmStart(BinaryRecordReader& in, const BlockCyclicLayout& layout) {
     legendre_.loadWarmStart(in, DistributedMatrix(layout));
   }

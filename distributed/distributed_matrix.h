@@ -61,14 +61,6 @@ class DistributedMatrix {
     copy(grid.rank() == 0 ? global.data() : &empty_, whole.descriptor(), data(), descriptor());
   }
 
-  /// This rank's blocks of `whole`, which every rank holds (no communication).
-  void assignBlocksOf(const Eigen::MatrixXcd& whole) {
-    for (int l = 0; l < layout_.localCols(); ++l) {
-      const int j = layout_.globalCol(l);
-      for (int m = 0; m < layout_.localRows(); ++m) local_(m, l) = whole(layout_.globalRow(m), j);
-    }
-  }
-
   /// The whole matrix on rank 0 (an empty matrix on the other ranks).
   Eigen::MatrixXcd gather() const {
     const BlockCyclicLayout whole(layout_.grid(), size(), size());

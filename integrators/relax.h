@@ -11,6 +11,7 @@
 #include <ddb/core/binary_record.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/lie_poisson_system.h>
+#include <ddb/core/matrix_backend.h>
 #include <ddb/integrators/energy_step_control.h>
 #include <ddb/integrators/one_step_method.h>
 #include <ddb/integrators/orbit_newton.h>
@@ -105,9 +106,9 @@ struct StepTimes {
 
 /// Relaxation's record (Relaxation::save) up to its step control: the accepted state's
 /// record, the state, the steps rejected and the step times. A caller that takes the steps
-/// itself (fluid-relax-mpi, on distributed states gathered whole for this) writes it, then
-/// EnergyStepControl::save and the method's warm start, and so writes Relaxation's record
-/// (docs/file-formats.md, "Checkpoints").
+/// itself (fluid-relax-mpi, on distributed states, which MatrixBackend::save gathers whole)
+/// writes it, then EnergyStepControl::save and the method's warm start, and so writes
+/// Relaxation's record (docs/file-formats.md, "Checkpoints").
 template <class Dual>
 void saveRelaxCursor(BinaryRecordWriter& out, const RelaxState& s, const Dual& state,
                      long steps_rejected, const StepTimes& times) {
@@ -117,17 +118,19 @@ void saveRelaxCursor(BinaryRecordWriter& out, const RelaxState& s, const Dual& s
   out.put(s.h);
   out.put(s.energy);
   out.put(s.residual);
-  out.put(state);
+  MatrixBackend<Dual>::save(out, state);
   out.put(steps_rejected);
   out.put(times.t_start);
   out.put(times.h);
   out.put(times.j);
 }
 
-/// Reads what saveRelaxCursor wrote, for a state of `state`'s size; throws CorruptRecord.
+/// Reads what saveRelaxCursor wrote, for a state of `state`'s size (and, distributed, layout:
+/// MatrixBackend::load); throws CorruptRecord.
 template <class Dual>
 void loadRelaxCursor(BinaryRecordReader& in, RelaxState& s, Dual& state, long& steps_rejected,
                      StepTimes& times) {
+  using B = MatrixBackend<Dual>;
   in.expectTag("relaxation");
   in.get(s.k);
   in.get(s.t);
@@ -135,11 +138,13 @@ void loadRelaxCursor(BinaryRecordReader& in, RelaxState& s, Dual& state, long& s
   in.get(s.energy);
   in.get(s.residual);
   Dual mu = state;
-  in.get(mu);
-  if (mu.rows() != state.rows() || mu.cols() != state.cols() || !mu.allFinite() || s.k < 0) {
-    throw CorruptRecord("a relaxation state of another size, negative index or not finite");
+  B::load(in, mu);
+  // Not finite: its Frobenius norm, which every rank of a distributed state agrees on, is NaN
+  // or inf (a state so large that its norm overflows is refused too).
+  if (!std::isfinite(B::frobeniusNorm(mu)) || s.k < 0) {
+    throw CorruptRecord("a relaxation state with a negative index or not finite");
   }
-  state = mu;
+  state = std::move(mu);
   in.get(steps_rejected);
   in.get(times.t_start);
   in.get(times.h);

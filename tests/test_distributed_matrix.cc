@@ -1,13 +1,19 @@
 // The distributed matrix layer (docs/distributed.md) on 1–4 ranks: the process grid's
 // shape, scatter and gather against the block-cyclic layout of ScaLAPACK's users' guide,
-// and pzgemm_'s product and pzlange_'s Frobenius norm against Eigen's.
+// pzgemm_'s product and pzlange_'s Frobenius norm against Eigen's, and a record held by
+// rank 0 read on every rank (RankZeroRecordReader).
+#include <ddb/core/binary_record.h>
 #include <ddb/core/errors.h>
+#include <ddb/distributed/distributed_backend.h>
 #include <ddb/distributed/distributed_matrix.h>
 #include <ddb/distributed/distributed_product.h>
 #include <ddb/distributed/process_grid.h>
+#include <ddb/distributed/rank_zero_record_reader.h>
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <map>
+#include <string>
 #include <tuple>
 #include <utility>
 
@@ -100,6 +106,55 @@ TEST_P(DistributedMatrixTest, ProductRefusesMismatchedBlocks) {
   DistributedMatrix a(grid_, n(), block()), b(grid_, n(), block() + 1), c(grid_, n(), block());
   EXPECT_THROW(multiply(a, b, c), InvalidArgument);
   EXPECT_THROW(multiply(a, a, a), InvalidArgument);
+}
+
+// A record held by rank 0 alone, read on every rank: the numbers, the string and the small
+// matrix as rank 0 wrote them, and the whole matrix as this rank's blocks of a scatter (the
+// placement checked above).
+TEST_P(DistributedMatrixTest, RankZeroRecordReaderGivesEveryRankTheRecord) {
+  const Eigen::MatrixXcd a = randomComplexMatrix(n(), 41);
+  const Eigen::MatrixXd small = Eigen::MatrixXd::Random(3, 2);
+  BinaryRecordWriter out;
+  if (grid_.rank() == 0) {
+    out.tag("part");
+    out.put(2.5);
+    out.put(std::string("text"));
+    out.put(small);
+    out.put(a);
+    out.put(std::int64_t{7});
+  }
+  RankZeroRecordReader in(grid_, BinaryRecordReader(out.bytes()));
+  in.expectTag("part");
+  EXPECT_EQ(in.get<double>(), 2.5);
+  EXPECT_EQ(in.get<std::string>(), "text");
+  Eigen::MatrixXd read_small;
+  in.get(read_small);
+  EXPECT_TRUE(read_small == small);
+  DistributedMatrix x(grid_, n(), block()), scattered(grid_, n(), block());
+  MatrixBackend<DistributedMatrix>::load(in, x);
+  scattered.scatterFrom(a);
+  EXPECT_TRUE(x.local() == scattered.local());
+  EXPECT_FALSE(in.atEnd());
+  EXPECT_EQ(in.get<std::int64_t>(), 7);
+  EXPECT_TRUE(in.atEnd());
+}
+
+// A record that holds a matrix of another size, or ends early, fails on every rank alike
+// (each rank throws; none is left waiting in a broadcast).
+TEST_P(DistributedMatrixTest, RankZeroRecordReaderFailsOnEveryRank) {
+  BinaryRecordWriter other_size, truncated;
+  if (grid_.rank() == 0) {
+    other_size.put(randomComplexMatrix(n() + 1, 42));
+    truncated.put(randomComplexMatrix(n(), 43));
+  }
+  DistributedMatrix x(grid_, n(), block());
+  RankZeroRecordReader wrong(grid_, BinaryRecordReader(other_size.bytes()));
+  EXPECT_THROW(MatrixBackend<DistributedMatrix>::load(wrong, x), CorruptRecord);
+  const std::string cut = truncated.bytes().substr(0, truncated.bytes().size() / 2);
+  RankZeroRecordReader short_record(grid_, BinaryRecordReader(cut));
+  EXPECT_THROW(MatrixBackend<DistributedMatrix>::load(short_record, x), CorruptRecord);
+  RankZeroRecordReader empty(grid_, BinaryRecordReader(""));
+  EXPECT_THROW(empty.get<double>(), CorruptRecord);
 }
 
 INSTANTIATE_TEST_SUITE_P(SizesAndBlocks, DistributedMatrixTest,

@@ -300,14 +300,18 @@ nlohmann::ordered_json summaryWithoutRuntime(const fs::path& out) {
   return summary;
 }
 
-TEST(FluidRelaxMpiCheckpoint, ResumedRunContinuesTheUninterruptedOneToTheBit) {
+// A run of 40 steps against one of 20 resumed to 40, on `ranks` ranks with the flags
+// `layout` (--block, or none) and of size `n`: every file the same bytes.
+void expectResumedRunToTheBit(int ranks, int n, const std::string& layout) {
   const fs::path whole = freshFolder("ddb_mpi_", "whole");
   const fs::path resumed = freshFolder("ddb_mpi_", "resumed");
-  const AppResult a = runMpi(2, kResumable + " --n 16 --steps 40 --out " + whole.string());
+  const std::string run = kResumable + " --n " + std::to_string(n) + layout;
+  const AppResult a = runMpi(ranks, run + " --steps 40 --out " + whole.string());
   ASSERT_EQ(a.status, 0) << a.output;
-  const AppResult b = runMpi(2, kResumable + " --n 16 --steps 20 --out " + resumed.string());
+  const AppResult b = runMpi(ranks, run + " --steps 20 --out " + resumed.string());
   ASSERT_EQ(b.status, 0) << b.output;
-  const AppResult c = runMpi(2, "--quiet --steps 40 --resume " + resumed.string());
+  const AppResult c =
+      runMpi(ranks, "--quiet --steps 40" + layout + " --resume " + resumed.string());
   ASSERT_EQ(c.status, 0) << c.output;
   for (const char* file :
        {"history.csv", "W_final.csv", "omega_initial.csv", "omega_final.csv", "checkpoint.ddb"}) {
@@ -318,6 +322,17 @@ TEST(FluidRelaxMpiCheckpoint, ResumedRunContinuesTheUninterruptedOneToTheBit) {
   EXPECT_EQ(readFrames(whole).step.size(), 15u);  // rows 0, 3, ..., 39 and 40
   fs::remove_all(whole);
   fs::remove_all(resumed);
+}
+
+TEST(FluidRelaxMpiCheckpoint, ResumedRunContinuesTheUninterruptedOneToTheBit) {
+  expectResumedRunToTheBit(2, 16, "");
+}
+
+// On a 2×2 grid with blocks of 5 that do not divide N = 33 (partial blocks in both
+// directions): the state and the warm start's corrections, scattered from rank 0's record
+// on resume, must land on the blocks they came from.
+TEST(FluidRelaxMpiCheckpoint, ResumedRunOnAGridOfBlocksContinuesToTheBit) {
+  expectResumedRunToTheBit(4, 33, " --block 5");
 }
 
 // A checkpoint of either app resumed by the other: the runs end where the uninterrupted

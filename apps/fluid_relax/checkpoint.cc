@@ -52,9 +52,26 @@ void getOptions(BinaryRecordReader& in, Options& o) {
   in.get(o.animate);
 }
 
-void putSettings(BinaryRecordWriter& out, const Settings& s) {
-  out.tag("settings");
-  out.put(s.W0);
+void putGivenFlags(BinaryRecordWriter& out, const GivenFlags& given) {
+  out.tag("given flags");
+  out.put(static_cast<std::uint64_t>(given.size()));
+  for (const auto& [flag, text] : given) {
+    out.put(flag);
+    out.put(text);
+  }
+}
+
+void getGivenFlags(BinaryRecordReader& in, GivenFlags& given) {
+  in.expectTag("given flags");
+  const auto count = in.get<std::uint64_t>();
+  for (std::uint64_t i = 0; i < count; ++i) {
+    std::string flag = in.get<std::string>();
+    given[flag] = in.get<std::string>();
+  }
+}
+
+// The settings but W₀ (which the record holds before them).
+void putSettingsBesidesW0(BinaryRecordWriter& out, const Settings& s) {
   out.put(s.alpha);
   out.put(s.h);
   out.put(s.default_h);
@@ -68,9 +85,7 @@ void putSettings(BinaryRecordWriter& out, const Settings& s) {
   out.put(s.init);
 }
 
-void getSettings(BinaryRecordReader& in, Settings& s) {
-  in.expectTag("settings");
-  in.get(s.W0);
+void getSettingsBesidesW0(BinaryRecordReader& in, Settings& s) {
   in.get(s.alpha);
   in.get(s.h);
   in.get(s.default_h);
@@ -82,9 +97,64 @@ void getSettings(BinaryRecordReader& in, Settings& s) {
   in.get(s.relax.control.tolerance);
   in.get(s.relax.newton);
   in.get(s.init);
-  if (s.W0.rows() < 2 || s.W0.rows() != s.W0.cols() || !(s.h > 0)) {
+  if (!(s.h > 0)) throw CorruptRecord("settings out of their domain");
+}
+
+void putSettings(BinaryRecordWriter& out, const Settings& s) {
+  out.tag("settings");
+  out.put(s.W0);
+  putSettingsBesidesW0(out, s);
+}
+
+void getSettings(BinaryRecordReader& in, Settings& s) {
+  in.expectTag("settings");
+  in.get(s.W0);
+  getSettingsBesidesW0(in, s);
+  if (s.W0.rows() < 2 || s.W0.rows() != s.W0.cols()) {
     throw CorruptRecord("settings out of their domain");
   }
+}
+
+std::string readCheckpointBytes(const std::string& dir) {
+  const std::filesystem::path path = std::filesystem::path(dir) / kCheckpointFile;
+  std::ifstream file(path, std::ios::binary);
+  if (!file) app::usageError("--resume", dir, "no checkpoint to resume from: " + path.string());
+  std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  if (file.bad()) app::usageError("--resume", dir, "cannot read " + path.string());
+  return bytes;
+}
+
+// The checkpoint in `bytes`, read from DIR for `--resume DIR`; a truncated or corrupted one
+// (its checksum) is a UsageError naming --resume and the file.
+Checkpoint parseCheckpoint(const std::string& dir, std::string bytes) {
+  const std::filesystem::path path = std::filesystem::path(dir) / kCheckpointFile;
+  Checkpoint c;
+  try {
+    BinaryRecordReader in = BinaryRecordReader::unseal(std::move(bytes));
+    in.expectTag(kTag);
+    const auto layout = in.get<std::int32_t>();
+    if (layout != kLayout) {
+      throw CorruptRecord("layout " + std::to_string(layout) + ", this build reads " +
+                          std::to_string(kLayout));
+    }
+    getOptions(in, c.options);
+    getGivenFlags(in, c.given);
+    getSettings(in, c.settings);
+    in.expectTag("tally");
+    in.get(c.tally.drift);
+    in.get(c.tally.drift_max);
+    in.get(c.tally.iterations_total);
+    in.get(c.tally.iterations_max);
+    c.tally.rises.load(in);
+    in.expectTag("files");
+    in.get(c.history_bytes);
+    in.get(c.h5_frames);
+    c.relaxation = std::move(in);
+  } catch (const CorruptRecord& corrupt) {
+    app::usageError("--resume", dir,
+                    path.string() + " is corrupt (" + corrupt.what() + "): refusing to use it");
+  }
+  return c;
 }
 
 }  // namespace
@@ -110,12 +180,7 @@ BinaryRecordWriter beginCheckpoint(const Options& o, const GivenFlags& given, co
   record.tag(kTag);
   record.put(kLayout);
   putOptions(record, o);
-  record.tag("given flags");
-  record.put(static_cast<std::uint64_t>(given.size()));
-  for (const auto& [flag, text] : given) {
-    record.put(flag);
-    record.put(text);
-  }
+  putGivenFlags(record, given);
   putSettings(record, s);
   record.tag("tally");
   record.put(tally.drift);
@@ -129,78 +194,47 @@ BinaryRecordWriter beginCheckpoint(const Options& o, const GivenFlags& given, co
   return record;
 }
 
-void writeCheckpoint(const std::filesystem::path& out, const BinaryRecordWriter& record) {
-  app::writeFileAtomically(out / kCheckpointFile, record.sealed());
+void putRunDefinition(BinaryRecordWriter& out, const Options& o, const GivenFlags& given,
+                      const Settings& s) {
+  putOptions(out, o);
+  putGivenFlags(out, given);
+  putSettingsBesidesW0(out, s);
 }
 
-std::string readCheckpointBytes(const std::string& dir) {
-  const std::filesystem::path path = std::filesystem::path(dir) / kCheckpointFile;
-  std::ifstream file(path, std::ios::binary);
-  if (!file) app::usageError("--resume", dir, "no checkpoint to resume from: " + path.string());
-  std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  if (file.bad()) app::usageError("--resume", dir, "cannot read " + path.string());
-  return bytes;
+void getRunDefinition(BinaryRecordReader& in, Options& o, GivenFlags& given, Settings& s) {
+  getOptions(in, o);
+  getGivenFlags(in, given);
+  getSettingsBesidesW0(in, s);
+}
+
+void writeCheckpoint(const std::filesystem::path& out, const BinaryRecordWriter& record) {
+  app::writeFileAtomically(out / kCheckpointFile, record.sealed());
 }
 
 Checkpoint readCheckpoint(const std::string& dir) {
   return parseCheckpoint(dir, readCheckpointBytes(dir));
 }
 
-Checkpoint parseCheckpoint(const std::string& dir, std::string bytes) {
-  const std::filesystem::path path = std::filesystem::path(dir) / kCheckpointFile;
-  Checkpoint c;
-  try {
-    BinaryRecordReader in = BinaryRecordReader::unseal(std::move(bytes));
-    in.expectTag(kTag);
-    const auto layout = in.get<std::int32_t>();
-    if (layout != kLayout) {
-      throw CorruptRecord("layout " + std::to_string(layout) + ", this build reads " +
-                          std::to_string(kLayout));
-    }
-    getOptions(in, c.options);
-    in.expectTag("given flags");
-    const auto count = in.get<std::uint64_t>();
-    for (std::uint64_t i = 0; i < count; ++i) {
-      std::string flag = in.get<std::string>();
-      c.given[flag] = in.get<std::string>();
-    }
-    getSettings(in, c.settings);
-    in.expectTag("tally");
-    in.get(c.tally.drift);
-    in.get(c.tally.drift_max);
-    in.get(c.tally.iterations_total);
-    in.get(c.tally.iterations_max);
-    c.tally.rises.load(in);
-    in.expectTag("files");
-    in.get(c.history_bytes);
-    in.get(c.h5_frames);
-    c.relaxation = std::move(in);
-  } catch (const CorruptRecord& corrupt) {
-    app::usageError("--resume", dir,
-                    path.string() + " is corrupt (" + corrupt.what() + "): refusing to use it");
-  }
-  return c;
-}
-
-void resumeRelaxation(Checkpoint& c, const std::string& dir,
+void resumeRelaxation(BinaryRecordReader& relaxation, const RelaxOptions& caps,
+                      const std::string& dir,
                       const std::function<RelaxState(BinaryRecordReader&)>& load) {
   RelaxState at;
   try {
-    at = load(c.relaxation);
-    c.relaxation.expectEnd();
+    at = load(relaxation);
+    relaxation.expectEnd();
   } catch (const CorruptRecord& corrupt) {
     app::usageError(
         "--resume", dir,
         std::string(kCheckpointFile) + " is corrupt (" + corrupt.what() + "): refusing to use it");
   }
-  const bool time_capped = std::isfinite(c.settings.relax.t_end);
-  if (!time_capped && at.k >= c.settings.relax.max_steps) {
+  const bool time_capped = std::isfinite(caps.t_end);
+  if (!time_capped && at.k >= caps.max_steps) {
     app::usageError("--resume", dir,
                     fmt::format("the run has taken {} steps, its cap {}; give a larger --steps "
                                 "or --t-end",
-                                at.k, c.settings.relax.max_steps));
+                                at.k, caps.max_steps));
   }
-  if (time_capped && at.t >= c.settings.relax.t_end * (1 - 1e-12)) {
+  if (time_capped && at.t >= caps.t_end * (1 - 1e-12)) {
     app::usageError("--resume", dir,
                     fmt::format("the run has reached t = {}, its cap; give a larger --t-end or "
                                 "--steps",

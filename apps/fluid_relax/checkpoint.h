@@ -60,22 +60,24 @@ BinaryRecordWriter beginCheckpoint(const Options& o, const GivenFlags& given, co
 /// Writes OUT/checkpoint.ddb atomically; throws IoError naming it.
 void writeCheckpoint(const std::filesystem::path& out, const BinaryRecordWriter& record);
 
-/// The bytes of DIR/checkpoint.ddb for `--resume DIR`; a missing or unreadable one is a
-/// UsageError naming --resume and the file.
-std::string readCheckpointBytes(const std::string& dir);
+/// The options, the given flags and the settings but W₀, written and read as the checkpoint
+/// writes and reads them: what fluid-relax-mpi's rank 0 sends the other ranks, which hold
+/// no W₀ (docs/distributed.md, "Memory per rank").
+void putRunDefinition(BinaryRecordWriter& out, const Options& o, const GivenFlags& given,
+                      const Settings& s);
+void getRunDefinition(BinaryRecordReader& in, Options& o, GivenFlags& given, Settings& s);
 
-/// The checkpoint in `bytes`, read from DIR for `--resume DIR`; a truncated or corrupted one
+/// DIR/checkpoint.ddb for `--resume DIR`; a missing, unreadable, truncated or corrupted one
 /// (its checksum) is a UsageError naming --resume and the file.
-Checkpoint parseCheckpoint(const std::string& dir, std::string bytes);
-
-/// readCheckpoint then parseCheckpoint.
 Checkpoint readCheckpoint(const std::string& dir);
 
-/// Loads the relaxation's record of `c` with `load`, which returns the loaded state
+/// Loads a checkpoint's relaxation record (Checkpoint::relaxation, or fluid-relax-mpi's
+/// RankZeroRecordReader of it) with `load`, which returns the loaded state
 /// (Relaxation::load, or fluid-relax-mpi's reader of the same record), and checks that the
-/// resumed run's cap lies beyond it: a corrupt record or a cap already reached is a
-/// UsageError naming --resume DIR.
-void resumeRelaxation(Checkpoint& c, const std::string& dir,
+/// resumed run's cap (`caps`: max_steps, t_end) lies beyond it: a corrupt record or a cap
+/// already reached is a UsageError naming --resume DIR.
+void resumeRelaxation(BinaryRecordReader& relaxation, const RelaxOptions& caps,
+                      const std::string& dir,
                       const std::function<RelaxState(BinaryRecordReader&)>& load);
 
 }  // namespace ddb::fluid

@@ -53,10 +53,11 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
                                : Relaxation<SUN>(*method, *system, s.W0, s.h, s.relax);
   Tally tally;
   if (resume != nullptr) {
-    resumeRelaxation(*resume, o.resume, [&](BinaryRecordReader& in) {
-      run.load(in);
-      return run.state();
-    });
+    resumeRelaxation(resume->relaxation, resume->settings.relax, o.resume,
+                     [&](BinaryRecordReader& in) {
+                       run.load(in);
+                       return run.state();
+                     });
     tally = resume->tally;
   }
   app::prepareOutputFolder(resume != nullptr ? "--resume" : "--out",

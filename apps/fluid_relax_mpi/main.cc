@@ -12,6 +12,7 @@
 // other's; with --h5, rank 0 appends fluid.hdf5's frames as fluid-relax does.
 #include <ddb/distributed/distributed_ddb.h>
 #include <ddb/distributed/process_grid.h>
+#include <ddb/distributed/rank_zero_record_reader.h>
 #include <ddb/integrators/relax.h>
 #include <ddb/integrators/run.h>
 #include <ddb/systems/zeitlin_fluid.h>
@@ -94,7 +95,7 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   const Settings& s = run.settings;
   Checkpoint* resume = run.resume ? &*run.resume : nullptr;
   const bool root = grid.rank() == 0;
-  const Eigen::Index n = s.W0.rows();
+  const Eigen::Index n = run.n;
 
   DistributedMatrix W(grid, static_cast<int>(n), run.block);
   DistributedMatrix trial(W.layout()), P(W.layout()), product(W.layout()), commutator(W.layout());
@@ -110,22 +111,22 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   times.h = control.h();
   Tally tally;
   if (resume != nullptr) {
-    // Every rank reads its copy of the record and keeps its blocks of the state and of the
-    // warm start: no rank waits for another, and every rank fails alike.
+    // Rank 0's record, read on every rank in step: its numbers broadcast, its matrices (the
+    // state, the warm start's corrections) scattered, so that every rank fails alike and
+    // only rank 0 holds them whole (docs/distributed.md, "Checkpoints").
+    RankZeroRecordReader record(grid, std::move(resume->relaxation));
     const int status = onEveryRank(grid, [&] {
-      resumeRelaxation(*resume, o.resume, [&](BinaryRecordReader& in) {
-        Matrix whole = s.W0;
-        loadRelaxCursor(in, at, whole, result.steps_rejected, times);
+      resumeRelaxation(record, s.relax, o.resume, [&](BinaryRecordReader& in) {
+        loadRelaxCursor(in, at, W, result.steps_rejected, times);
         control.load(in);
         ddb.loadWarmStart(in, W.layout());
-        W.assignBlocksOf(whole);
         return at;
       });
     });
     if (status != 0) throw Reported{status};
     tally = resume->tally;
   } else {
-    W.scatterFrom(s.W0);
+    W.scatterFrom(s.W0);  // rank 0's
     at.residual = NAN;
   }
   if (const int status = onRankZero(grid, [&] {
@@ -201,7 +202,7 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
     if (root) {
       record = beginCheckpoint(o, run.given, s, tally, lengths.history_bytes, lengths.h5_frames);
     }
-    saveRelaxCursor(record, at, W.gather(), result.steps_rejected, times);
+    saveRelaxCursor(record, at, W, result.steps_rejected, times);
     control.save(record);
     ddb.saveWarmStart(record);
     onRoot([&] { writeCheckpoint(s.out, record); });

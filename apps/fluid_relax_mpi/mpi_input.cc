@@ -1,8 +1,11 @@
 #include "fluid_relax_mpi/mpi_input.h"
 
+#include <ddb/core/binary_record.h>
+#include <ddb/distributed/rank_zero_record_reader.h>
 #include <mpi.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <vector>
@@ -48,23 +51,21 @@ void refuseForeignRun(const std::string& dir, const fluid::Checkpoint& c) {
   }
 }
 
-// The checkpoint's bytes on every rank: read by rank 0 and broadcast, so that every rank
-// reads the same record whatever file systems the ranks see.
-std::string broadcastCheckpointBytes(const ProcessGrid& grid, const std::string& dir) {
-  std::string bytes;
-  if (const int status = onRankZero(grid, [&] { bytes = fluid::readCheckpointBytes(dir); })) {
-    throw Reported{status};
+// The run's definition (options, given flags, settings but W₀) and N, made on rank 0, on
+// every rank: written and read as the checkpoint writes and reads them, each value broadcast
+// by a RankZeroRecordReader. The other ranks never hold W₀ whole.
+void shareDefinition(const ProcessGrid& grid, fluid::Options& o, fluid::GivenFlags& given,
+                     fluid::Settings& s, Eigen::Index& n) {
+  BinaryRecordWriter record;
+  if (grid.rank() == 0) {
+    fluid::putRunDefinition(record, o, given, s);
+    record.put(s.out.string());
+    record.put(static_cast<std::int64_t>(s.W0.rows()));
   }
-  unsigned long long size = bytes.size();
-  MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG_LONG, 0, grid.comm());
-  bytes.resize(size);
-  // In pieces whose count fits MPI's int.
-  constexpr unsigned long long kPiece = 1ULL << 30;
-  for (unsigned long long at = 0; at < size; at += kPiece) {
-    MPI_Bcast(bytes.data() + at, static_cast<int>(std::min(kPiece, size - at)), MPI_CHAR, 0,
-              grid.comm());
-  }
-  return bytes;
+  RankZeroRecordReader in(grid, BinaryRecordReader(record.bytes()));
+  fluid::getRunDefinition(in, o, given, s);
+  s.out = in.get<std::string>();
+  n = static_cast<Eigen::Index>(in.get<std::int64_t>());
 }
 
 int readBlock(const MpiOptions& o, const ProcessGrid& grid, long n) {
@@ -144,27 +145,34 @@ MpiRun mpiRun(const CLI::App& cli, const MpiOptions& o, const ProcessGrid& grid)
     throw Reported{status};
   }
   if (!o.relax.resume.empty()) {
-    std::string bytes = broadcastCheckpointBytes(grid, o.relax.resume);
+    const std::string& dir = o.relax.resume;
+    run.resume.emplace();
+    fluid::Checkpoint& c = *run.resume;
+    if (const int status = onRankZero(grid, [&] { c = fluid::readCheckpoint(dir); })) {
+      throw Reported{status};
+    }
+    shareDefinition(grid, c.options, c.given, c.settings, run.n);
     const int status = onEveryRank(grid, [&] {
-      fluid::Checkpoint c = fluid::parseCheckpoint(o.relax.resume, std::move(bytes));
-      refuseForeignRun(o.relax.resume, c);
+      refuseForeignRun(dir, c);
       fluid::resumeSettings(cli, o.relax, c);
-      run.options = c.options;
-      run.given = c.given;
-      run.settings = c.settings;
-      run.block = readBlock(o, grid, run.settings.W0.rows());
-      run.resume.emplace(std::move(c));
+      run.block = readBlock(o, grid, run.n);
     });
     if (status != 0) throw Reported{status};
+    run.options = c.options;
+    run.given = c.given;
+    run.settings = std::move(c.settings);
     return run;
   }
-  const int status = onEveryRank(grid, [&] {
-    run.options = o.relax;
-    run.given = fluid::givenFlags(cli);
-    run.settings = fluid::settings(cli, o.relax, kMaxN);
-    run.block = readBlock(o, grid, run.settings.W0.rows());
-  });
-  if (status != 0) throw Reported{status};
+  run.options = o.relax;
+  run.given = fluid::givenFlags(cli);
+  if (const int status =
+          onRankZero(grid, [&] { run.settings = fluid::settings(cli, o.relax, kMaxN); })) {
+    throw Reported{status};
+  }
+  shareDefinition(grid, run.options, run.given, run.settings, run.n);
+  if (const int status = onEveryRank(grid, [&] { run.block = readBlock(o, grid, run.n); })) {
+    throw Reported{status};
+  }
   return run;
 }
 

@@ -1,8 +1,8 @@
 // fluid-relax-mpi's input (docs/distributed.md, "fluid-relax-mpi"): fluid-relax's command
 // line and checks (fluid_relax/input.h, and fluid_relax/checkpoint.h for --resume) with
-// --block, less the flags it refuses, and the
-// agreement of all ranks on the outcome: every rank checks the same input, and a rank that
-// refuses it (a file only it cannot read) refuses it for all.
+// --block, less the flags it refuses, and the agreement of all ranks on the outcome: rank 0
+// alone makes W₀ or reads the checkpoint and checks what depends on them, every rank checks
+// the rest, and a rank that refuses the input refuses it for all.
 #pragma once
 
 #include <ddb/distributed/process_grid.h>
@@ -21,8 +21,8 @@ namespace ddb::fluid_mpi {
 
 constexpr const char* kApp = "fluid-relax-mpi";
 /// The largest N: the group's (SUN::kMaxN), not fluid-relax's, since the sizes one machine
-/// cannot step in time are this app's purpose. W₀ is still made whole on every rank and
-/// each history row's state gathered whole on rank 0.
+/// cannot step in time are this app's purpose. W₀ is still made whole on rank 0 and each
+/// history row's state gathered whole there.
 constexpr Eigen::Index kMaxN = SUN::kMaxN;
 /// The default block size is this, or less where N is small: max(1, ⌊N / max(grid rows,
 /// cols)⌋), so that every rank holds entries when N ≥ max(grid rows, cols).
@@ -41,21 +41,28 @@ struct MpiOptions {
 /// fluid-relax's options with --block and this app's --help footer.
 void addMpiOptions(CLI::App& cli, MpiOptions& o);
 
-/// The run a command line asks for, the same on every rank: a new run's options and
+/// The run a command line asks for, the same on every rank but for the whole matrices,
+/// which only rank 0 holds (docs/distributed.md, "Memory per rank"): a new run's options and
 /// settings, or (--resume DIR) the resumed run's recorded ones with its checkpoint, as
 /// fluid-relax makes them (fluid::resumeSettings).
 struct MpiRun {
   fluid::Options options;
   fluid::GivenFlags given;
+  /// W₀ on rank 0 only (empty on the others).
   fluid::Settings settings;
+  Eigen::Index n = 0;
+  /// With --resume: on rank 0 the checkpoint read (its settings moved to `settings`), whose
+  /// relaxation record every rank reads through a RankZeroRecordReader; on the others one
+  /// with an empty record.
   std::optional<fluid::Checkpoint> resume;
   int block = 0;
 };
 
-/// The checks of fluid::settings() (or of fluid-relax's --resume: rank 0 reads the checkpoint
-/// and broadcasts its bytes, every rank reads them), the refused flags and --block, on every
-/// rank; bad input on any rank is Reported{2} on every rank (printed by the lowest such
-/// rank), so that no rank goes on alone.
+/// fluid::settings() (a new run: W₀, the default h and every check that reads W₀) or
+/// fluid-relax's reading of the checkpoint (--resume), on rank 0, whose run definition is
+/// then broadcast; the refused flags, the resume's checks against the command line and
+/// --block on every rank. Bad input on any rank is Reported{2} on every rank (printed by the
+/// lowest such rank), so that no rank goes on alone.
 MpiRun mpiRun(const CLI::App& cli, const MpiOptions& o, const ProcessGrid& grid);
 
 /// Runs `job` on rank 0 and agrees on its outcome: a UsageError (status 2) or any other
