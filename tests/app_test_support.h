@@ -43,6 +43,13 @@ struct RunEnvironment {
   unsigned timeout_s = 0;              // kill the app (SIGALRM) after this; 0: never
 };
 
+/// The environment of the apps started under mpiexec (as tests/CMakeLists.txt's MPI tests):
+/// root allowed, more ranks than cores, idle ranks yielding, one BLAS thread per rank.
+inline const std::vector<std::string> kMpiVariables{
+    "OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1",
+    "OMPI_MCA_rmaps_base_oversubscribe=1", "OMPI_MCA_mpi_yield_when_idle=1",
+    "OPENBLAS_NUM_THREADS=1"};
+
 /// Runs `program` with the arguments `words`, without a shell, so that wait4() reports
 /// the app's own peak memory and an argument reaches the app as it is (spaces, quotes).
 inline AppResult runProgram(const std::string& program, std::vector<std::string> words,

@@ -36,11 +36,7 @@
 namespace ddb::test {
 namespace {
 
-const RunEnvironment kMpiEnvironment{
-    {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1",
-     "OMPI_MCA_rmaps_base_oversubscribe=1", "OMPI_MCA_mpi_yield_when_idle=1",
-     "OPENBLAS_NUM_THREADS=1"},
-    240};
+const RunEnvironment kMpiEnvironment{kMpiVariables, 240};
 
 AppResult runMpi(int ranks, const std::string& arguments) {
   return runProgram(MPIEXEC_PATH,

@@ -98,9 +98,7 @@ TEST(IoFaults, FluidRelaxMpiExitsOneNamingTheFileAndKeepsTheFilesBefore) {
                     "-n 2 " FLUID_RELAX_MPI_PATH " --quiet --n 8 --steps 20 --seed 2",
                     {"history.csv", "checkpoint.ddb", "W_final.csv", "omega_initial.csv",
                      "omega_final.csv", "summary.json"},
-                    {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1",
-                     "OMPI_MCA_rmaps_base_oversubscribe=1", "OMPI_MCA_mpi_yield_when_idle=1",
-                     "OPENBLAS_NUM_THREADS=1"}};
+                    kMpiVariables};
   expectFaultsHandled(app, "fluid_mpi_io_faults_", {"history.csv", "omega_initial.csv"});
 }
 #endif
