@@ -96,6 +96,13 @@ class LiePoissonSystem {
   /// The Lagrangian l with ∂l/∂ξ = μ ⇔ ξ = ∂H/∂μ, or nullptr (e.g. the heavy top).
   const Lagrangian<G>* lagrangian() const { return lagrangian_.get(); }
 
+  /// The same Hamiltonian (and Lagrangian) with k♯ = 0: the conservative part of the flow,
+  /// for methods that treat the dissipation apart (LinearlyImplicitDdb).
+  std::shared_ptr<const LiePoissonSystem<G>> withoutDissipation() const {
+    return std::make_shared<const LiePoissonSystem<G>>(
+        name_, hamiltonian_, std::make_shared<const ScaledIdentityMetric<G>>(0.0), lagrangian_);
+  }
+
   double energy(const Dual& mu) const { return hamiltonian_->value(mu); }
   Casimirs casimirs(const Dual& mu) const { return G::casimirs(mu); }
 

@@ -12,6 +12,7 @@
 #include <ddb/groups/exponential.h>
 #include <ddb/integrators/composition.h>
 #include <ddb/integrators/ddb.h>
+#include <ddb/integrators/linearly_implicit_ddb.h>
 #include <ddb/integrators/matrix_free_runge_kutta.h>
 #include <ddb/integrators/reference.h>
 #include <ddb/integrators/runge_kutta.h>
@@ -33,13 +34,14 @@ enum GroupFamilies : unsigned { kFixedSizeGroups = 1u, kMatrixGroups = 2u };
 
 /// How makeMethod() builds an entry.
 enum class MethodKind {
-  kDdb,                ///< Ddb<R> (paper, Section 4.1)
-  kSymmetricDdb,       ///< SymmetricDdb<R>, the one-step symmetric DDB
-  kPaperSymmetricDdb,  ///< PaperSymmetricDdb<R>, the paper's symmetric variant as written
-  kComposition,        ///< Composition of the entry `base` by `scheme`
-  kExplicitRk4,        ///< ExplicitRungeKutta with kClassicalRk4
-  kLobattoIIIC,        ///< ImplicitRungeKutta with kLobattoIIIC3
-  kReference,          ///< ReferenceSolver, adaptive RKF 7(8)
+  kDdb,                  ///< Ddb<R> (paper, Section 4.1)
+  kLinearlyImplicitDdb,  ///< LinearlyImplicitDdb<R>: DDB, dissipative factor lowering H at any h
+  kSymmetricDdb,         ///< SymmetricDdb<R>, the one-step symmetric DDB
+  kPaperSymmetricDdb,    ///< PaperSymmetricDdb<R>, the paper's symmetric variant as written
+  kComposition,          ///< Composition of the entry `base` by `scheme`
+  kExplicitRk4,          ///< ExplicitRungeKutta with kClassicalRk4
+  kLobattoIIIC,          ///< ImplicitRungeKutta with kLobattoIIIC3
+  kReference,            ///< ReferenceSolver, adaptive RKF 7(8)
 };
 
 enum class RetractionKind {
@@ -58,7 +60,8 @@ struct MethodInfo {
   /// The DDB family: every state on the coadjoint orbit of μ₀, so the Casimirs are kept to
   /// round-off and, with α > 0, the energy falls (the apps watch it).
   bool keeps_casimirs;
-  bool needs_lagrangian;  ///< evaluates ∂l/∂ξ at a midpoint, so the system needs l
+  bool needs_lagrangian;     ///< evaluates ∂l/∂ξ at a midpoint, so the system needs l
+  bool needs_scalar_metric;  ///< needs k♯ = α·I (ScaledIdentityMetric)
   /// Order in μ with α ≠ 0 (docs/conventions.md §2); 0 for the adaptive reference,
   /// whose error is set by its tolerance, not by h.
   int order;
@@ -71,45 +74,53 @@ struct MethodInfo {
 
 // clang-format off
 /// Every method, in the order of the paper's comparison (docs/file-formats.md).
-inline constexpr std::array<MethodInfo, 13> kMethods{{
+inline constexpr std::array<MethodInfo, 15> kMethods{{
   {"ddb-cay", "DDB step with the Cayley map (order 1, order 2 at alpha = 0)",
-   kFixedSizeGroups | kMatrixGroups, true, false, 1, 2,
+   kFixedSizeGroups | kMatrixGroups, true, false, false, 1, 2,
    MethodKind::kDdb, RetractionKind::kCayley, SchemeKind::kNone, ""},
   {"ddb-exp", "DDB step with exp, dexp^-1 series truncated at order 2 as in the paper",
-   kFixedSizeGroups | kMatrixGroups, true, false, 1, 2,
+   kFixedSizeGroups | kMatrixGroups, true, false, false, 1, 2,
    MethodKind::kDdb, RetractionKind::kTruncatedExponential2, SchemeKind::kNone, ""},
   {"ddb-exp-exact", "DDB step with exp and the closed-form dexp^-1",
-   kFixedSizeGroups | kMatrixGroups, true, false, 1, 2,
+   kFixedSizeGroups | kMatrixGroups, true, false, false, 1, 2,
    MethodKind::kDdb, RetractionKind::kExponential, SchemeKind::kNone, ""},
+  {"ddb-cay-implicit",
+   "DDB Cayley step, dissipative factor linearly implicit: lowers the energy at any h (order 1, order 2 at alpha = 0)",
+   kFixedSizeGroups | kMatrixGroups, true, false, true, 1, 2,
+   MethodKind::kLinearlyImplicitDdb, RetractionKind::kCayley, SchemeKind::kNone, ""},
+  {"ddb-exp-implicit",
+   "DDB exp step (closed-form dexp^-1), dissipative factor linearly implicit: lowers the energy at any h (order 1, order 2 at alpha = 0)",
+   kFixedSizeGroups | kMatrixGroups, true, false, true, 1, 2,
+   MethodKind::kLinearlyImplicitDdb, RetractionKind::kExponential, SchemeKind::kNone, ""},
   {"sddb-paper-cay", "the paper's symmetric DDB, Cayley (order 1 as written; Lagrangian only)",
-   kFixedSizeGroups, true, true, 1, 2,
+   kFixedSizeGroups, true, true, false, 1, 2,
    MethodKind::kPaperSymmetricDdb, RetractionKind::kCayley, SchemeKind::kNone, ""},
   {"sddb-paper-exp", "the paper's symmetric DDB, exp (order 1 as written; Lagrangian only)",
-   kFixedSizeGroups, true, true, 1, 2,
+   kFixedSizeGroups, true, true, false, 1, 2,
    MethodKind::kPaperSymmetricDdb, RetractionKind::kExponential, SchemeKind::kNone, ""},
   {"sddb-cay", "one-step symmetric DDB, Cayley (order 2)",
-   kFixedSizeGroups | kMatrixGroups, true, false, 2, 2,
+   kFixedSizeGroups | kMatrixGroups, true, false, false, 2, 2,
    MethodKind::kSymmetricDdb, RetractionKind::kCayley, SchemeKind::kNone, ""},
   {"sddb-exp", "one-step symmetric DDB, exp (order 2)",
-   kFixedSizeGroups | kMatrixGroups, true, false, 2, 2,
+   kFixedSizeGroups | kMatrixGroups, true, false, false, 2, 2,
    MethodKind::kSymmetricDdb, RetractionKind::kExponential, SchemeKind::kNone, ""},
   {"ddb4-cay", "triple jump of sddb-cay (order 4)",
-   kFixedSizeGroups | kMatrixGroups, true, false, 4, 4,
+   kFixedSizeGroups | kMatrixGroups, true, false, false, 4, 4,
    MethodKind::kComposition, RetractionKind::kNone, SchemeKind::kTripleJump, "sddb-cay"},
   {"ddb4-exp", "triple jump of sddb-exp (order 4)",
-   kFixedSizeGroups | kMatrixGroups, true, false, 4, 4,
+   kFixedSizeGroups | kMatrixGroups, true, false, false, 4, 4,
    MethodKind::kComposition, RetractionKind::kNone, SchemeKind::kTripleJump, "sddb-exp"},
   {"ddb6-exp", "Yoshida's 7-stage composition of sddb-exp (order 6)",
-   kFixedSizeGroups | kMatrixGroups, true, false, 6, 6,
+   kFixedSizeGroups | kMatrixGroups, true, false, false, 6, 6,
    MethodKind::kComposition, RetractionKind::kNone, SchemeKind::kYoshida6, "sddb-exp"},
   {"rk4", "classical Runge-Kutta, order 4 (does not keep Casimirs)",
-   kFixedSizeGroups | kMatrixGroups, false, false, 4, 4,
+   kFixedSizeGroups | kMatrixGroups, false, false, false, 4, 4,
    MethodKind::kExplicitRk4, RetractionKind::kNone, SchemeKind::kNone, ""},
   {"lobatto3c", "Lobatto IIIC, 3 stages, order 4 (does not keep Casimirs)",
-   kFixedSizeGroups | kMatrixGroups, false, false, 4, 4,
+   kFixedSizeGroups | kMatrixGroups, false, false, false, 4, 4,
    MethodKind::kLobattoIIIC, RetractionKind::kNone, SchemeKind::kNone, ""},
   {"reference", "adaptive Runge-Kutta-Fehlberg 7(8), tolerance 1e-13",
-   kFixedSizeGroups | kMatrixGroups, false, false, 0, 0,
+   kFixedSizeGroups | kMatrixGroups, false, false, false, 0, 0,
    MethodKind::kReference, RetractionKind::kNone, SchemeKind::kNone, ""},
 }};
 // clang-format on
@@ -150,12 +161,19 @@ inline std::vector<std::pair<std::string, std::string>> methodDescriptions(
   return lines;
 }
 
+/// Whether the system's metric is k♯ = α·I.
+template <class G>
+bool hasScalarMetric(const LiePoissonSystem<G>& system) {
+  return dynamic_cast<const ScaledIdentityMetric<G>*>(&system.metric()) != nullptr;
+}
+
 /// Whether the entry runs on G and on this system (the paper's symmetric variant
 /// evaluates ∂l/∂ξ at the midpoint (ξ_k + ξ_{k+1})/2, so it needs a Lagrangian).
 template <class G>
 bool methodApplies(const MethodInfo& method, const LiePoissonSystem<G>& system) {
   return (method.groups & groupFamilyOf<G>()) != 0 &&
-         (!method.needs_lagrangian || system.lagrangian() != nullptr);
+         (!method.needs_lagrangian || system.lagrangian() != nullptr) &&
+         (!method.needs_scalar_metric || hasScalarMetric(system));
 }
 
 /// methodApplies for a name; false for a name that is not in the table.
@@ -221,6 +239,10 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(const MethodInfo& method,
   if (method.needs_lagrangian && system->lagrangian() == nullptr) {
     throwInvalid("method", name, "needs a Lagrangian, which '" + system->name() + "' has not");
   }
+  if (method.needs_scalar_metric && !hasScalarMetric(*system)) {
+    throwInvalid("method", name,
+                 "needs the metric alpha * identity, which '" + system->name() + "' has not");
+  }
   LegendreForm form = LegendreForm::kHamiltonian;
   if constexpr (!isDynamicGroup<G>) {
     if (system->lagrangian()) form = LegendreForm::kLagrangian;
@@ -228,6 +250,8 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(const MethodInfo& method,
   switch (method.kind) {
     case MethodKind::kDdb:
       return detail::withRetraction<G, Ddb>(method.retraction, system, form);
+    case MethodKind::kLinearlyImplicitDdb:
+      return detail::withRetraction<G, LinearlyImplicitDdb>(method.retraction, system, form);
     case MethodKind::kSymmetricDdb:
       return detail::withRetraction<G, SymmetricDdb>(method.retraction, system, form);
     case MethodKind::kPaperSymmetricDdb:

@@ -35,6 +35,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <optional>
 #include <type_traits>
 #include <utility>
 
@@ -72,7 +73,7 @@ class OrbitNewton {
       evaluated_ = true;
     }
     report = Report();
-    report.cg_iterations = direction(mu);
+    report.cg_iterations = direction(mu, 0.0, radius_);
     double slope = dot(now_.gradient, v_);
     if (!(slope < 0)) {
       // Not a descent direction (rounding near a steady state): the preconditioned gradient.
@@ -82,38 +83,41 @@ class OrbitNewton {
     }
     hessianTimes(now_, v_, jv_);
     const double model = slope + 0.5 * dot(v_, jv_);  // f's change to second order, s = 1
-    double s = 1.0;
-    for (int halving = 0; halving <= kMaxHalvings; ++halving, s *= 0.5) {
-      x_ = s * v_;
-      if (!retract(mu, x_, trial_mu_)) continue;
-      const double trial_energy = system_.energy(trial_mu_);
-      if (!std::isfinite(trial_energy)) continue;
-      evaluate(trial_mu_, trial_);
-      const double rounding = energyRoundOff(energy, trial_energy);
-      const double fall = sigma_ * (trial_energy - energy);
-      const bool resolvable = std::abs(s * model) > kResolvable * rounding;
-      const bool accepted = resolvable ? fall <= kArmijo * s * slope + rounding
-                                       : fall <= rounding && trial_.relative < now_.relative;
-      if (!accepted) continue;
-      const double length = s * norm(v_);
-      if (resolvable) {
-        const double ratio = fall / (s * model);
-        if (s == 1.0 && ratio > 0.75 && length >= 0.99 * radius_) {
-          radius_ = std::min(2.0 * radius_, kMaxRadius);
-        } else if (ratio < 0.25 || s < 1.0) {
-          radius_ = std::max(0.25 * radius_, length);
-        }
+    const auto step = lineSearch(mu, energy, slope, model, true, report);
+    if (!step) return false;
+    if (step->resolvable) {
+      const double ratio = step->fall / (step->s * model);
+      if (step->s == 1.0 && ratio > 0.75 && report.length >= 0.99 * radius_) {
+        radius_ = std::min(2.0 * radius_, kMaxRadius);
+      } else if (ratio < 0.25 || step->s < 1.0) {
+        radius_ = std::max(0.25 * radius_, report.length);
       }
-      roundoff_ = !resolvable;
-      std::swap(mu, trial_mu_);
-      std::swap(now_, trial_);
-      energy = trial_energy;
-      report.length = length;
-      report.halvings = halving;
-      return true;
     }
-    return false;
+    roundoff_ = !step->resolvable;
+    return true;
   }
+
+  /// The dissipative factor of LinearlyImplicitDdb (docs/steady-states.md, "A dissipative
+  /// factor that lowers the energy at any h"): from mu, one Newton step of the minimizing
+  /// movement min_x f(μ(x)) + ‖x‖²/(2τ), τ = h|α|, i.e. v ≈ −(J + I/τ)⁻¹∇f by preconditioned
+  /// CG (linearly implicit Euler on the gradient flow ẋ = −∇f, whose explicit step −τ∇f is
+  /// DDB's hφ), then mu ← μ(s v) with s = 1, ½, … the first that lowers f by Armijo's rule
+  /// (or, below resolvable energy differences, does not raise it beyond rounding). f never
+  /// rises, whatever τ; mu is unchanged (false) if no s was accepted. residual() is then
+  /// mu's r.
+  bool advanceProximal(Dual& mu, double& energy, double tau, Report& report) {
+    evaluate(mu, now_);
+    evaluated_ = false;  // mu moves between calls: the search's cached evaluation is stale
+    report = Report();
+    if (!(now_.relative > 0)) return true;  // at rest: no step
+    report.cg_iterations = direction(mu, 1.0 / tau, kMaxRadius);
+    const double slope = dot(now_.gradient, v_);
+    if (!(slope < 0)) return true;  // no descent direction: at rest to rounding, no step
+    return lineSearch(mu, energy, slope, slope, false, report).has_value();
+  }
+
+  /// r at the state of the last evaluation (the last accepted state, or the unchanged one).
+  double residual() const { return now_.relative; }
 
   /// Δ, for the record.
   double radius() const { return radius_; }
@@ -179,11 +183,14 @@ class OrbitNewton {
     out *= -sigma_;
   }
 
-  // v: truncated preconditioned CG on J v = −∇f within ‖v‖ ≤ Δ. Returns its iterations.
-  long direction(const Dual& mu) {
+  // v: truncated preconditioned CG on (J + shift) v = −∇f within ‖v‖ ≤ radius. Returns its
+  // iterations. The search (shift 0) stops at ‖res‖ ≤ min(½, √r)‖∇f‖; the minimizing
+  // movement (shift 1/τ) also at ‖res‖ ≤ (ρ/shift)‖∇f‖, ρ the first Rayleigh quotient of J:
+  // v's error is then O(τ²ρ‖∇f‖), within the step's own O(h²).
+  long direction(const Dual& mu, double shift, double radius) {
     const Algebra& g = now_.gradient;
     if constexpr (isDynamicGroup<G>) {
-      if (!preconditioner_.refresh(now_.argument, now_.xi)) {
+      if (!preconditioner_.refresh(now_.argument, now_.xi, shift)) {
         throw NonFiniteState("orbit newton", -1, NAN, NAN, mu, "state");
       }
     }
@@ -192,24 +199,29 @@ class OrbitNewton {
     precondition(res_, z_);
     p_ = z_;
     double rz = dot(res_, z_);
-    const double stop = std::min(0.5, std::sqrt(now_.relative)) * norm(g);
+    double stop = (shift > 0 ? 0.5 : std::min(0.5, std::sqrt(now_.relative))) * norm(g);
     const long cap = std::max<long>(100, kCgPerDimension * static_cast<long>(mu.size()));
     long k = 0;
     while (k < cap && norm(res_) > stop) {
       hessianTimes(now_, p_, jv_);
       ++k;
+      const double pp = dot(p_, p_);
+      if (k == 1 && shift > 0) stop = std::min(stop, std::abs(dot(p_, jv_)) / pp / shift * norm(g));
+      if (shift > 0) jv_ += shift * p_;
       const double curvature = dot(p_, jv_);
       if (curvature == 0.0 || (curvature < 0.0 && !roundoff_)) {
-        // Negative curvature: to the radius along p (the first time, the preconditioned
-        // gradient). Past rounding f cannot tell a saddle from a minimum: CG goes on.
-        if (k == 1) v_ = p_ * (radius_ / norm(p_));
+        // Negative curvature: the search goes to the radius along p (the first time, the
+        // preconditioned gradient); past rounding f cannot tell a saddle from a minimum and CG
+        // goes on. The minimizing movement keeps the descent direction it has (the first time,
+        // the preconditioned gradient, already scaled by about τ).
+        if (k == 1) v_ = shift > 0 ? p_ : p_ * (radius / std::sqrt(pp));
         break;
       }
       const double a = rz / curvature;
       x_ = v_ + a * p_;
-      if (norm(x_) >= radius_) {
-        const double pp = dot(p_, p_), vp = dot(v_, p_), vv = dot(v_, v_);
-        const double tau = (-vp + std::sqrt(vp * vp + pp * (radius_ * radius_ - vv))) / pp;
+      if (norm(x_) >= radius) {
+        const double vp = dot(v_, p_), vv = dot(v_, v_);
+        const double tau = (-vp + std::sqrt(vp * vp + pp * (radius * radius - vv))) / pp;
         v_ += tau * p_;
         break;
       }
@@ -220,7 +232,44 @@ class OrbitNewton {
       p_ = z_ + (rz_next / rz) * p_;
       rz = rz_next;
     }
+    if (shift > 0 && norm(v_) > radius) v_ *= radius / norm(v_);
     return k;
+  }
+
+  // The accepted step of a line search along v_ from mu: its length factor s, whether f's
+  // model decrease was resolvable and f's fall σ(H(μ') − H(μ)).
+  struct Accepted {
+    double s, fall;
+    bool resolvable;
+  };
+
+  // mu ← μ(s v_) for the first s = 1, ½, … accepted: f falls by kArmijo·s|slope| up to
+  // rounding or, where s·model is below kResolvable roundings of f, f does not rise beyond
+  // rounding (and, with residual_must_fall, r falls). Fills report; nothing if none was.
+  std::optional<Accepted> lineSearch(Dual& mu, double& energy, double slope, double model,
+                                     bool residual_must_fall, Report& report) {
+    double s = 1.0;
+    for (int halving = 0; halving <= kMaxHalvings; ++halving, s *= 0.5) {
+      x_ = s * v_;
+      if (!retract(mu, x_, trial_mu_)) continue;
+      const double trial_energy = system_.energy(trial_mu_);
+      if (!std::isfinite(trial_energy)) continue;
+      evaluate(trial_mu_, trial_);
+      const double rounding = energyRoundOff(energy, trial_energy);
+      const double fall = sigma_ * (trial_energy - energy);
+      const bool resolvable = std::abs(s * model) > kResolvable * rounding;
+      const bool accepted =
+          resolvable ? fall <= kArmijo * s * slope + rounding
+                     : fall <= rounding && (!residual_must_fall || trial_.relative < now_.relative);
+      if (!accepted) continue;
+      std::swap(mu, trial_mu_);
+      std::swap(now_, trial_);
+      energy = trial_energy;
+      report.length = s * norm(v_);
+      report.halvings = halving;
+      return Accepted{s, fall, resolvable};
+    }
+    return std::nullopt;
   }
 
   void precondition(const Algebra& in, Algebra& out) {

@@ -8,6 +8,8 @@
 // from the first part: pairs of nearly equal θ or π give its small eigenvalues. So this
 // preconditioner divides entry (a, b) by d_ab = |(θ_a − θ_b)(π_a − π_b)|, floored at kFloor
 // of the largest d_ab, and leaves the diagonal (μ's commutant, which does not move μ) alone.
+// For the shifted Hessian J + s·I of the minimizing movement (OrbitNewton::advanceProximal)
+// it divides by d_ab + s instead, and the diagonal by s.
 // Four products per application, one decomposition per refresh.
 #pragma once
 
@@ -26,9 +28,9 @@ class OrbitPreconditioner {
   /// rounding along (a, b) pairs that the Hessian does not move.
   static constexpr double kFloor = 1e-8;
 
-  /// At μ with ξ = ∂H/∂μ (both skew-Hermitian, or real skew-symmetric). False if μ's
-  /// eigensolver did not converge (μ not finite).
-  bool refresh(const Matrix& mu, const Matrix& xi) {
+  /// At μ with ξ = ∂H/∂μ (both skew-Hermitian, or real skew-symmetric), for J + shift·I.
+  /// False if μ's eigensolver did not converge (μ not finite).
+  bool refresh(const Matrix& mu, const Matrix& xi, double shift = 0.0) {
     if (!basis_.compute(mu)) return false;
     basis_.diagonalPhasesOf(xi, pi_);
     const Eigen::VectorXd& theta = basis_.phases();
@@ -44,7 +46,8 @@ class OrbitPreconditioner {
     const double floor = largest > 0 ? kFloor * largest : 1.0;
     for (Eigen::Index b = 0; b < n; ++b) {
       for (Eigen::Index a = 0; a < n; ++a) {
-        inverse_(a, b) = a == b ? 1.0 : 1.0 / std::max(inverse_(a, b), floor);
+        inverse_(a, b) = a == b ? (shift > 0 ? 1.0 / shift : 1.0)
+                                : 1.0 / (std::max(inverse_(a, b), floor) + shift);
       }
     }
     return true;

@@ -29,6 +29,7 @@ void bindMethods(py::module_& m) {
           row["groups"] = groups;
           row["keeps_casimirs"] = method.keeps_casimirs;
           row["needs_lagrangian"] = method.needs_lagrangian;
+          row["needs_scalar_metric"] = method.needs_scalar_metric;
           row["order"] = method.order;
           row["order_without_dissipation"] = method.order_without_dissipation;
           rows.append(std::move(row));
@@ -39,6 +40,8 @@ void bindMethods(py::module_& m) {
       "name (what integrate() takes), description, groups (the groups it runs on: SO3, SE3, "
       "SO(N), SU(N)), keeps_casimirs (the DDB family: states stay on mu0's coadjoint orbit), "
       "needs_lagrangian (applies only to a system with a Lagrangian: rigid_body, kirchhoff), "
+      "needs_scalar_metric (applies only with the metric alpha * identity: not heavy_top, "
+      "kirchhoff), "
       "order (in mu with alpha != 0; 0 for the adaptive reference) and "
       "order_without_dissipation. System.methods() lists those that apply to a system.");
 }

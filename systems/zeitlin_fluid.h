@@ -47,7 +47,12 @@ class ZeitlinHamiltonian final : public Hamiltonian<SUN> {
   }
 
   double value(const Matrix& W) const override {
-    return (W.cwiseProduct(streamMatrix(W).transpose())).sum().real() / (2.0 * hbar_);
+    // The stream matrix in a per-thread workspace: the line searches of OrbitNewton evaluate
+    // H inside a step, and a step does not allocate (tests/test_allocations.cc).
+    thread_local Matrix P;
+    P.resize(W.rows(), W.cols());
+    laplacian_.solve(W, P);
+    return (W.cwiseProduct(P.transpose())).sum().real() / (2.0 * hbar_);
   }
   /// ξ = −P/ħ; P uses the traceless part of W (the Legendre unknown lives in u(N)).
   Matrix gradient(const Matrix& W) const override {

@@ -114,17 +114,21 @@ std::string runOne(OneStepMethod<G>& method, const typename G::template Dual<dou
   return kind;
 }
 
-/// The DDB methods of the table that run on `families` and need no Lagrangian, in table order.
-std::vector<std::string> ddbMethods(unsigned families) {
+/// The DDB methods of the table that run on `families` and need no Lagrangian (nor, unless
+/// `scalar_metric`, the metric α·I), in table order.
+std::vector<std::string> ddbMethods(unsigned families, bool scalar_metric = true) {
   std::vector<std::string> names;
   for (const MethodInfo& m : kMethods) {
-    if ((m.groups & families) != 0 && m.keeps_casimirs && !m.needs_lagrangian) {
+    if ((m.groups & families) != 0 && m.keeps_casimirs && !m.needs_lagrangian &&
+        (scalar_metric || !m.needs_scalar_metric)) {
       names.emplace_back(m.name);
     }
   }
   return names;
 }
 const std::vector<std::string> kSmallMethods = ddbMethods(kFixedSizeGroups);
+/// The heavy top's and Kirchhoff body's metric is α·diag(k).
+const std::vector<std::string> kSe3Methods = ddbMethods(kFixedSizeGroups, false);
 
 std::string describe(const std::string& method, double alpha, double h, int i) {
   std::ostringstream os;
@@ -187,7 +191,7 @@ void runSe3(const std::string& system_name, std::uint64_t seed, const Make& make
     Vector6d metric;
     for (int j = 0; j < 6; ++j) metric(j) = draw.uniform(0, 1);
     const Vector6d mu0 = draw.vector<Vector6d>() * draw.logUniform(-1, 1);
-    const std::string& name = draw.pick(kSmallMethods);
+    const std::string& name = draw.pick(kSe3Methods);
     auto system = make(draw, alpha, metric);
     auto method = makeMethod<SE3>(name, system);
     runOne<SE3>(*method, mu0, h, Se3Drift(mu0), describe(name, alpha, h, i), outcomes);

@@ -1,0 +1,88 @@
+// LinearlyImplicitDdb: a DDB step whose dissipative factor lowers the energy for every step
+// size (docs/steady-states.md, "A dissipative factor that lowers the energy at any h").
+// DDB's step is a conservative factor, τ(hξ) from the discrete Legendre equation, and an
+// explicit dissipative one, τ(hφ) with φ = k♯(ad*_ξ μ) (eq. (4.12)); the explicit factor is
+// stable only for h|α| below a bound set by the largest curvature of H on the orbit, beyond
+// which the energy rises (docs/design.md, "Large N: the step's stability bound"). Here, with
+// k♯ = α·I and f = σH (σ = sign α: the flow lowers f):
+//   (i)  μ̃ = the DDB step of the system without dissipation (the same Legendre solve);
+//   (ii) μ_{k+1} = Ad*_{cay(s v)} μ̃, v ≈ −(J + I/τ)⁻¹ ∇f at μ̃, τ = h|α|,
+// where ∇f and J are the gradient and Hessian of f(Ad*_{cay x} μ̃) at x = 0: one Newton step of
+// the minimizing movement min_x f + ‖x‖²/(2τ), i.e. linearly implicit Euler on the gradient
+// flow whose explicit Euler step −τ∇f = hφ(μ̃) is DDB's own factor. s = 1, ½, … is the first
+// that lowers f by Armijo's rule (OrbitNewton::advanceProximal). So the factor never raises f,
+// for any h, and every state is a conjugate of the last (Casimirs kept to rounding); for small
+// h, v = hφ(μ̃) + O(h²): first order, as DDB with α ≠ 0, and DDB itself at α = 0. As h|α| → ∞
+// the factor becomes a step of the Newton search on the orbit (OrbitNewton). The conservative
+// factor still changes H by its own error, of either sign: a step as a whole is monotone in H
+// only up to that (the energy step control checks every step).
+#pragma once
+
+#include <ddb/core/dissipation_metric.h>
+#include <ddb/core/errors.h>
+#include <ddb/integrators/ddb.h>
+#include <ddb/integrators/orbit_newton.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+namespace ddb {
+
+template <class R>
+class LinearlyImplicitDdb : public Ddb<R> {
+ public:
+  using typename Ddb<R>::G;
+  using typename Ddb<R>::Dual;
+
+  /// `system` must have the metric k♯ = α·I (ScaledIdentityMetric).
+  LinearlyImplicitDdb(std::shared_ptr<const LiePoissonSystem<G>> system, R retraction = R(),
+                      LegendreForm form = LegendreForm::kLagrangian, SolverOptions options = {})
+      : Ddb<R>(system->withoutDissipation(), std::move(retraction), form, options),
+        dissipative_(std::move(system)),
+        alpha_(scalarMetricOf(*dissipative_)),
+        dissipation_(*dissipative_, alpha_) {}
+
+  std::string name() const override { return this->nameWith("ddb-") + "-implicit"; }
+
+  Dual step(const Dual& mu, double t, double h) override {
+    Dual next = mu;
+    advance(next, t, h);
+    return next;
+  }
+
+  void advance(Dual& mu, double t, double h) override {
+    // Ddb's own step, not through the virtual step()/advance() that this class overrides.
+    if constexpr (isDynamicGroup<G>) {
+      Ddb<R>::advance(mu, t, h);
+    } else {
+      mu = Ddb<R>::step(mu, t, h);
+    }
+    if (alpha_ == 0.0) return;
+    double energy = dissipative_->energy(mu);
+    if (!dissipation_.advanceProximal(mu, energy, h * std::abs(alpha_), report_)) {
+      throw SolveFailure("linearly implicit dissipative factor (no step length lowered the energy)",
+                         -1, t, h, dissipation_.residual(), 0.0);
+    }
+  }
+
+  /// The last dissipative factor's report (its CG iterations and halvings).
+  const typename OrbitNewton<G>::Report& dissipationReport() const { return report_; }
+
+ private:
+  static double scalarMetricOf(const LiePoissonSystem<G>& system) {
+    const auto* metric = dynamic_cast<const ScaledIdentityMetric<G>*>(&system.metric());
+    if (metric == nullptr) {
+      throwInvalid("method", "ddb-*-implicit",
+                   "needs the metric alpha * identity, which '" + system.name() + "' has not");
+    }
+    return metric->alpha();
+  }
+
+  std::shared_ptr<const LiePoissonSystem<G>> dissipative_;
+  double alpha_;
+  OrbitNewton<G> dissipation_;
+  typename OrbitNewton<G>::Report report_;
+};
+
+}  // namespace ddb
