@@ -66,9 +66,6 @@ class LinearlyImplicitDdb : public Ddb<R> {
     }
   }
 
-  /// The last dissipative factor's report (its CG iterations and halvings).
-  const typename OrbitNewton<G>::Report& dissipationReport() const { return report_; }
-
  private:
   static double scalarMetricOf(const LiePoissonSystem<G>& system) {
     const auto* metric = dynamic_cast<const ScaledIdentityMetric<G>*>(&system.metric());
@@ -82,7 +79,7 @@ class LinearlyImplicitDdb : public Ddb<R> {
   std::shared_ptr<const LiePoissonSystem<G>> dissipative_;
   double alpha_;
   OrbitNewton<G> dissipation_;
-  typename OrbitNewton<G>::Report report_;
+  typename OrbitNewton<G>::Report report_;  // the last factor's, filled by advanceProximal
 };
 
 }  // namespace ddb

@@ -1,14 +1,15 @@
 #!/usr/bin/env python3
-"""The README's "Steady states" figure from three fluid-relax runs of one problem.
+"""The README's "Steady states" figure from fluid-relax runs of one problem.
 
-usage: plot_steady_states.py FIXED ADAPTIVE NEWTON OUT.png
+usage: plot_steady_states.py FIXED ADAPTIVE NEWTON [IMPLICIT] OUT.png
 
-FIXED, ADAPTIVE and NEWTON are fluid-relax output folders (history.csv, summary.json): fixed
-steps, --adaptive, and --newton (docs/steady-states.md). Left: ||[P, W]||_F and the step h
-against the flow time t for the two time-stepping runs (one axis pair: ||[P, W]||_F on the
-left scale, h on the right). Right: ||[P, W]||_F against the accepted step for all three, with
-each run's steps and wall time in its label (a Newton search has no time, and its steps cost
-more than a DDB step: the wall times are the comparison).
+FIXED, ADAPTIVE, NEWTON and IMPLICIT are fluid-relax output folders (history.csv,
+summary.json): fixed steps, --adaptive, --newton, and --adaptive with --method
+ddb-cay-implicit (docs/steady-states.md). Left: ||[P, W]||_F and the step h against the flow
+time t for the time-stepping runs (one axis pair: ||[P, W]||_F on the left scale, h on the
+right). Right: ||[P, W]||_F against the accepted step for all, with each run's steps and wall
+time in its label (a Newton search has no time, and its steps cost more than a DDB step: the
+wall times are the comparison).
 """
 import csv
 import json
@@ -41,15 +42,17 @@ def label(name, summary):
 
 
 def main():
-    if len(sys.argv) != 5:
+    if len(sys.argv) not in (5, 6):
         sys.exit(__doc__)
     runs = [("fixed h = %g" % read_run(sys.argv[1])[1]["h"], read_run(sys.argv[1]), "tab:blue"),
             ("energy step control", read_run(sys.argv[2]), "tab:orange"),
             ("Newton on the orbit", read_run(sys.argv[3]), "tab:green")]
+    if len(sys.argv) == 6:
+        runs.append(("linearly implicit DDB, step control", read_run(sys.argv[4]), "tab:red"))
     first = runs[0][1][1]
     fig, (left, right) = plt.subplots(1, 2, figsize=(13, 4.8), layout="constrained")
     step_axis = left.twinx()
-    for name, (columns, summary, _), color in runs[:2]:
+    for name, (columns, summary, _), color in [r for r in runs if not r[1][1]["newton"]]:
         t = columns["t"]
         keep = t > 0
         left.loglog(t[keep], columns["commutator_norm"][keep], color=color,
@@ -74,12 +77,12 @@ def main():
     right.set_xlabel("accepted step (Newton: iteration)")
     right.set_ylabel("$\\|[P, W]\\|_F$")
     right.legend(fontsize=8, loc="lower left")
-    right.set_title("all three against their steps (wall times in the labels)")
+    right.set_title("all runs against their steps (wall times in the labels)")
     right.grid(alpha=0.3, which="both")
     fig.suptitle("Zeitlin fluid N = %d, alpha = %g, %s init (seed %s): relaxing to a steady "
                  "state; every accepted state on the orbit, no energy rise" %
                  (first["n"], first["alpha"], first["init"], first["seed"]))
-    fig.savefig(sys.argv[4], dpi=110)
+    fig.savefig(sys.argv[-1], dpi=110)
 
 
 if __name__ == "__main__":
