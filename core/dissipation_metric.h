@@ -39,6 +39,12 @@ class ScaledIdentityMetric final : public DissipationMetric<G> {
   double alpha_;
 };
 
+/// The metric as k♯ = α·I, or nullptr if it is not one.
+template <class G>
+const ScaledIdentityMetric<G>* asScalarMetric(const DissipationMetric<G>& metric) {
+  return dynamic_cast<const ScaledIdentityMetric<G>*>(&metric);
+}
+
 /// k♯ = α · diag(k), k_i >= 0 (the heavy-top and Kirchhoff metrics of docs/file-formats.md).
 template <class G>
 class DiagonalMetric final : public DissipationMetric<G> {

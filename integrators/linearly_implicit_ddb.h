@@ -39,9 +39,9 @@ class LinearlyImplicitDdb : public Ddb<R> {
   LinearlyImplicitDdb(std::shared_ptr<const LiePoissonSystem<G>> system, R retraction = R(),
                       LegendreForm form = LegendreForm::kLagrangian, SolverOptions options = {})
       : Ddb<R>(system->withoutDissipation(), std::move(retraction), form, options),
-        dissipative_(std::move(system)),
-        alpha_(scalarMetricOf(*dissipative_)),
-        dissipation_(*dissipative_, alpha_) {}
+        with_dissipation_(std::move(system)),
+        alpha_(scalarMetricOf(*with_dissipation_)),
+        dissipative_factor_(*with_dissipation_, alpha_) {}
 
   std::string name() const override { return this->nameWith("ddb-") + "-implicit"; }
 
@@ -58,17 +58,18 @@ class LinearlyImplicitDdb : public Ddb<R> {
     } else {
       mu = Ddb<R>::step(mu, t, h);
     }
-    if (alpha_ == 0.0) return;
-    double energy = dissipative_->energy(mu);
-    if (!dissipation_.advanceProximal(mu, energy, h * std::abs(alpha_), report_)) {
+    if (alpha_ == 0.0) return;  // no dissipative factor: the step is Ddb's
+    double energy = with_dissipation_->energy(mu);
+    typename OrbitNewton<G>::Report report;
+    if (!dissipative_factor_.advanceProximal(mu, energy, h * std::abs(alpha_), report)) {
       throw SolveFailure("linearly implicit dissipative factor (no step length lowered the energy)",
-                         -1, t, h, dissipation_.residual(), 0.0);
+                         -1, t, h, dissipative_factor_.residual(), 0.0);
     }
   }
 
  private:
   static double scalarMetricOf(const LiePoissonSystem<G>& system) {
-    const auto* metric = dynamic_cast<const ScaledIdentityMetric<G>*>(&system.metric());
+    const auto* metric = asScalarMetric(system.metric());
     if (metric == nullptr) {
       throwInvalid("method", "ddb-*-implicit",
                    "needs the metric alpha * identity, which '" + system.name() + "' has not");
@@ -76,10 +77,9 @@ class LinearlyImplicitDdb : public Ddb<R> {
     return metric->alpha();
   }
 
-  std::shared_ptr<const LiePoissonSystem<G>> dissipative_;
+  std::shared_ptr<const LiePoissonSystem<G>> with_dissipation_;  // Ddb's system has none
   double alpha_;
-  OrbitNewton<G> dissipation_;
-  typename OrbitNewton<G>::Report report_;  // the last factor's, filled by advanceProximal
+  OrbitNewton<G> dissipative_factor_;
 };
 
 }  // namespace ddb

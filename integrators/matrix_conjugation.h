@@ -63,18 +63,22 @@ class MatrixConjugation<R, Dual, false> {
   /// skew-Hermitian. No prepare() needed.
   void applyWithSolution(const Dual& b, const Dual& q, Dual& mu) {
     if (!B::sameShape(product_, b)) B::zeroLike(product_, b);
+    if (!B::sameShape(commutator_, b)) B::zeroLike(commutator_, b);
     B::multiply(b, q, product_);
-    B::entries(mu) -= 2.0 * B::entries(product_);
-    B::addAdjoint(2.0, product_, mu);
+    // The commutator first, then one sum into μ: bq itself does not vanish at a steady state,
+    // and μ − 2bq + 2(bq)ᴴ in two passes rounds μ − 2bq to full size, with the same rounding
+    // at every step of a steady flow (a linear drift of the spectrum, docs/long-run.md).
+    G::commutatorFromProduct(product_, commutator_);  // (bq)ᴴ − bq = −[b, q]
+    B::entries(mu) += 2.0 * B::entries(commutator_);
   }
 
  private:
   void allocate(const Dual& like) {
     if (B::sameShape(half_, like)) return;
-    for (Dual* m : {&half_, &resolvent_, &product_, &q_}) B::zeroLike(*m, like);
+    for (Dual* m : {&half_, &resolvent_, &product_, &commutator_, &q_}) B::zeroLike(*m, like);
   }
 
-  Dual half_, resolvent_, product_, q_;
+  Dual half_, resolvent_, product_, commutator_, q_;
   typename B::Inverse inverse_;
 };
 

@@ -85,11 +85,11 @@ inline constexpr std::array<MethodInfo, 15> kMethods{{
    kFixedSizeGroups | kMatrixGroups, true, false, false, 1, 2,
    MethodKind::kDdb, RetractionKind::kExponential, SchemeKind::kNone, ""},
   {"ddb-cay-implicit",
-   "DDB Cayley step, dissipative factor linearly implicit: lowers the energy at any h (order 1, order 2 at alpha = 0)",
+   "DDB Cayley step, dissipative factor linearly implicit: moves the energy the flow's way at any h (order 1, order 2 at alpha = 0)",
    kFixedSizeGroups | kMatrixGroups, true, false, true, 1, 2,
    MethodKind::kLinearlyImplicitDdb, RetractionKind::kCayley, SchemeKind::kNone, ""},
   {"ddb-exp-implicit",
-   "DDB exp step (closed-form dexp^-1), dissipative factor linearly implicit: lowers the energy at any h (order 1, order 2 at alpha = 0)",
+   "DDB exp step (closed-form dexp^-1), dissipative factor linearly implicit: moves the energy the flow's way at any h (order 1, order 2 at alpha = 0)",
    kFixedSizeGroups | kMatrixGroups, true, false, true, 1, 2,
    MethodKind::kLinearlyImplicitDdb, RetractionKind::kExponential, SchemeKind::kNone, ""},
   {"sddb-paper-cay", "the paper's symmetric DDB, Cayley (order 1 as written; Lagrangian only)",
@@ -161,19 +161,13 @@ inline std::vector<std::pair<std::string, std::string>> methodDescriptions(
   return lines;
 }
 
-/// Whether the system's metric is k♯ = α·I.
-template <class G>
-bool hasScalarMetric(const LiePoissonSystem<G>& system) {
-  return dynamic_cast<const ScaledIdentityMetric<G>*>(&system.metric()) != nullptr;
-}
-
 /// Whether the entry runs on G and on this system (the paper's symmetric variant
 /// evaluates ∂l/∂ξ at the midpoint (ξ_k + ξ_{k+1})/2, so it needs a Lagrangian).
 template <class G>
 bool methodApplies(const MethodInfo& method, const LiePoissonSystem<G>& system) {
   return (method.groups & groupFamilyOf<G>()) != 0 &&
          (!method.needs_lagrangian || system.lagrangian() != nullptr) &&
-         (!method.needs_scalar_metric || hasScalarMetric(system));
+         (!method.needs_scalar_metric || asScalarMetric(system.metric()) != nullptr);
 }
 
 /// methodApplies for a name; false for a name that is not in the table.
@@ -239,7 +233,7 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(const MethodInfo& method,
   if (method.needs_lagrangian && system->lagrangian() == nullptr) {
     throwInvalid("method", name, "needs a Lagrangian, which '" + system->name() + "' has not");
   }
-  if (method.needs_scalar_metric && !hasScalarMetric(*system)) {
+  if (method.needs_scalar_metric && asScalarMetric(system->metric()) == nullptr) {
     throwInvalid("method", name,
                  "needs the metric alpha * identity, which '" + system->name() + "' has not");
   }

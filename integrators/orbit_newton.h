@@ -111,8 +111,22 @@ class OrbitNewton {
     report = Report();
     if (!(now_.relative > 0)) return true;  // at rest: no step
     report.cg_iterations = direction(mu, 1.0 / tau, kMaxRadius);
-    const double slope = dot(now_.gradient, v_);
-    if (!(slope < 0)) return true;  // no descent direction: at rest to rounding, no step
+    if constexpr (isDynamicGroup<G>) {
+      // v exactly in the algebra: a Hermitian part of rounding size makes cay(s v) non-unitary
+      // by the same amount at every step of a steady flow, and the spectrum drifts linearly
+      // (docs/long-run.md, "Matrix groups").
+      G::projectToAlgebra(v_);
+    }
+    double slope = dot(now_.gradient, v_);
+    if (!(slope < 0)) {
+      // CG's J is the derivative of the gradient field, symmetric only at a steady state (its
+      // antisymmetric part is of the size of ∇f): its direction may not descend. The
+      // preconditioned gradient, scaled by about τ, does.
+      precondition(now_.gradient, v_);
+      v_ *= -std::min(1.0, kMaxRadius / norm(v_));
+      slope = dot(now_.gradient, v_);
+      if (!(slope < 0)) return true;  // ∇f is rounding: at rest, no step
+    }
     return lineSearch(mu, energy, slope, slope, false, report).has_value();
   }
 
@@ -188,6 +202,7 @@ class OrbitNewton {
   // movement (shift 1/τ) also at ‖res‖ ≤ (ρ/shift)‖∇f‖, ρ the first Rayleigh quotient of J:
   // v's error is then O(τ²ρ‖∇f‖), within the step's own O(h²).
   long direction(const Dual& mu, double shift, double radius) {
+    shift_ = shift;
     const Algebra& g = now_.gradient;
     if constexpr (isDynamicGroup<G>) {
       if (!preconditioner_.refresh(now_.argument, now_.xi, shift)) {
@@ -213,8 +228,8 @@ class OrbitNewton {
         // Negative curvature: the search goes to the radius along p (the first time, the
         // preconditioned gradient); past rounding f cannot tell a saddle from a minimum and CG
         // goes on. The minimizing movement keeps the descent direction it has (the first time,
-        // the preconditioned gradient, already scaled by about τ).
-        if (k == 1) v_ = shift > 0 ? p_ : p_ * (radius / std::sqrt(pp));
+        // the preconditioned residual, whose preconditioner includes the shift 1/τ).
+        if (k == 1) v_ = shift > 0 ? p_ : p_ * (radius / norm(p_));
         break;
       }
       const double a = rz / curvature;
@@ -272,11 +287,14 @@ class OrbitNewton {
     return std::nullopt;
   }
 
+  // An approximate inverse of J + shift_: OrbitPreconditioner on matrix groups; on the small
+  // groups the identity, or 1/shift_ for the minimizing movement (its first CG direction is
+  // then the explicit step −τ∇f).
   void precondition(const Algebra& in, Algebra& out) {
     if constexpr (isDynamicGroup<G>) {
       preconditioner_.apply(in, out);
     } else {
-      out = in;
+      out = shift_ > 0 ? Algebra(in / shift_) : in;
     }
   }
 
@@ -320,6 +338,7 @@ class OrbitNewton {
   double sigma_;
   double radius_ = kFirstRadius;
   bool roundoff_ = false;  // the last step was accepted on r, its energy change below rounding
+  double shift_ = 0.0;     // of the last direction: 0 for the search, 1/τ for the movement
   bool evaluated_ = false;
   Evaluation now_, trial_;
   Dual trial_mu_;

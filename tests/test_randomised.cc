@@ -115,12 +115,12 @@ std::string runOne(OneStepMethod<G>& method, const typename G::template Dual<dou
 }
 
 /// The DDB methods of the table that run on `families` and need no Lagrangian (nor, unless
-/// `scalar_metric`, the metric α·I), in table order.
-std::vector<std::string> ddbMethods(unsigned families, bool scalar_metric = true) {
+/// `include_scalar_metric_methods`, the metric α·I), in table order.
+std::vector<std::string> ddbMethods(unsigned families, bool include_scalar_metric_methods = true) {
   std::vector<std::string> names;
   for (const MethodInfo& m : kMethods) {
     if ((m.groups & families) != 0 && m.keeps_casimirs && !m.needs_lagrangian &&
-        (scalar_metric || !m.needs_scalar_metric)) {
+        (include_scalar_metric_methods || !m.needs_scalar_metric)) {
       names.emplace_back(m.name);
     }
   }
