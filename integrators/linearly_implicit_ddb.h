@@ -45,11 +45,7 @@ class LinearlyImplicitDdb : public Ddb<R> {
 
   std::string name() const override { return this->nameWith("ddb-") + "-implicit"; }
 
-  Dual step(const Dual& mu, double t, double h) override {
-    Dual next = mu;
-    advance(next, t, h);
-    return next;
-  }
+  Dual step(const Dual& mu, double t, double h) override { return this->stepInPlace(mu, t, h); }
 
   void advance(Dual& mu, double t, double h) override {
     // Ddb's own step, not through the virtual step()/advance() that this class overrides.

@@ -112,9 +112,8 @@ class OrbitNewton {
     if (!(now_.relative > 0)) return true;  // at rest: no step
     report.cg_iterations = direction(mu, 1.0 / tau, kMaxRadius);
     if constexpr (isDynamicGroup<G>) {
-      // v exactly in the algebra: a Hermitian part of rounding size makes cay(s v) non-unitary
-      // by the same amount at every step of a steady flow, and the spectrum drifts linearly
-      // (docs/long-run.md, "Matrix groups").
+      // v exactly in the algebra: the Cayley conjugation takes (I − b)⁻¹ = ((I + b)⁻¹)ᴴ, true
+      // for a skew-Hermitian b only, and CG's v is skew-Hermitian only to rounding.
       G::projectToAlgebra(v_);
     }
     double slope = dot(now_.gradient, v_);
@@ -220,8 +219,9 @@ class OrbitNewton {
     while (k < cap && norm(res_) > stop) {
       hessianTimes(now_, p_, jv_);
       ++k;
-      const double pp = dot(p_, p_);
-      if (k == 1 && shift > 0) stop = std::min(stop, std::abs(dot(p_, jv_)) / pp / shift * norm(g));
+      if (k == 1 && shift > 0) {
+        stop = std::min(stop, std::abs(dot(p_, jv_)) / dot(p_, p_) / shift * norm(g));
+      }
       if (shift > 0) jv_ += shift * p_;
       const double curvature = dot(p_, jv_);
       if (curvature == 0.0 || (curvature < 0.0 && !roundoff_)) {
@@ -235,7 +235,7 @@ class OrbitNewton {
       const double a = rz / curvature;
       x_ = v_ + a * p_;
       if (norm(x_) >= radius) {
-        const double vp = dot(v_, p_), vv = dot(v_, v_);
+        const double pp = dot(p_, p_), vp = dot(v_, p_), vv = dot(v_, v_);
         const double tau = (-vp + std::sqrt(vp * vp + pp * (radius * radius - vv))) / pp;
         v_ += tau * p_;
         break;
