@@ -3,13 +3,14 @@
 // distributed over MPI ranks (docs/distributed.md, "One step formula"). entries(x) is this
 // rank's local array; the operands of one formula share a layout, so element-wise
 // arithmetic on local arrays is the whole matrices' arithmetic. Products are pzgemm_,
-// adjoints pztranc_, the 1-norm pzlange_, the inverse pzgetrf_ + pzgetri_; sums over the
+// adjoints an AdjointExchange, the 1-norm pzlange_, the inverse pzgetrf_ + pzgetri_; sums over the
 // ranks are ProcessGrid::sum (the same bits on every rank). All functions are collective.
 #pragma once
 
 #include <ddb/core/binary_record.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/matrix_backend.h>
+#include <ddb/distributed/adjoint_exchange.h>
 #include <ddb/distributed/distributed_inverse.h>
 #include <ddb/distributed/distributed_matrix.h>
 #include <ddb/distributed/distributed_product.h>
@@ -50,22 +51,11 @@ struct MatrixBackend<DistributedMatrix> {
             &one, b.descriptor(), &beta, out.data(), &one, &one, out.descriptor());
   }
   static void addAdjoint(double scale, const X& x, X& out) {
-    const int n = x.size(), one = 1;
-    const Scalar alpha(scale), beta(1.0);
-    pztranc_(&n, &n, &alpha, x.data(), &one, &one, x.descriptor(), &beta, out.data(), &one, &one,
-             out.descriptor());
+    adjointExchange(x.layout()).addAdjoint(scale, x.local(), out.local());
   }
   /// x ← (x − xᴴ)/2 entry by entry as the dense backend forms it, so skew-Hermitian bit for
-  /// bit; xᴴ goes through a workspace of x's local size.
-  static void makeSkewHermitian(X& x) {
-    thread_local Entries adjoint;
-    adjoint.resize(x.local().rows(), x.local().cols());
-    const int n = x.size(), one = 1;
-    const Scalar alpha(1.0), beta(0.0);
-    pztranc_(&n, &n, &alpha, x.data(), &one, &one, x.descriptor(), &beta,
-             adjoint.size() > 0 ? adjoint.data() : x.data(), &one, &one, x.descriptor());
-    x.local() = 0.5 * (x.local() - adjoint);
-  }
+  /// bit.
+  static void makeSkewHermitian(X& x) { adjointExchange(x.layout()).makeSkewHermitian(x.local()); }
   static Scalar trace(const X& x) {
     Scalar local(0.0);
     forDiagonal(x, [&](int i, int j) { local += x.local()(i, j); });
@@ -126,6 +116,14 @@ struct MatrixBackend<DistributedMatrix> {
   }
 
  private:
+  // The adjoints' plan for a layout, kept per thread and built anew when the layout changes
+  // (a run has one), so that an adjoint allocates nothing.
+  static AdjointExchange& adjointExchange(const BlockCyclicLayout& layout) {
+    thread_local AdjointExchange plan;
+    if (!plan.isFor(layout)) plan = AdjointExchange(layout);
+    return plan;
+  }
+
   // f(local row, local column) for every local entry on the diagonal.
   template <class F>
   static void forDiagonal(const X& x, F f) {

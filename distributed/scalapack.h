@@ -30,10 +30,6 @@ void pzgemm_(const char* transa, const char* transb, const int* m, const int* n,
              const int* ja, const int* desca, const std::complex<double>* b, const int* ib,
              const int* jb, const int* descb, const std::complex<double>* beta,
              std::complex<double>* c, const int* ic, const int* jc, const int* descc);
-void pztranc_(const int* m, const int* n, const std::complex<double>* alpha,
-              const std::complex<double>* a, const int* ia, const int* ja, const int* desca,
-              const std::complex<double>* beta, std::complex<double>* c, const int* ic,
-              const int* jc, const int* descc);
 void pzgetrf_(const int* m, const int* n, std::complex<double>* a, const int* ia, const int* ja,
               const int* desca, int* ipiv, int* info);
 void pzgetri_(const int* n, std::complex<double>* a, const int* ia, const int* ja, const int* desca,

@@ -95,6 +95,39 @@ TEST_P(DistributedMatrixTest, ProductMatchesEigen) {
   }
 }
 
+// The backend's adjoints (AdjointExchange) against Eigen's on the gathered matrix: out +
+// scale·xᴴ, and the skew-Hermitian part, which must equal the dense backend's bit for bit
+// (the step formulas rely on (x − xᴴ)/2 being exactly skew-Hermitian on every layout).
+TEST_P(DistributedMatrixTest, AddAdjointMatchesEigen) {
+  const Eigen::MatrixXcd a = randomComplexMatrix(n(), 41), c = randomComplexMatrix(n(), 42);
+  DistributedMatrix da(grid_, n(), block()), dc(grid_, n(), block());
+  da.scatterFrom(a);
+  for (const double scale : {1.0, -0.5}) {
+    dc.scatterFrom(c);
+    MatrixBackend<DistributedMatrix>::addAdjoint(scale, da, dc);
+    const Eigen::MatrixXcd result = dc.gather();
+    if (grid_.rank() == 0) {
+      const Eigen::MatrixXcd reference = c + scale * a.adjoint();
+      EXPECT_LT(relativeDistance(result, reference), 1e-15) << "scale " << scale;
+    }
+  }
+}
+
+TEST_P(DistributedMatrixTest, SkewHermitianPartEqualsTheDenseBackendsBitForBit) {
+  const Eigen::MatrixXcd a = randomComplexMatrix(n(), 43);
+  DistributedMatrix distributed(grid_, n(), block());
+  distributed.scatterFrom(a);
+  MatrixBackend<DistributedMatrix>::makeSkewHermitian(distributed);
+  const Eigen::MatrixXcd result = distributed.gather();
+  if (grid_.rank() == 0) {
+    Eigen::MatrixXcd dense = a;
+    MatrixBackend<Eigen::MatrixXcd>::makeSkewHermitian(dense);
+    EXPECT_TRUE(result == dense);
+    EXPECT_TRUE(result == Eigen::MatrixXcd(-result.adjoint()));
+    EXPECT_LT(relativeDistance(result, 0.5 * (a - a.adjoint())), 1e-15);
+  }
+}
+
 TEST_P(DistributedMatrixTest, FrobeniusNormMatchesEigenOnEveryRank) {
   const Eigen::MatrixXcd a = randomComplexMatrix(n(), 31);
   DistributedMatrix distributed(grid_, n(), block());
