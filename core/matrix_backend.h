@@ -4,7 +4,7 @@
 // an Eigen matrix that, for all operands of one formula, holds the same entries: all of them
 // for a dense matrix, this rank's blocks for a distributed one (same layout). Whatever
 // couples entries goes through a static function here: products, adjoints, traces, norms,
-// sampled entries and the inverse. Every reduction returns the same value on every rank,
+// sampled entries and LU solves. Every reduction returns the same value on every rank,
 // so that every data-dependent branch is taken alike everywhere.
 //
 // This primary template is the dense backend (Eigen's dynamic-size matrices, real or
@@ -12,7 +12,7 @@
 #pragma once
 
 #include <ddb/core/binary_record.h>
-#include <ddb/core/detail/dense_inverse.h>
+#include <ddb/core/detail/dense_lu.h>
 
 #include <Eigen/Core>
 #include <complex>
@@ -25,8 +25,9 @@ template <class X>
 struct MatrixBackend {
   using Scalar = typename X::Scalar;
   using Entries = X;
-  /// A ← A⁻¹ in place, with workspaces reused (invert(A) returns false when singular).
-  using Inverse = DenseInverse<X>;
+  /// LU factors of A in place and solves X ← A⁻¹X, workspaces reused (factor(A) returns
+  /// false when A is singular).
+  using Lu = DenseLu<X>;
 
   static X& entries(X& x) { return x; }
   static const X& entries(const X& x) { return x; }
@@ -73,12 +74,21 @@ struct MatrixBackend {
   /// or overflowed (a norm that is tiny or not finite) hypot's exact |z| is used. NaN
   /// entries make it NaN.
   static double oneNorm(const X& x) {
-    constexpr double kSquaresExact = 1e-100;  // entries lost below √(smallest double) are
-                                              // below rounding relative to this norm
-    const double fast =
-        x.cwiseAbs2().cwiseSqrt().colwise().sum().template maxCoeff<Eigen::PropagateNaN>();
-    if (fast >= kSquaresExact && fast <= std::numeric_limits<double>::max()) return fast;
+    const double fast = fastMagnitudes(x).colwise().sum().template maxCoeff<Eigen::PropagateNaN>();
+    if (squaresWereExact(fast)) return fast;
     return x.cwiseAbs().colwise().sum().template maxCoeff<Eigen::PropagateNaN>();
+  }
+  /// |x_ij| = √(Re² + Im²) entry by entry (an expression on an Eigen matrix: the distributed
+  /// backend's local blocks too).
+  template <class Entries>
+  static auto fastMagnitudes(const Entries& x) {
+    return x.cwiseAbs2().cwiseSqrt();
+  }
+  /// Whether a norm from the squares can be trusted: entries lost below √(smallest double)
+  /// are below rounding relative to a norm of at least kSquaresExact, and nothing overflowed.
+  static bool squaresWereExact(double norm) {
+    constexpr double kSquaresExact = 1e-100;
+    return norm >= kSquaresExact && norm <= std::numeric_limits<double>::max();
   }
   /// Re tr(xᴴy), the real inner product.
   static double innerProduct(const X& x, const X& y) {

@@ -3,15 +3,16 @@
 // distributed over MPI ranks (docs/distributed.md, "One step formula"). entries(x) is this
 // rank's local array; the operands of one formula share a layout, so element-wise
 // arithmetic on local arrays is the whole matrices' arithmetic. Products are pzgemm_,
-// adjoints an AdjointExchange, the 1-norm pzlange_, the inverse pzgetrf_ + pzgetri_; sums over the
-// ranks are ProcessGrid::sum (the same bits on every rank). All functions are collective.
+// adjoints an AdjointExchange, the 1-norm from column sums as the dense backend's, LU factors and
+// solves pzgetrf_ + pzgetrs_; sums over the ranks are ProcessGrid::sum (the same bits on every
+// rank). All functions are collective.
 #pragma once
 
 #include <ddb/core/binary_record.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/matrix_backend.h>
 #include <ddb/distributed/adjoint_exchange.h>
-#include <ddb/distributed/distributed_inverse.h>
+#include <ddb/distributed/distributed_lu.h>
 #include <ddb/distributed/distributed_matrix.h>
 #include <ddb/distributed/distributed_product.h>
 #include <ddb/distributed/rank_zero_record_reader.h>
@@ -33,7 +34,7 @@ struct MatrixBackend<DistributedMatrix> {
   using X = DistributedMatrix;
   using Scalar = std::complex<double>;
   using Entries = Eigen::MatrixXcd;
-  using Inverse = DistributedInverse;
+  using Lu = DistributedLu;
 
   static Entries& entries(X& x) { return x.local(); }
   static const Entries& entries(const X& x) { return x.local(); }
@@ -71,11 +72,14 @@ struct MatrixBackend<DistributedMatrix> {
   static double frobeniusDistance(const X& x, const X& y) {
     return std::sqrt(x.layout().grid().sum((x.local() - y.local()).squaredNorm()));
   }
+  /// ‖x‖₁ as the dense backend forms it (|z| from the squares, hypot's where they may have
+  /// under- or overflowed): this rank's column sums added over the process rows on rank 0,
+  /// whose largest is broadcast, so every rank has the same bits. pzlange_ took |z| by hypot,
+  /// a visible share of the step (docs/distributed.md, "The 1-norm and the factor by solves").
   static double oneNorm(const X& x) {
-    thread_local std::vector<double> work;
-    work.resize(static_cast<std::size_t>(std::max(1, x.layout().localCols())));
-    const int n = x.size(), one = 1;
-    return pzlange_("1", &n, &n, x.data(), &one, &one, x.descriptor(), work.data());
+    using Dense = MatrixBackend<Entries>;
+    const double fast = largestColumnSum(x, false);
+    return Dense::squaresWereExact(fast) ? fast : largestColumnSum(x, true);
   }
   static double innerProduct(const X& x, const X& y) {
     return x.layout().grid().sum(x.local().conjugate().cwiseProduct(y.local()).sum().real());
@@ -122,6 +126,26 @@ struct MatrixBackend<DistributedMatrix> {
     thread_local AdjointExchange plan;
     if (!plan.isFor(layout)) plan = AdjointExchange(layout);
     return plan;
+  }
+
+  // The largest Σ_i |x_ij| over the columns, |z| from the squares (MatrixBackend<Entries>::
+  // fastMagnitudes) or, where `exact`, by hypot; the same on every rank, NaN if an entry is.
+  static double largestColumnSum(const X& x, bool exact) {
+    const BlockCyclicLayout& layout = x.layout();
+    thread_local Eigen::RowVectorXd local;
+    thread_local Eigen::VectorXd sums, total;
+    if (exact) {
+      local.noalias() = x.local().cwiseAbs().colwise().sum();
+    } else {
+      local.noalias() = MatrixBackend<Entries>::fastMagnitudes(x.local()).colwise().sum();
+    }
+    sums.setZero(x.size());
+    for (int l = 0; l < layout.localCols(); ++l) sums(layout.globalCol(l)) = local(l);
+    total.resize(x.size());
+    MPI_Reduce(sums.data(), total.data(), x.size(), MPI_DOUBLE, MPI_SUM, 0, layout.grid().comm());
+    double largest = layout.grid().rank() == 0 ? total.maxCoeff<Eigen::PropagateNaN>() : 0.0;
+    MPI_Bcast(&largest, 1, MPI_DOUBLE, 0, layout.grid().comm());
+    return largest;
   }
 
   // f(local row, local column) for every local entry on the diagonal.

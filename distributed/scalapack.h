@@ -32,9 +32,9 @@ void pzgemm_(const char* transa, const char* transb, const int* m, const int* n,
              std::complex<double>* c, const int* ic, const int* jc, const int* descc);
 void pzgetrf_(const int* m, const int* n, std::complex<double>* a, const int* ia, const int* ja,
               const int* desca, int* ipiv, int* info);
-void pzgetri_(const int* n, std::complex<double>* a, const int* ia, const int* ja, const int* desca,
-              const int* ipiv, std::complex<double>* work, const int* lwork, int* iwork,
-              const int* liwork, int* info);
+void pzgetrs_(const char* trans, const int* n, const int* nrhs, const std::complex<double>* a,
+              const int* ia, const int* ja, const int* desca, const int* ipiv,
+              std::complex<double>* b, const int* ib, const int* jb, const int* descb, int* info);
 double pzlange_(const char* norm, const int* m, const int* n, const std::complex<double>* a,
                 const int* ia, const int* ja, const int* desca, double* work);
 }

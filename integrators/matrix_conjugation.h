@@ -5,7 +5,7 @@
 // linearly; the increment's rounding is relative to the change, which vanishes at a steady
 // state (docs/long-run.md, "Matrix groups").
 //   Cayley, τ(x) = cay(2b), b = x/2: with q = (I + b)⁻¹ μ (I − b)⁻¹,
-//     Ad*_{cay(2b)} μ = (I − b) q (I + b) = μ − 2[b, q]      (one inverse, three products);
+//     Ad*_{cay(2b)} μ = (I − b) q (I + b) = μ − 2[b, q]      (an LU, two solves, a product);
 //   exp: Ad*_{exp x} multiplies entry (a, b) of x's eigenbasis by e^{−iδ}, δ = θ_a − θ_b:
 //     μ + V [(e^{−iδ} − 1) ∘ Vᴴ μ V] Vᴴ                      (a decomposition, four products).
 // Workspaces are allocated when a size first appears, then reused. The Cayley conjugation
@@ -13,7 +13,6 @@
 // matrix.
 #pragma once
 
-#include <ddb/core/detail/dense_inverse.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/matrix_backend.h>
 #include <ddb/groups/cayley.h>
@@ -39,22 +38,28 @@ class MatrixConjugation<R, Dual, false> {
   using G = typename R::Group;
   static_assert(std::is_same_v<R, Cayley<G>>, "a matrix conjugation for Cayley or exp");
 
-  /// For τ(x) = cay(x): b = x/2 and (I + b)⁻¹. (I − b)⁻¹ = ((I + b)⁻¹)ᴴ as b is skew-Hermitian.
+  /// For τ(x) = cay(x): b = x/2 and the LU factors of I + b.
   void prepare(const Dual& x) {
     allocate(x);
     B::entries(half_) = 0.5 * B::entries(x);
     B::entries(resolvent_) = B::entries(half_);
     B::addToDiagonal(resolvent_, 1.0);
-    if (!inverse_.invert(resolvent_)) {
+    if (!lu_.factor(resolvent_)) {
       throw NonFiniteState("Cayley conjugation", -1, NAN, NAN, B::entries(x),
                            "Cayley argument (I + x/2 singular)");
     }
   }
 
-  /// μ ← μ − 2[b, q], q = (I + b)⁻¹ μ (I − b)⁻¹.
+  /// μ ← μ − 2[b, q], q = (I + b)⁻¹ μ (I − b)⁻¹. As b and μ are skew-Hermitian,
+  /// μ (I − b)⁻¹ = −((I + b)⁻¹ μ)ᴴ, so q = (I + b)⁻¹ (−((I + b)⁻¹ μ)ᴴ): two solves with the
+  /// factors of I + b, cheaper than forming the inverse and multiplying by it twice
+  /// (docs/design.md, "The Cayley conjugation by solves").
   void apply(Dual& mu) {
-    B::multiplyByAdjoint(mu, resolvent_, product_);
-    B::multiply(resolvent_, product_, q_);
+    B::entries(product_) = B::entries(mu);
+    lu_.solve(product_);  // (I + b)⁻¹ μ
+    B::entries(q_).setZero();
+    B::addAdjoint(-1.0, product_, q_);
+    lu_.solve(q_);
     applyWithSolution(half_, q_, mu);
   }
 
@@ -79,7 +84,7 @@ class MatrixConjugation<R, Dual, false> {
   }
 
   Dual half_, resolvent_, product_, commutator_, q_;
-  typename B::Inverse inverse_;
+  typename B::Lu lu_;
 };
 
 /// The exponential (closed form or truncated dexp⁻¹ alike: τ is exp).

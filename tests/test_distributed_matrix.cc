@@ -128,6 +128,19 @@ TEST_P(DistributedMatrixTest, SkewHermitianPartEqualsTheDenseBackendsBitForBit) 
   }
 }
 
+// ‖x‖₁ (the certificate's bound on ‖a‖₂) against Eigen's largest column sum, on every rank:
+// also where the squares underflow (entries near 1e-200) and the norm takes hypot's |z|.
+TEST_P(DistributedMatrixTest, OneNormMatchesEigenOnEveryRank) {
+  for (const double scale : {1.0, 1e-200}) {
+    const Eigen::MatrixXcd a = scale * randomComplexMatrix(n(), 44);
+    DistributedMatrix distributed(grid_, n(), block());
+    distributed.scatterFrom(a);
+    const double expected = a.cwiseAbs().colwise().sum().maxCoeff();
+    EXPECT_NEAR(MatrixBackend<DistributedMatrix>::oneNorm(distributed), expected, 1e-14 * expected)
+        << "scale " << scale;
+  }
+}
+
 TEST_P(DistributedMatrixTest, FrobeniusNormMatchesEigenOnEveryRank) {
   const Eigen::MatrixXcd a = randomComplexMatrix(n(), 31);
   DistributedMatrix distributed(grid_, n(), block());

@@ -2,7 +2,7 @@
 // library did not use to compute it: Eigen's eigensolver on the dense Laplacian, the
 // defining orthonormality of T_lm, central differences along the flow, the isospectral
 // midpoint rule written here from its own formula, the adaptive reference solver.
-#include <ddb/core/detail/dense_inverse.h>
+#include <ddb/core/detail/dense_lu.h>
 #include <ddb/integrators/correction_predictor.h>
 #include <ddb/integrators/ddb.h>
 #include <ddb/integrators/method_table.h>
@@ -418,24 +418,31 @@ TEST(CorrectionPredictor, APredictionBeyondTwiceTheRememberedCorrectionsFallsBac
   EXPECT_LT((guess - (near + newest)).norm(), 1e-12 * newest.norm());
 }
 
-// The LAPACK (or Eigen LU) inverse against Eigen's own inverse(), real and complex.
-TEST(DenseInverse, AgreesWithEigensInverseAndReportsASingularMatrix) {
+// The LAPACK (or Eigen LU) solves against Eigen's own inverse(), real and complex, with a
+// right-hand side of another width than N; a singular matrix is reported.
+TEST(DenseLu, SolvesAgreeWithEigensInverseAndASingularMatrixIsReported) {
   for (int n : {1, 2, 7, 40}) {
     Matrix A = Matrix::Random(n, n);
     A.diagonal().array() += 3.0;
-    Matrix inverse = A;
-    DenseInverse<Matrix> complex_inverse;
-    ASSERT_TRUE(complex_inverse.invert(inverse));
-    EXPECT_LT((inverse - A.inverse()).norm(), 1e-13 * A.inverse().norm()) << n;
+    const Matrix rhs = Matrix::Random(n, n + 3);
+    Matrix factors = A, solution = rhs;
+    DenseLu<Matrix> complex_lu;
+    ASSERT_TRUE(complex_lu.factor(factors));
+    complex_lu.solve(solution);
+    const Matrix expected = A.inverse() * rhs;
+    EXPECT_LT((solution - expected).norm(), 1e-13 * expected.norm()) << n;
     Eigen::MatrixXd R = Eigen::MatrixXd::Random(n, n) + 3.0 * Eigen::MatrixXd::Identity(n, n);
-    Eigen::MatrixXd real_inverse = R;
-    DenseInverse<Eigen::MatrixXd> real;
-    ASSERT_TRUE(real.invert(real_inverse));
-    EXPECT_LT((real_inverse - R.inverse()).norm(), 1e-13 * R.inverse().norm()) << n;
+    const Eigen::MatrixXd real_rhs = Eigen::MatrixXd::Random(n, 2);
+    Eigen::MatrixXd real_factors = R, real_solution = real_rhs;
+    DenseLu<Eigen::MatrixXd> real;
+    ASSERT_TRUE(real.factor(real_factors));
+    real.solve(real_solution);
+    const Eigen::MatrixXd real_expected = R.inverse() * real_rhs;
+    EXPECT_LT((real_solution - real_expected).norm(), 1e-13 * real_expected.norm()) << n;
   }
   Matrix singular = Matrix::Zero(3, 3);
-  DenseInverse<Matrix> inverse;
-  EXPECT_FALSE(inverse.invert(singular));
+  DenseLu<Matrix> lu;
+  EXPECT_FALSE(lu.factor(singular));
 }
 
 // One DDB Cayley step equals Uᴴ M U with U = cay(2a) cay(2b), a = hξ(p)/2 and

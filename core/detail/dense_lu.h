@@ -1,0 +1,88 @@
+// DenseLu: the LU factorisation of a square dynamic-size matrix (real or complex) and
+// solves with it in place, with pivots allocated when a size first appears, then reused
+// (no allocation per call). The Cayley conjugation (integrators/matrix_conjugation.h)
+// factors I + b once per step and solves with it twice: with Debian's OpenBLAS that costs
+// less than forming the inverse and multiplying by it (docs/design.md, "The Cayley
+// conjugation by solves"). With DDB_USE_LAPACK (set by the build when a LAPACK and LAPACKE
+// are found next to the BLAS) it calls ?getrf + ?getrs, which cost half of Eigen's own LU,
+// the fallback (docs/design.md, "Measured, and what it decided").
+#pragma once
+
+#include <ddb/core/detail/lapack.h>
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+#include <complex>
+#include <type_traits>
+#include <vector>
+
+namespace ddb {
+
+template <class Matrix>
+class DenseLu {
+ public:
+  using Scalar = typename Matrix::Scalar;
+  static_assert(std::is_same_v<Scalar, double> || std::is_same_v<Scalar, std::complex<double>>,
+                "DenseLu factors double or std::complex<double> matrices");
+
+  /// A ← its LU factors (A is kept for solve()). Returns false when A is exactly singular.
+  bool factor(Matrix& A) {
+    allocate(A.rows());
+    factors_ = &A;
+#ifdef DDB_USE_LAPACK
+    // The _work variants with column-major storage call ?getrf/?getrs directly: no copy,
+    // no NaN scan.
+    const auto n = static_cast<lapack_int>(A.rows());
+    if constexpr (std::is_same_v<Scalar, double>) {
+      return LAPACKE_dgetrf_work(LAPACK_COL_MAJOR, n, n, A.data(), n, pivots_.data()) == 0;
+    } else {
+      return LAPACKE_zgetrf_work(LAPACK_COL_MAJOR, n, n, lapackData(A.data()), n, pivots_.data()) ==
+             0;
+    }
+#else
+    lu_.compute(A);
+    // Eigen's partial-pivoting LU has no singularity flag: an exactly zero pivot shows.
+    return !(lu_.matrixLU().diagonal().array() == Scalar(0)).any();
+#endif
+  }
+
+  /// X ← A⁻¹X with the A of the last successful factor() (X: A's rows, any columns).
+  void solve(Matrix& X) {
+#ifdef DDB_USE_LAPACK
+    const auto n = static_cast<lapack_int>(factors_->rows());
+    const auto columns = static_cast<lapack_int>(X.cols());
+    if constexpr (std::is_same_v<Scalar, double>) {
+      LAPACKE_dgetrs_work(LAPACK_COL_MAJOR, 'N', n, columns, factors_->data(), n, pivots_.data(),
+                          X.data(), n);
+    } else {
+      LAPACKE_zgetrs_work(LAPACK_COL_MAJOR, 'N', n, columns, lapackData(factors_->data()), n,
+                          pivots_.data(), lapackData(X.data()), n);
+    }
+#else
+    solved_.noalias() = lu_.solve(X);  // Eigen's solve may not alias its right-hand side
+    X.swap(solved_);
+#endif
+  }
+
+ private:
+  void allocate(Eigen::Index n) {
+    if (size_ == n) return;
+    size_ = n;
+#ifdef DDB_USE_LAPACK
+    pivots_.assign(static_cast<std::size_t>(n), 0);
+#else
+    lu_ = Eigen::PartialPivLU<Matrix>(n);
+#endif
+  }
+
+  Eigen::Index size_ = -1;
+  Matrix* factors_ = nullptr;
+#ifdef DDB_USE_LAPACK
+  std::vector<lapack_int> pivots_;
+#else
+  Eigen::PartialPivLU<Matrix> lu_;
+  Matrix solved_;
+#endif
+};
+
+}  // namespace ddb
