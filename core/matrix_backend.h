@@ -45,8 +45,6 @@ struct MatrixBackend {
 
   /// out = a b (out aliases neither).
   static void multiply(const X& a, const X& b, X& out) { out.noalias() = a * b; }
-  /// out = a bᴴ (out aliases neither).
-  static void multiplyByAdjoint(const X& a, const X& b, X& out) { out.noalias() = a * b.adjoint(); }
   /// out += scale·xᴴ (out is not x).
   static void addAdjoint(double scale, const X& x, X& out) { out += scale * x.adjoint(); }
   /// x ← (x − xᴴ)/2 in place, skew-Hermitian bit for bit: entry (j, i) is −conj(entry (i, j)),

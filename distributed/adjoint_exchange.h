@@ -100,7 +100,7 @@ class AdjointExchange {
   }
 
   /// Collective: x ← (x − xᴴ)/2 entry by entry, so that entry (j, i) is −conj of entry (i, j)
-  /// bit for bit (fl(a − b) = −fl(b − a)).
+  /// bit for bit (fl(a − b) = −fl(b − a)) but for the sign of a zero.
   void makeSkewHermitian(Eigen::MatrixXcd& x) {
     exchange(x);
     forEachReceived([](auto& place, const auto& adjoint) { place = 0.5 * (place - adjoint); }, x);

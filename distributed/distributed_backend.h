@@ -45,12 +45,6 @@ struct MatrixBackend<DistributedMatrix> {
   static Eigen::Index globalSize(const X& x) { return Eigen::Index(x.size()) * x.size(); }
 
   static void multiply(const X& a, const X& b, X& out) { ddb::multiply(a, b, out); }
-  static void multiplyByAdjoint(const X& a, const X& b, X& out) {
-    const int n = a.size(), one = 1;
-    const Scalar alpha(1.0), beta(0.0);
-    pzgemm_("N", "C", &n, &n, &n, &alpha, a.data(), &one, &one, a.descriptor(), b.data(), &one,
-            &one, b.descriptor(), &beta, out.data(), &one, &one, out.descriptor());
-  }
   static void addAdjoint(double scale, const X& x, X& out) {
     adjointExchange(x.layout()).addAdjoint(scale, x.local(), out.local());
   }

@@ -14,24 +14,23 @@ namespace ddb {
 
 class DistributedLu {
  public:
-  /// A ← its LU factors (A is kept for solve()). Returns false on every rank when A is
+  /// A ← its LU factors (solve() takes the same A). Returns false on every rank when A is
   /// exactly singular.
   bool factor(DistributedMatrix& A) {
     const int n = A.size(), one = 1;
     const BlockCyclicLayout& layout = A.layout();
     pivots_.resize(static_cast<std::size_t>(layout.localRows() + layout.block()));
-    factors_ = &A;
     int info = 0;
     pzgetrf_(&n, &n, A.data(), &one, &one, A.descriptor(), pivots_.data(), &info);
     return !failedOnAnyRank(A, info);
   }
 
-  /// X ← A⁻¹X with the A of the last successful factor() (X of A's layout); collective.
-  void solve(DistributedMatrix& X) {
+  /// X ← A⁻¹X, given the A of the last successful factor() (X of A's layout); collective.
+  void solve(const DistributedMatrix& A, DistributedMatrix& X) {
     const int n = X.size(), one = 1;
     int info = 0;
-    pzgetrs_("N", &n, &n, factors_->data(), &one, &one, factors_->descriptor(), pivots_.data(),
-             X.data(), &one, &one, X.descriptor(), &info);
+    pzgetrs_("N", &n, &n, A.data(), &one, &one, A.descriptor(), pivots_.data(), X.data(), &one,
+             &one, X.descriptor(), &info);
   }
 
  private:
@@ -41,7 +40,6 @@ class DistributedLu {
   }
 
   std::vector<int> pivots_;
-  const DistributedMatrix* factors_ = nullptr;
 };
 
 }  // namespace ddb

@@ -8,7 +8,8 @@
 // The first factor: with p̃ = (I + a)⁻¹ M (I − a)⁻¹, the solution of the frozen-a equation
 // (I + a) p̃ (I − a) = M, Ad*_{cay(2a)} M = (I − a) p̃ (I + a) = M − 2[a, p̃]: one product
 // when the solver certified p̃ to rounding (MatrixLegendreSolver::frozenSolution), else the
-// same identity with p̃ formed, by one inverse and three products (matrix_conjugation.h). The
+// same identity with p̃ formed, by an LU factorisation, two solves and one product
+// (matrix_conjugation.h). The
 // second, with dissipation: [p, a] = (ap)ᴴ − ap from the solver's a p, b = k♯([p, a]), and
 // the identity with b, M − 2[b, q]. The workspaces are allocated when the size first
 // appears, then reused. Written against the matrix backend (core/matrix_backend.h) and the

@@ -56,10 +56,10 @@ class MatrixConjugation<R, Dual, false> {
   /// (docs/design.md, "The Cayley conjugation by solves").
   void apply(Dual& mu) {
     B::entries(product_) = B::entries(mu);
-    lu_.solve(product_);  // (I + b)⁻¹ μ
+    lu_.solve(resolvent_, product_);  // (I + b)⁻¹ μ
     B::entries(q_).setZero();
     B::addAdjoint(-1.0, product_, q_);
-    lu_.solve(q_);
+    lu_.solve(resolvent_, q_);
     applyWithSolution(half_, q_, mu);
   }
 

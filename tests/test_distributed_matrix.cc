@@ -136,8 +136,11 @@ TEST_P(DistributedMatrixTest, OneNormMatchesEigenOnEveryRank) {
     DistributedMatrix distributed(grid_, n(), block());
     distributed.scatterFrom(a);
     const double expected = a.cwiseAbs().colwise().sum().maxCoeff();
-    EXPECT_NEAR(MatrixBackend<DistributedMatrix>::oneNorm(distributed), expected, 1e-14 * expected)
-        << "scale " << scale;
+    const double norm = MatrixBackend<DistributedMatrix>::oneNorm(distributed);
+    EXPECT_NEAR(norm, expected, 1e-14 * expected) << "scale " << scale;
+    double rank_zeros = norm;  // every rank must have rank 0's bits
+    MPI_Bcast(&rank_zeros, 1, MPI_DOUBLE, 0, grid_.comm());
+    EXPECT_EQ(norm, rank_zeros) << "scale " << scale;
   }
 }
 

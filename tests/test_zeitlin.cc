@@ -428,15 +428,19 @@ TEST(DenseLu, SolvesAgreeWithEigensInverseAndASingularMatrixIsReported) {
     Matrix factors = A, solution = rhs;
     DenseLu<Matrix> complex_lu;
     ASSERT_TRUE(complex_lu.factor(factors));
-    complex_lu.solve(solution);
+    complex_lu.solve(factors, solution);
     const Matrix expected = A.inverse() * rhs;
     EXPECT_LT((solution - expected).norm(), 1e-13 * expected.norm()) << n;
+    // A second solve with the same factors (the Cayley conjugation makes two).
+    complex_lu.solve(factors, solution);
+    const Matrix expected_twice = A.inverse() * expected;
+    EXPECT_LT((solution - expected_twice).norm(), 1e-13 * expected_twice.norm()) << n;
     Eigen::MatrixXd R = Eigen::MatrixXd::Random(n, n) + 3.0 * Eigen::MatrixXd::Identity(n, n);
     const Eigen::MatrixXd real_rhs = Eigen::MatrixXd::Random(n, 2);
     Eigen::MatrixXd real_factors = R, real_solution = real_rhs;
     DenseLu<Eigen::MatrixXd> real;
     ASSERT_TRUE(real.factor(real_factors));
-    real.solve(real_solution);
+    real.solve(real_factors, real_solution);
     const Eigen::MatrixXd real_expected = R.inverse() * real_rhs;
     EXPECT_LT((real_solution - real_expected).norm(), 1e-13 * real_expected.norm()) << n;
   }

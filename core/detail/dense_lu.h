@@ -25,10 +25,11 @@ class DenseLu {
   static_assert(std::is_same_v<Scalar, double> || std::is_same_v<Scalar, std::complex<double>>,
                 "DenseLu factors double or std::complex<double> matrices");
 
-  /// A ← its LU factors (A is kept for solve()). Returns false when A is exactly singular.
+  /// Factors A: with LAPACK A ← its LU factors, with Eigen's LU A is left as it is and
+  /// the factors are kept here. Returns false when A is exactly singular. solve() takes the
+  /// same A, so that nothing here points at the caller's matrix.
   bool factor(Matrix& A) {
     allocate(A.rows());
-    factors_ = &A;
 #ifdef DDB_USE_LAPACK
     // The _work variants with column-major storage call ?getrf/?getrs directly: no copy,
     // no NaN scan.
@@ -46,19 +47,20 @@ class DenseLu {
 #endif
   }
 
-  /// X ← A⁻¹X with the A of the last successful factor() (X: A's rows, any columns).
-  void solve(Matrix& X) {
+  /// X ← A⁻¹X, given the A of the last successful factor() (X: A's rows, any columns).
+  void solve(const Matrix& A, Matrix& X) {
 #ifdef DDB_USE_LAPACK
-    const auto n = static_cast<lapack_int>(factors_->rows());
+    const auto n = static_cast<lapack_int>(A.rows());
     const auto columns = static_cast<lapack_int>(X.cols());
     if constexpr (std::is_same_v<Scalar, double>) {
-      LAPACKE_dgetrs_work(LAPACK_COL_MAJOR, 'N', n, columns, factors_->data(), n, pivots_.data(),
-                          X.data(), n);
+      LAPACKE_dgetrs_work(LAPACK_COL_MAJOR, 'N', n, columns, A.data(), n, pivots_.data(), X.data(),
+                          n);
     } else {
-      LAPACKE_zgetrs_work(LAPACK_COL_MAJOR, 'N', n, columns, lapackData(factors_->data()), n,
+      LAPACKE_zgetrs_work(LAPACK_COL_MAJOR, 'N', n, columns, lapackData(A.data()), n,
                           pivots_.data(), lapackData(X.data()), n);
     }
 #else
+    static_cast<void>(A);
     solved_.noalias() = lu_.solve(X);  // Eigen's solve may not alias its right-hand side
     X.swap(solved_);
 #endif
@@ -76,7 +78,6 @@ class DenseLu {
   }
 
   Eigen::Index size_ = -1;
-  Matrix* factors_ = nullptr;
 #ifdef DDB_USE_LAPACK
   std::vector<lapack_int> pivots_;
 #else

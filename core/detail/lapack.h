@@ -15,6 +15,9 @@ namespace ddb {
 inline lapack_complex_double* lapackData(std::complex<double>* z) {
   return reinterpret_cast<lapack_complex_double*>(z);
 }
+inline const lapack_complex_double* lapackData(const std::complex<double>* z) {
+  return reinterpret_cast<const lapack_complex_double*>(z);
+}
 
 }  // namespace ddb
 #endif
