@@ -4,6 +4,7 @@
 #pragma once
 
 #include <ddb/core/errors.h>
+#include <ddb/core/parallel_passes.h>
 
 #include <string>
 
@@ -32,7 +33,13 @@ class ScaledIdentityMetric final : public DissipationMetric<G> {
 
   explicit ScaledIdentityMetric(double alpha) : alpha_(requireFinite("alpha", alpha)) {}
   Algebra sharp(const Dual& mu) const override { return alpha_ * mu; }
-  void sharpInto(const Dual& mu, Algebra& out) const override { out = alpha_ * mu; }
+  void sharpInto(const Dual& mu, Algebra& out) const override {
+    if constexpr (Algebra::SizeAtCompileTime == Eigen::Dynamic) {
+      assignInParallel(out, alpha_ * mu);  // a matrix algebra: an O(N²) pass of the step
+    } else {
+      out = alpha_ * mu;
+    }
+  }
   double alpha() const { return alpha_; }
 
  private:

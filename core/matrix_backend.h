@@ -12,9 +12,15 @@
 #pragma once
 
 #include <ddb/core/binary_record.h>
+#include <ddb/core/detail/blas_threads.h>
 #include <ddb/core/detail/dense_lu.h>
+#include <ddb/core/thread_pool.h>
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
 #include <complex>
 #include <limits>
 #include <utility>
@@ -43,21 +49,84 @@ struct MatrixBackend {
   /// The number of entries of the whole matrix.
   static Eigen::Index globalSize(const X& x) { return x.size(); }
 
-  /// out = a b (out aliases neither).
-  static void multiply(const X& a, const X& b, X& out) { out.noalias() = a * b; }
-  /// out += scale·xᴴ (out is not x).
-  static void addAdjoint(double scale, const X& x, X& out) { out += scale * x.adjoint(); }
-  /// x ← (x − xᴴ)/2 in place, skew-Hermitian bit for bit: entry (j, i) is −conj(entry (i, j)),
-  /// the diagonal imaginary (zero for real x).
-  static void makeSkewHermitian(X& x) {
-    for (Eigen::Index j = 0; j < x.cols(); ++j) {
-      for (Eigen::Index i = 0; i < j; ++i) {
-        const Scalar v = 0.5 * (x(i, j) - Eigen::numext::conj(x(j, i)));
-        x(i, j) = v;
-        x(j, i) = -Eigen::numext::conj(v);
-      }
-      x(j, j) = 0.5 * (x(j, j) - Eigen::numext::conj(x(j, j)));
+  /// out = a b (out aliases neither). Under a single-threaded BLAS, by chunks of columns of
+  /// out, one BLAS call each, on the library's threads (core/detail/blas_threads.h).
+  static void multiply(const X& a, const X& b, X& out) {
+    if (detail::blasThreadCount() != 1) {
+      out.noalias() = a * b;
+      return;
     }
+    out.resize(a.rows(), b.cols());
+    ThreadPool::instance().forColumnChunks(
+        b.cols(), detail::blasChunkWidth(b.cols()), [&](long first, long count) {
+          out.middleCols(first, count).noalias() = a * b.middleCols(first, count);
+        });
+  }
+  /// out += scale·xᴴ (out is not x). Tile by tile, each tile of x read by columns into a
+  /// small buffer first (transposingTiles below), tile columns on the library's threads
+  /// (core/thread_pool.h).
+  static void addAdjoint(double scale, const X& x, X& out) {
+    const Eigen::Index n = out.rows(), m = out.cols(), tiles = (m + kTile - 1) / kTile;
+    ThreadPool& pool = ThreadPool::instance();
+    const int tasks = static_cast<int>(std::min<long>(pool.tasksFor(n * m), tiles));
+    pool.run(tasks, [&](int task) {
+      Tile buffer;
+      const Eigen::Index first = tiles * task / tasks, end = tiles * (task + 1) / tasks;
+      for (Eigen::Index j0 = first * kTile; j0 < std::min(m, end * kTile); j0 += kTile) {
+        const Eigen::Index cols = std::min(kTile, m - j0);
+        for (Eigen::Index i0 = 0; i0 < n; i0 += kTile) {
+          const Eigen::Index rows = std::min(kTile, n - i0);
+          loadTransposed(x, j0, i0, cols, rows, buffer);  // buffer(a, b) = x(j0 + b, i0 + a)
+          for (Eigen::Index b = 0; b < cols; ++b) {
+            for (Eigen::Index a = 0; a < rows; ++a) {
+              out(i0 + a, j0 + b) += scale * Eigen::numext::conj(buffer(a, b));
+            }
+          }
+        }
+      }
+    });
+  }
+  /// x ← (x − xᴴ)/2 in place, skew-Hermitian bit for bit: entry (j, i) is −conj(entry (i, j)),
+  /// the diagonal imaginary (zero for real x). Tile pairs (I, J), (J, I) of the upper
+  /// triangle's tiles, the lower one through a buffer; tile columns on the library's threads
+  /// in shares of equal work.
+  static void makeSkewHermitian(X& x) {
+    const Eigen::Index n = x.cols(), tiles = (n + kTile - 1) / kTile;
+    ThreadPool& pool = ThreadPool::instance();
+    const int tasks = static_cast<int>(std::min<long>(pool.tasksFor(n * n / 2), tiles));
+    pool.run(tasks, [&](int task) {
+      // Tile column J holds J + 1 tiles of the triangle: the first J of task k is about
+      // tiles·√(k/tasks).
+      const auto split = [&](int k) {
+        return static_cast<Eigen::Index>(std::lround(double(tiles) * std::sqrt(double(k) / tasks)));
+      };
+      Tile buffer;
+      for (Eigen::Index tj = split(task); tj < split(task + 1); ++tj) {
+        const Eigen::Index j0 = tj * kTile, cols = std::min(kTile, n - j0);
+        for (Eigen::Index i0 = 0; i0 < j0; i0 += kTile) {
+          loadTransposed(x, j0, i0, cols, kTile, buffer);  // buffer(a, b) = x(j0 + b, i0 + a)
+          for (Eigen::Index b = 0; b < cols; ++b) {
+            for (Eigen::Index a = 0; a < kTile; ++a) {
+              const Scalar v = 0.5 * (x(i0 + a, j0 + b) - Eigen::numext::conj(buffer(a, b)));
+              x(i0 + a, j0 + b) = v;
+              buffer(a, b) = -Eigen::numext::conj(v);
+            }
+          }
+          for (Eigen::Index a = 0; a < kTile; ++a) {
+            for (Eigen::Index b = 0; b < cols; ++b) x(j0 + b, i0 + a) = buffer(a, b);
+          }
+        }
+        // The diagonal tile, in place.
+        for (Eigen::Index j = j0; j < j0 + cols; ++j) {
+          for (Eigen::Index i = j0; i < j; ++i) {
+            const Scalar v = 0.5 * (x(i, j) - Eigen::numext::conj(x(j, i)));
+            x(i, j) = v;
+            x(j, i) = -Eigen::numext::conj(v);
+          }
+          x(j, j) = 0.5 * (x(j, j) - Eigen::numext::conj(x(j, j)));
+        }
+      }
+    });
   }
   static Scalar trace(const X& x) { return x.trace(); }
   /// x ← x + c·I.
@@ -71,10 +140,12 @@ struct MatrixBackend {
   /// visible share of a fluid step (docs/design.md, "Threads"). Where |z|² may have under-
   /// or overflowed (a norm that is tiny or not finite) hypot's exact |z| is used. NaN
   /// entries make it NaN.
+  /// Column ranges on the library's threads: the largest sum does not depend on them.
   static double oneNorm(const X& x) {
-    const double fast = fastMagnitudes(x).colwise().sum().template maxCoeff<Eigen::PropagateNaN>();
+    const double fast =
+        largestColumnSum(x, [](const auto& block) { return fastMagnitudes(block); });
     if (squaresWereExact(fast)) return fast;
-    return x.cwiseAbs().colwise().sum().template maxCoeff<Eigen::PropagateNaN>();
+    return largestColumnSum(x, [](const auto& block) { return block.cwiseAbs(); });
   }
   /// |x_ij| = √(Re² + Im²) entry by entry (an expression on an Eigen matrix: the distributed
   /// backend's local blocks too).
@@ -92,7 +163,17 @@ struct MatrixBackend {
   static double innerProduct(const X& x, const X& y) {
     return Eigen::numext::real(x.conjugate().cwiseProduct(y).sum());
   }
-  static bool isZero(const X& x) { return x.isZero(0.0); }
+  /// Whether every entry is exactly zero (NaN is not).
+  static bool isZero(const X& x) {
+    std::atomic<bool> nonzero{false};
+    ThreadPool::instance().forColumnRanges(x.rows(), x.cols(), [&](long first, long count) {
+      // Exactly zero: Eigen's isZero(0) compares |z|², which underflows below 1e-154.
+      if ((x.middleCols(first, count).array() != Scalar(0)).any()) {
+        nonzero.store(true, std::memory_order_relaxed);
+      }
+    });
+    return !nonzero.load(std::memory_order_relaxed);
+  }
 
   /// out(s) = x(indices(s)) with column-major linear indices into the whole matrix.
   template <class Indices, class Out>
@@ -108,6 +189,44 @@ struct MatrixBackend {
     in.get(read);
     if (!sameShape(read, x)) throw CorruptRecord("a matrix of another size than the state");
     x = std::move(read);
+  }
+
+ private:
+  // The transposing passes go tile by tile and read the transposed tile by its columns:
+  // reading it along its rows strides by a column's length, which for N a multiple of 256
+  // (complex) maps every access to the same cache set, and that pass took twelve times a copy.
+  static constexpr Eigen::Index kTile = 32;
+  using Tile = Eigen::Matrix<Scalar, kTile, kTile>;
+
+  // The largest column sum of magnitudes(block) over the columns of x, NaN if any is NaN.
+  template <class Magnitudes>
+  static double largestColumnSum(const X& x, const Magnitudes& magnitudes) {
+    if (x.cols() == 0) return 0.0;
+    ThreadPool& pool = ThreadPool::instance();
+    std::array<double, ThreadPool::kMaxTasks> largest;
+    const int tasks = static_cast<int>(std::min<long>(pool.tasksFor(x.size()), x.cols()));
+    pool.run(tasks, [&](int task) {
+      const Eigen::Index first = x.cols() * task / tasks, end = x.cols() * (task + 1) / tasks;
+      largest[static_cast<std::size_t>(task)] = magnitudes(x.middleCols(first, end - first))
+                                                    .colwise()
+                                                    .sum()
+                                                    .template maxCoeff<Eigen::PropagateNaN>();
+    });
+    double result = largest[0];
+    for (int task = 1; task < tasks; ++task) {
+      const double value = largest[static_cast<std::size_t>(task)];
+      if (std::isnan(value) || value > result) result = value;
+    }
+    return result;
+  }
+
+  // buffer(a, b) = x(row + b, col + a) for b < rows, a < cols: the block of x at (row, col),
+  // transposed, read column by column.
+  static void loadTransposed(const X& x, Eigen::Index row, Eigen::Index col, Eigen::Index rows,
+                             Eigen::Index cols, Tile& buffer) {
+    for (Eigen::Index a = 0; a < cols; ++a) {
+      for (Eigen::Index b = 0; b < rows; ++b) buffer(a, b) = x(row + b, col + a);
+    }
   }
 };
 

@@ -14,6 +14,7 @@
 #include <ddb/core/errors.h>
 #include <ddb/core/lie_group.h>
 #include <ddb/core/matrix_backend.h>
+#include <ddb/core/parallel_passes.h>
 #include <ddb/groups/skew_hermitian_eigenbasis.h>
 
 #include <Eigen/Core>
@@ -215,7 +216,7 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
   static void cayleyFixedPointGiven(const X& W, const X& a, const X& ap, X& apa, X& out) {
     using B = MatrixBackend<X>;
     B::multiply(ap, a, apa);
-    B::entries(out) = B::entries(W) - B::entries(ap) + B::entries(apa);
+    assignInParallel(B::entries(out), B::entries(W) - B::entries(ap) + B::entries(apa));
     B::addAdjoint(1.0, ap, out);
   }
 
@@ -223,7 +224,7 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
   template <class X>
   static void commutatorFromProduct(const X& ap, X& out) {
     using B = MatrixBackend<X>;
-    B::entries(out) = -B::entries(ap);
+    assignInParallel(B::entries(out), -B::entries(ap));
     B::addAdjoint(1.0, ap, out);
   }
 
@@ -236,11 +237,11 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
     using B = MatrixBackend<X>;
     B::multiply(a, delta, t1);
     B::multiply(t1, a, t2);
-    B::entries(out) = B::entries(delta) + B::entries(t1) - B::entries(t2);
+    assignInParallel(B::entries(out), B::entries(delta) + B::entries(t1) - B::entries(t2));
     B::addAdjoint(-1.0, t1, out);
     B::multiply(delta_a, p, t1);
     B::multiply(t1, a, t2);
-    B::entries(out) += B::entries(t1) - B::entries(t2);
+    addInParallel(B::entries(out), B::entries(t1) - B::entries(t2));
     B::addAdjoint(-1.0, t1, out);
     B::addAdjoint(1.0, t2, out);
   }

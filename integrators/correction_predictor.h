@@ -18,6 +18,7 @@
 
 #include <ddb/core/binary_record.h>
 #include <ddb/core/matrix_backend.h>
+#include <ddb/core/parallel_passes.h>
 
 #include <Eigen/Core>
 #include <Eigen/QR>
@@ -46,7 +47,7 @@ class CorrectionPredictor {
   /// largest remembered one (on the sketch) means the state does not continue the
   /// remembered ones (a caller that skipped reset()): then the newest correction alone.
   void predict(const Matrix& near, Matrix& out) const {
-    B::entries(out) = B::entries(near);
+    assignInParallel(B::entries(out), B::entries(near));
     if (count_ == 0) return;
     const int m = order_;
     predicted_.setZero();
@@ -61,13 +62,17 @@ class CorrectionPredictor {
       return;
     }
     // Column block by column block, so that each block of out stays in cache while the m
-    // corrections are added (one pass over memory instead of m).
-    for (Eigen::Index first = 0; first < entries.cols(); first += kBlockColumns) {
-      const Eigen::Index width = std::min(kBlockColumns, entries.cols() - first);
-      auto block = entries.middleCols(first, width);
-      for (int j = 0; j < m; ++j)
-        block += coefficients_(j) * B::entries(correction(j)).middleCols(first, width);
-    }
+    // corrections are added (one pass over memory instead of m); column ranges on the
+    // library's threads.
+    ThreadPool::instance().forColumnRanges(
+        entries.rows(), entries.cols(), [&](Eigen::Index begin, Eigen::Index count) {
+          for (Eigen::Index first = begin; first < begin + count; first += kBlockColumns) {
+            const Eigen::Index width = std::min(kBlockColumns, begin + count - first);
+            auto block = entries.middleCols(first, width);
+            for (int j = 0; j < m; ++j)
+              block += coefficients_(j) * B::entries(correction(j)).middleCols(first, width);
+          }
+        });
   }
 
   /// The remembered corrections, their sketches and the fitted coefficients
@@ -110,7 +115,7 @@ class CorrectionPredictor {
     allocate(near);
     ++count_;
     Matrix& c = corrections_[static_cast<std::size_t>((count_ - 1) % kOrder)];
-    B::entries(c) = B::entries(solution) - B::entries(near);
+    assignInParallel(B::entries(c), B::entries(solution) - B::entries(near));
     auto sketch = sketches_.col(sketchSlot(0));
     B::sampleEntries(c, sample_, sketch);
     fit();

@@ -15,6 +15,7 @@
 
 #include <ddb/core/errors.h>
 #include <ddb/core/matrix_backend.h>
+#include <ddb/core/parallel_passes.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/exponential.h>
 #include <ddb/groups/skew_hermitian_eigenbasis.h>
@@ -41,8 +42,8 @@ class MatrixConjugation<R, Dual, false> {
   /// For τ(x) = cay(x): b = x/2 and the LU factors of I + b.
   void prepare(const Dual& x) {
     allocate(x);
-    B::entries(half_) = 0.5 * B::entries(x);
-    B::entries(resolvent_) = B::entries(half_);
+    assignInParallel(B::entries(half_), 0.5 * B::entries(x));
+    assignInParallel(B::entries(resolvent_), B::entries(half_));
     B::addToDiagonal(resolvent_, 1.0);
     if (!lu_.factor(resolvent_)) {
       throw NonFiniteState("Cayley conjugation", -1, NAN, NAN, B::entries(x),
@@ -55,7 +56,7 @@ class MatrixConjugation<R, Dual, false> {
   /// factors of I + b, cheaper than forming the inverse and multiplying by it twice
   /// (docs/design.md, "The Cayley conjugation by solves").
   void apply(Dual& mu) {
-    B::entries(product_) = B::entries(mu);
+    assignInParallel(B::entries(product_), B::entries(mu));
     lu_.solve(resolvent_, product_);  // (I + b)⁻¹ μ
     B::entries(q_).setZero();
     B::addAdjoint(-1.0, product_, q_);
@@ -74,7 +75,7 @@ class MatrixConjugation<R, Dual, false> {
     // and μ − 2bq + 2(bq)ᴴ in two passes rounds μ − 2bq to full size, with the same rounding
     // at every step of a steady flow (a linear drift of the spectrum, docs/long-run.md).
     G::commutatorFromProduct(product_, commutator_);  // (bq)ᴴ − bq = −[b, q]
-    B::entries(mu) += 2.0 * B::entries(commutator_);
+    addInParallel(B::entries(mu), 2.0 * B::entries(commutator_));
   }
 
  private:

@@ -14,10 +14,13 @@
 #pragma once
 
 #include <ddb/core/errors.h>
+#include <ddb/core/parallel_passes.h>
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ddb {
@@ -70,37 +73,21 @@ class HoppeYauLaplacian {
   }
 
   /// out = Δ⁻¹ (W − tr(W)/N · I), the traceless solution (Poisson solve, O(N²)).
-  /// out may alias W.
+  /// out may alias W. Bands of diagonals, each swept alone, on the library's threads
+  /// (core/thread_pool.h): the same operations on every entry whatever their number.
   template <class X>
   void solve(const X& W, X& out) const {
     requireSize(W);
     const auto mean = W.trace() / typename X::Scalar(double(n_));
-    if (&out != &W) out = W;
+    if (&out != &W) {
+      out.resize(n_, n_);
+      assignInParallel(out, W);
+    }
     out.diagonal().array() -= mean;
-    const Eigen::Index n = n_;
-    // Forward sweep L y = b on every diagonal: y(i, j) −= lower(i, j) y(i − 1, j − 1).
-    for (Eigen::Index j = 1; j < n; ++j) {
-      auto* y = &out(0, j);
-      const auto* previous = &out(0, j - 1);
-      const double* lower = &lower_(0, j);
-      for (Eigen::Index i = 1; i < n; ++i) y[i] -= lower[i] * previous[i - 1];
-    }
-    // Back substitution D Lᵀ x = y: x(i, j) = y(i, j)/w(i, j) − lower(i + 1, j + 1) x(i + 1, j +
-    // 1). The pinned unknown of m = 0 has 1/w = 0 and lower(1, 1) = 0, so it comes out 0.
-    for (Eigen::Index j = n - 1; j >= 0; --j) {
-      auto* x = &out(0, j);
-      const double* inverse_pivot = &inverse_pivot_(0, j);
-      if (j + 1 == n) {
-        for (Eigen::Index i = 0; i < n; ++i) x[i] *= inverse_pivot[i];
-        continue;
-      }
-      const auto* next = &out(0, j + 1);
-      const double* lower = &lower_(0, j + 1);
-      for (Eigen::Index i = 0; i + 1 < n; ++i) {
-        x[i] = x[i] * inverse_pivot[i] - lower[i + 1] * next[i + 1];
-      }
-      x[n - 1] *= inverse_pivot[n - 1];
-    }
+    ThreadPool& pool = ThreadPool::instance();
+    const int tasks = pool.tasksFor(n_ * n_);
+    pool.run(tasks,
+             [&](int task) { solveBand(bandStart(task, tasks), bandStart(task + 1, tasks), out); });
     out.diagonal().array() -= out.diagonal().mean();
   }
 
@@ -127,6 +114,53 @@ class HoppeYauLaplacian {
   }
 
  private:
+  // The first diagonal m of band `task` of `tasks`: bands of about equal numbers of entries,
+  // from m = −(N − 1) up (diagonal m has N − |m|).
+  Eigen::Index bandStart(int task, int tasks) const {
+    if (task == 0) return -(n_ - 1);
+    if (task == tasks) return n_;
+    const long target = n_ * n_ * task / tasks;
+    long below = 0;
+    Eigen::Index m = -(n_ - 1);
+    while (m < n_ && below + (n_ - std::abs(m)) <= target) below += n_ - std::abs(m++);
+    return m;
+  }
+
+  // The sweeps of solve on diagonals first <= m < end: entry (i, j) lies on m = j − i and
+  // follows (i − 1, j − 1), so in column j the band holds rows j − end < i <= j − first.
+  template <class X>
+  void solveBand(Eigen::Index first, Eigen::Index end, X& out) const {
+    const Eigen::Index n = n_;
+    const auto rowsOf = [&](Eigen::Index j, Eigen::Index lowest) {
+      return std::pair{std::max(lowest, j - end + 1), std::min(n - 1, j - first)};
+    };
+    // Forward sweep L y = b on every diagonal: y(i, j) −= lower(i, j) y(i − 1, j − 1).
+    for (Eigen::Index j = 1; j < n; ++j) {
+      auto* y = &out(0, j);
+      const auto* previous = &out(0, j - 1);
+      const double* lower = &lower_(0, j);
+      const auto [top, bottom] = rowsOf(j, 1);
+      for (Eigen::Index i = top; i <= bottom; ++i) y[i] -= lower[i] * previous[i - 1];
+    }
+    // Back substitution D Lᵀ x = y: x(i, j) = y(i, j)/w(i, j) − lower(i + 1, j + 1) x(i + 1, j +
+    // 1). The pinned unknown of m = 0 has 1/w = 0 and lower(1, 1) = 0, so it comes out 0.
+    for (Eigen::Index j = n - 1; j >= 0; --j) {
+      auto* x = &out(0, j);
+      const double* inverse_pivot = &inverse_pivot_(0, j);
+      const auto [top, bottom] = rowsOf(j, 0);
+      if (j + 1 == n) {
+        for (Eigen::Index i = top; i <= bottom; ++i) x[i] *= inverse_pivot[i];
+        continue;
+      }
+      const auto* next = &out(0, j + 1);
+      const double* lower = &lower_(0, j + 1);
+      for (Eigen::Index i = top; i <= std::min(bottom, n - 2); ++i) {
+        x[i] = x[i] * inverse_pivot[i] - lower[i + 1] * next[i + 1];
+      }
+      if (top <= bottom && bottom == n - 1) x[n - 1] *= inverse_pivot[n - 1];
+    }
+  }
+
   struct Block {
     Eigen::VectorXd diagonal, off;
   };

@@ -8,10 +8,13 @@
 // the fallback (docs/design.md, "Measured, and what it decided").
 #pragma once
 
+#include <ddb/core/detail/blas_threads.h>
 #include <ddb/core/detail/lapack.h>
+#include <ddb/core/thread_pool.h>
 
 #include <Eigen/Core>
 #include <Eigen/LU>
+#include <algorithm>
 #include <complex>
 #include <type_traits>
 #include <vector>
@@ -50,14 +53,24 @@ class DenseLu {
   /// X ← A⁻¹X, given the A of the last successful factor() (X: A's rows, any columns).
   void solve(const Matrix& A, Matrix& X) {
 #ifdef DDB_USE_LAPACK
+    // Each column of X is solved alone: under a single-threaded BLAS, by chunks of columns
+    // on the library's threads, as products (MatrixBackend::multiply).
     const auto n = static_cast<lapack_int>(A.rows());
-    const auto columns = static_cast<lapack_int>(X.cols());
-    if constexpr (std::is_same_v<Scalar, double>) {
-      LAPACKE_dgetrs_work(LAPACK_COL_MAJOR, 'N', n, columns, A.data(), n, pivots_.data(), X.data(),
-                          n);
+    const auto solveColumns = [&](long first, long count) {
+      const auto columns = static_cast<lapack_int>(count);
+      if constexpr (std::is_same_v<Scalar, double>) {
+        LAPACKE_dgetrs_work(LAPACK_COL_MAJOR, 'N', n, columns, A.data(), n, pivots_.data(),
+                            X.col(first).data(), n);
+      } else {
+        LAPACKE_zgetrs_work(LAPACK_COL_MAJOR, 'N', n, columns, lapackData(A.data()), n,
+                            pivots_.data(), lapackData(X.col(first).data()), n);
+      }
+    };
+    if (detail::blasThreadCount() != 1 || X.cols() == 0) {
+      solveColumns(0, X.cols());
     } else {
-      LAPACKE_zgetrs_work(LAPACK_COL_MAJOR, 'N', n, columns, lapackData(A.data()), n,
-                          pivots_.data(), lapackData(X.data()), n);
+      ThreadPool::instance().forColumnChunks(X.cols(), detail::blasChunkWidth(X.cols()),
+                                             solveColumns);
     }
 #else
     static_cast<void>(A);

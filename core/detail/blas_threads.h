@@ -1,0 +1,25 @@
+// How many threads the BLAS runs a call on, where the BLAS says: OpenBLAS's
+// openblas_get_num_threads(), looked up as a weak symbol so that any other BLAS links too
+// (it then reports 0, unknown). The library splits a product among its own threads only
+// under a single-threaded BLAS (core/matrix_backend.h): two thread pools on the same cores
+// slow each other (docs/design.md, "Threads").
+#pragma once
+
+#include <algorithm>
+
+extern "C" int openblas_get_num_threads(void) __attribute__((weak));
+
+namespace ddb::detail {
+
+/// The BLAS's thread count, 0 when unknown.
+inline int blasThreadCount() {
+  return openblas_get_num_threads != nullptr ? openblas_get_num_threads() : 0;
+}
+
+/// The columns of one BLAS call when a product or a solve of `cols` columns is split among
+/// the library's threads: set by the size alone, since the BLAS rounds a product's columns
+/// differently in calls of other widths, so that the results do not depend on the number of
+/// threads; at most 16 chunks, so that the left factor is not packed again too often.
+inline long blasChunkWidth(long cols) { return std::max<long>(64, (cols + 15) / 16); }
+
+}  // namespace ddb::detail
