@@ -63,7 +63,7 @@ struct MatrixBackend {
         });
   }
   /// out += scale·xᴴ (out is not x). Tile by tile, each tile of x read by columns into a
-  /// small buffer first (transposingTiles below), tile columns on the library's threads
+  /// small buffer first (loadTransposed below), tile columns on the library's threads
   /// (core/thread_pool.h).
   static void addAdjoint(double scale, const X& x, X& out) {
     const Eigen::Index n = out.rows(), m = out.cols(), tiles = (m + kTile - 1) / kTile;
@@ -167,7 +167,7 @@ struct MatrixBackend {
   static bool isZero(const X& x) {
     std::atomic<bool> nonzero{false};
     ThreadPool::instance().forColumnRanges(x.rows(), x.cols(), [&](long first, long count) {
-      // Exactly zero: Eigen's isZero(0) compares |z|², which underflows below 1e-154.
+      // Exactly zero: Eigen's isZero(0) compares |z|², which rounds to 0 for tiny z.
       if ((x.middleCols(first, count).array() != Scalar(0)).any()) {
         nonzero.store(true, std::memory_order_relaxed);
       }
@@ -194,7 +194,7 @@ struct MatrixBackend {
  private:
   // The transposing passes go tile by tile and read the transposed tile by its columns:
   // reading it along its rows strides by a column's length, which for N a multiple of 256
-  // (complex) maps every access to the same cache set, and that pass took twelve times a copy.
+  // (complex) maps every access to the same cache set (docs/design.md, "Threads").
   static constexpr Eigen::Index kTile = 32;
   using Tile = Eigen::Matrix<Scalar, kTile, kTile>;
 

@@ -1,25 +1,31 @@
-// ThreadPool: the library's own threads for the O(N²) work of a matrix step (element-wise
-// passes, the Poisson solve), which the BLAS's threads do not touch (docs/design.md,
-// "Threads"). One pool per process, of threadCount() threads counting the caller.
+// ThreadPool: the library's own threads for a matrix step: its element-wise passes and
+// Poisson solve, which no BLAS threads, and, under a single-threaded BLAS, its products and
+// solves too (core/detail/blas_threads.h), so that one pool runs all of a step's work
+// (docs/design.md, "Threads"). One pool per process, of threadCount() threads counting the
+// caller.
 //
 // Why not OpenMP: libgomp's idle threads spin at full speed after each parallel region
 // while the BLAS's threads need the cores for the next product, and its spin is read from
 // the environment when it loads, out of a header library's reach. These threads spin
-// briefly, yielding the core, and then sleep (docs/design.md, "Threads").
+// briefly, yielding the core, and then sleep.
 //
 // How many threads: DDB_NUM_THREADS if set (a positive integer, else InvalidArgument naming
-// it); else what OpenBLAS reads, OPENBLAS_NUM_THREADS and then OMP_NUM_THREADS, so that one
-// variable sets both pools; else the machine's cores. setThreadCount() overrides all.
-// Nothing is parallel below kMinEntries entries per task: a wake-up costs more there.
+// it); else OPENBLAS_NUM_THREADS and then OMP_NUM_THREADS, as OpenBLAS reads them, so that
+// one variable sets both pools; else the cores this process may run on. At most kMaxTasks.
+// setThreadCount() overrides all.
 //
 // run(tasks, f) calls f(task) once for each task in [0, tasks) and returns when all have
-// returned; f must not throw (it is called on threads that cannot pass an exception on). A call
-// made while the pool is busy (from inside a task, or from another thread of the user's) runs its
-// tasks on the calling thread: the results are the same, since callers partition their work by its
-// size, never by the thread count.
+// returned; f must not throw (a throw ends the process: it may run on a thread that cannot
+// pass it on). A run made while the pool is busy (from inside a task, or from another thread
+// of the user's), or in a forked child, which has none of the parent's threads, runs its tasks
+// on the calling thread. Callers split work so that each entry is computed by the same
+// operations whatever the split (element-wise passes, column sums, bands of the Poisson
+// solve), or, where the rounding depends on the grouping (BLAS calls), by chunks set by the
+// size alone: the results do not depend on the number of threads.
 #pragma once
 
 #include <ddb/core/errors.h>
+#include <sched.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -28,6 +34,7 @@
 #include <cstdlib>
 #include <mutex>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -45,36 +52,50 @@ class ThreadPool {
   }
 
   /// The threads a run() uses, the caller's included.
-  int threadCount() const { return static_cast<int>(workers_.size()) + 1; }
+  int threadCount() const { return threads_; }
 
-  /// Restarts the pool with n threads, the caller's included (1: everything on the caller).
-  /// Not to be called while another thread runs work on it.
+  /// Restarts the pool with n threads (at most kMaxTasks), the caller's included (1:
+  /// everything on the caller). Refused while a run is under way.
   void setThreadCount(int n) {
-    if (n < 1) throwInvalid("thread count", std::to_string(n), "must be >= 1");
-    stop();
-    start(n);
-  }
-
-  /// The most tasks a run is split into (callers may keep one result per task).
-  static constexpr int kMaxTasks = 64;
-
-  /// How many tasks `entries` entries of work should be split into.
-  int tasksFor(long entries) const {
-    return static_cast<int>(
-        std::clamp<long>(entries / kMinEntries, 1, std::min(threadCount(), kMaxTasks)));
-  }
-
-  /// f(task) for every task in [0, tasks), task 0 on the caller's thread and task i on the
-  /// pool's thread i; at most threadCount() tasks.
-  template <class F>
-  void run(int tasks, const F& f) {
-    if (tasks <= 1 || workers_.empty() || ::getpid() != owner_ ||
-        busy_.exchange(true, std::memory_order_acquire)) {
-      for (int task = 0; task < tasks; ++task) f(task);
+    if (n < 1 || n > kMaxTasks) {
+      throwInvalid("thread count", std::to_string(n),
+                   "must be between 1 and " + std::to_string(kMaxTasks));
+    }
+    if (::getpid() != owner_) {
+      stop();  // a forked child keeps to its own thread: the parent's locks may be held
       return;
     }
-    invoke_ = [](const void* context, int task) { (*static_cast<const F*>(context))(task); };
-    context_ = &f;
+    if (busy_.exchange(true, std::memory_order_acquire)) {
+      throwInvalid("thread count", std::to_string(n), "cannot change while the pool runs work");
+    }
+    stop();
+    start(n);
+    busy_.store(false, std::memory_order_release);
+  }
+
+  /// The most threads, and the most tasks a run is split into (callers may keep one result
+  /// per task).
+  static constexpr int kMaxTasks = 64;
+
+  /// How many tasks `entries` entries of work should be split into: none below kMinEntries
+  /// entries per task, where a wake-up costs more than the work.
+  int tasksFor(long entries) const {
+    return static_cast<int>(std::clamp<long>(entries / kMinEntries, 1, threadCount()));
+  }
+
+  /// f(task) for every task in [0, tasks): task t on the pool's thread t mod threadCount(),
+  /// 0 on the caller's.
+  template <class F>
+  void run(int tasks, const F& f) {
+    const auto call = [&f](int task) noexcept { f(task); };
+    if (tasks <= 1 || workers_.empty() || ::getpid() != owner_ ||
+        busy_.exchange(true, std::memory_order_acquire)) {
+      for (int task = 0; task < tasks; ++task) call(task);
+      return;
+    }
+    using Call = decltype(call);
+    invoke_ = [](const void* context, int task) { (*static_cast<const Call*>(context))(task); };
+    context_ = &call;
     tasks_ = tasks;
     done_.store(0, std::memory_order_relaxed);
     // Every worker answers every generation (done_), so none can still read this run's
@@ -85,7 +106,7 @@ class ThreadPool {
       { std::lock_guard<std::mutex> lock(mutex_); }
       wake_.notify_all();
     }
-    f(0);
+    for (int task = 0; task < tasks; task += threadCount()) call(task);
     const int workers = static_cast<int>(workers_.size());
     while (done_.load(std::memory_order_acquire) < workers) std::this_thread::yield();
     busy_.store(false, std::memory_order_release);
@@ -108,7 +129,7 @@ class ThreadPool {
   template <class F>
   void forColumnChunks(long cols, long width, const F& f) {
     const long chunks = (cols + width - 1) / width;
-    const int tasks = static_cast<int>(std::min<long>(chunks, std::min(threadCount(), kMaxTasks)));
+    const int tasks = static_cast<int>(std::min<long>(chunks, threadCount()));
     run(tasks, [&](int task) {
       for (long chunk = chunks * task / tasks; chunk < chunks * (task + 1) / tasks; ++chunk) {
         f(chunk * width, std::min(width, cols - chunk * width));
@@ -121,9 +142,8 @@ class ThreadPool {
   ~ThreadPool() { stop(); }
 
  private:
-  /// Yields an idle worker makes before it sleeps. Short, so that a worker waiting beside a
-  /// threaded BLAS gives the core up soon; 200 to 20000 timed alike under a single-threaded
-  /// BLAS, where the products run on these threads too (docs/design.md, "Threads").
+  /// Yields an idle worker makes before it sleeps: few, so that a worker idle beside a
+  /// threaded BLAS gives the core up soon (docs/design.md, "Threads").
   static constexpr int kSpinYields = 2000;
 
   explicit ThreadPool(int n) { start(n); }
@@ -131,7 +151,10 @@ class ThreadPool {
   static int defaultThreadCount() {
     if (const char* value = std::getenv("DDB_NUM_THREADS")) {
       const int n = parseCount(value);
-      if (n < 1) throwInvalid("DDB_NUM_THREADS", value, "must be a positive integer");
+      if (n < 1) {
+        throwInvalid("DDB_NUM_THREADS", value,
+                     "must be an integer between 1 and " + std::to_string(kMaxTasks));
+      }
       return n;
     }
     for (const char* name : {"OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS"}) {
@@ -139,13 +162,17 @@ class ThreadPool {
         if (const int n = parseCount(value); n >= 1) return n;
       }
     }
-    return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    cpu_set_t allowed;
+    const int cores = sched_getaffinity(0, sizeof(allowed), &allowed) == 0
+                          ? CPU_COUNT(&allowed)
+                          : static_cast<int>(std::thread::hardware_concurrency());
+    return std::clamp(cores, 1, kMaxTasks);
   }
-  // A positive integer of at most 4096, else 0.
+  // An integer between 1 and kMaxTasks, else 0.
   static int parseCount(const char* text) {
     char* end = nullptr;
     const long n = std::strtol(text, &end, 10);
-    if (end == text || *end != '\0' || n < 1 || n > 4096) return 0;
+    if (end == text || *end != '\0' || n < 1 || n > kMaxTasks) return 0;
     return static_cast<int>(n);
   }
 
@@ -154,13 +181,20 @@ class ThreadPool {
     owner_ = ::getpid();
     // A worker answers the generations after this one, whenever its thread starts.
     const unsigned long now = generation_.load(std::memory_order_seq_cst);
-    for (int i = 1; i < n; ++i) workers_.emplace_back([this, i, now] { serve(i, now); });
+    // The workers read threads_ only in runs, which begin after it is set here.
+    try {
+      for (int i = 1; i < n; ++i) workers_.emplace_back([this, i, now] { serve(i, now); });
+    } catch (const std::system_error&) {
+      // No more threads to be had: run with those started.
+    }
+    threads_ = static_cast<int>(workers_.size()) + 1;
   }
   void stop() {
     if (::getpid() != owner_) {
       // A forked child has none of these threads: nothing to join (its runs are serial).
       for (std::thread& worker : workers_) worker.detach();
       workers_.clear();
+      threads_ = 1;
       return;
     }
     {
@@ -171,6 +205,7 @@ class ThreadPool {
     wake_.notify_all();
     for (std::thread& worker : workers_) worker.join();
     workers_.clear();
+    threads_ = 1;
   }
 
   void serve(int index, unsigned long seen) {
@@ -189,12 +224,13 @@ class ThreadPool {
       }
       seen = generation_.load(std::memory_order_acquire);
       if (stopping_.load(std::memory_order_acquire)) return;
-      if (index < tasks_) invoke_(context_, index);
+      for (int task = index; task < tasks_; task += threadCount()) invoke_(context_, task);
       done_.fetch_add(1, std::memory_order_release);
     }
   }
 
   std::vector<std::thread> workers_;
+  int threads_ = 1;  // workers_.size() + 1
   pid_t owner_ = 0;  // the process that started the workers
   std::mutex mutex_;
   std::condition_variable wake_;

@@ -19,6 +19,7 @@
 #include <ddb/core/binary_record.h>
 #include <ddb/core/matrix_backend.h>
 #include <ddb/core/parallel_passes.h>
+#include <ddb/core/thread_pool.h>
 
 #include <Eigen/Core>
 #include <Eigen/QR>

@@ -15,6 +15,7 @@
 
 #include <ddb/core/errors.h>
 #include <ddb/core/parallel_passes.h>
+#include <ddb/core/thread_pool.h>
 
 #include <Eigen/Core>
 #include <algorithm>

@@ -134,4 +134,27 @@ TEST(BadInputs, EveryRowOfTheTableExitsTwoWithItsMessageAndWritesNothing) {
   fs::remove_all(tmp);
 }
 
+// The library's thread count from the environment (core/thread_pool.h): refused by name,
+// exit 2, before anything is written.
+TEST(BadInputs, ABadDdbNumThreadsExitsTwoAndWritesNothing) {
+  const fs::path tmp = freshFolder("ddb_bad_threads_", "scratch");
+  const std::map<std::string, std::string> programs{{"ddb-compare", DDB_COMPARE_PATH},
+                                                    {"fluid-relax", FLUID_RELAX_PATH}};
+  for (const auto& [app, path] : programs) {
+    for (const std::string value : {"0", "-2", "two", "65", "3x"}) {
+      RunEnvironment environment;
+      environment.variables = {"DDB_NUM_THREADS=" + value};
+      environment.timeout_s = 20;
+      const AppResult r =
+          runProgram(path, "--steps 10 --out " + (tmp / "run").string(), environment);
+      EXPECT_EQ(r.status, 2) << app << " DDB_NUM_THREADS=" << value << "\n" << r.output;
+      EXPECT_THAT(r.error, ::testing::StartsWith(app + ": ")) << r.error;
+      EXPECT_THAT(r.error, ::testing::HasSubstr("DDB_NUM_THREADS")) << r.error;
+      EXPECT_THAT(r.error, ::testing::HasSubstr(value)) << r.error;
+      EXPECT_FALSE(fs::exists(tmp / "run")) << app << " DDB_NUM_THREADS=" << value;
+    }
+  }
+  fs::remove_all(tmp);
+}
+
 }  // namespace

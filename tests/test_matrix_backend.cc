@@ -7,22 +7,13 @@
 #include <cmath>
 #include <complex>
 
+#include "test_support.h"
+
 namespace ddb::test {
 namespace {
 
 using Matrix = Eigen::MatrixXcd;
 using B = MatrixBackend<Matrix>;
-
-// The largest column sum of std::abs (hypot: exact |z| at every scale).
-double oneNormByLoops(const Matrix& x) {
-  double largest = 0.0;
-  for (Eigen::Index j = 0; j < x.cols(); ++j) {
-    double sum = 0.0;
-    for (Eigen::Index i = 0; i < x.rows(); ++i) sum += std::abs(x(i, j));
-    largest = std::max(largest, sum);
-  }
-  return largest;
-}
 
 TEST(MatrixBackend, OneNormIsTheLargestColumnSumOfModuliAtEveryScale) {
   std::srand(7);

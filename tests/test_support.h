@@ -13,12 +13,26 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <cmath>
+#include <complex>
 #include <numeric>
 #include <random>
 #include <string>
 #include <vector>
 
 namespace ddb::test {
+
+/// ‖x‖₁ by loops: the largest column sum of std::abs (hypot: exact |z| at every scale), a
+/// reference for MatrixBackend::oneNorm.
+inline double oneNormByLoops(const Eigen::MatrixXcd& x) {
+  double largest = 0.0;
+  for (Eigen::Index j = 0; j < x.cols(); ++j) {
+    double sum = 0.0;
+    for (Eigen::Index i = 0; i < x.rows(); ++i) sum += std::abs(x(i, j));
+    largest = std::max(largest, sum);
+  }
+  return largest;
+}
 
 /// A group under test: the group and, for matrix groups, the N its samples have
 /// (fixed-size groups: N = 0). The retraction R under test rides along.

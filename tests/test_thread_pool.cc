@@ -1,8 +1,9 @@
 // The library's threads (core/thread_pool.h) and the work that uses them: every task runs
 // once, a nested or concurrent run falls back to the caller, and the threaded passes,
-// products and solves give Eigen's serial results and the same bits on 1, 2 and 3 threads. The
-// matrices are large enough to be split (ThreadPool::kMinEntries), with sizes that tiles do not
-// divide.
+// products and solves give Eigen's serial results and the same bits on 1, 2 and 3 threads.
+// Most matrices are large enough to be split three ways (3·ThreadPool::kMinEntries entries,
+// half of that for the triangle of makeSkewHermitian), with sizes that the 32-wide tiles
+// divide and do not; a few are too small to be split at all.
 #include <ddb/core/detail/blas_threads.h>
 #include <ddb/core/detail/dense_lu.h>
 #include <ddb/core/matrix_backend.h>
@@ -16,8 +17,11 @@
 
 #include <Eigen/LU>
 #include <atomic>
+#include <cstring>
 #include <thread>
 #include <vector>
+
+#include "test_support.h"
 
 namespace ddb::test {
 namespace {
@@ -73,14 +77,36 @@ TEST(ThreadPool, RunsFromTwoUserThreadsAtOnceBothComplete) {
   EXPECT_EQ(sum, 2 * 2000 * 3);
 }
 
-TEST(ThreadPool, AThreadCountBelowOneIsRefusedByName) {
+TEST(ThreadPool, MoreTasksThanThreadsRunOnceEach) {
   ThreadCount count;
-  try {
-    ThreadPool::instance().setThreadCount(0);
-    FAIL() << "no exception";
-  } catch (const InvalidArgument& e) {
-    EXPECT_NE(std::string(e.what()).find("thread count"), std::string::npos) << e.what();
+  count.set(2);
+  std::vector<std::atomic<int>> calls(7);
+  ThreadPool::instance().run(7, [&](int task) { ++calls[static_cast<std::size_t>(task)]; });
+  for (const auto& c : calls) EXPECT_EQ(c, 1);
+}
+
+TEST(ThreadPool, ABadThreadCountOrAChangeDuringARunIsRefusedByName) {
+  ThreadCount count;
+  for (const int n : {0, ThreadPool::kMaxTasks + 1}) {
+    try {
+      ThreadPool::instance().setThreadCount(n);
+      FAIL() << "no exception for " << n;
+    } catch (const InvalidArgument& e) {
+      EXPECT_NE(std::string(e.what()).find("thread count"), std::string::npos) << e.what();
+    }
   }
+  count.set(2);
+  std::atomic<int> refused{0};
+  ThreadPool::instance().run(2, [&](int task) {
+    if (task != 0) return;
+    try {
+      ThreadPool::instance().setThreadCount(3);
+    } catch (const InvalidArgument&) {
+      ++refused;
+    }
+  });
+  EXPECT_EQ(refused, 1);
+  EXPECT_EQ(ThreadPool::instance().threadCount(), 2);
 }
 
 // Runs f with 1, 2 and 3 threads and expects the same result bit for bit.
@@ -92,14 +118,19 @@ Matrix sameOnEveryThreadCount(const F& f) {
   for (const int threads : {2, 3}) {
     count.set(threads);
     const Matrix threaded = f();
-    EXPECT_TRUE(threaded == serial) << threads << " threads";
+    // memcmp: the same bits, the signs of zeros included.
+    const bool same_shape = threaded.rows() == serial.rows() && threaded.cols() == serial.cols();
+    EXPECT_TRUE(same_shape) << threads << " threads";
+    EXPECT_TRUE(same_shape && std::memcmp(threaded.data(), serial.data(),
+                                          sizeof(Matrix::Scalar) * serial.size()) == 0)
+        << threads << " threads";
   }
   return serial;
 }
 
 TEST(ParallelPasses, SkewHermitianPartIsEigensBitForBit) {
   std::srand(3);
-  for (const Eigen::Index n : {130, 257}) {
+  for (const Eigen::Index n : {1, 31, 256, 257}) {
     const Matrix x = Matrix::Random(n, n);
     const Matrix expected = 0.5 * (x - x.adjoint());
     const Matrix result = sameOnEveryThreadCount([&] {
@@ -114,6 +145,12 @@ TEST(ParallelPasses, SkewHermitianPartIsEigensBitForBit) {
 TEST(ParallelPasses, AddedAdjointIsEigensBitForBit) {
   std::srand(4);
   const Matrix x = Matrix::Random(161, 203), out0 = Matrix::Random(203, 161);
+  for (const Eigen::Index n : {1, 31}) {  // too small to be split
+    const Matrix small = Matrix::Random(n, n);
+    Matrix out = small;
+    B::addAdjoint(2.0, small, out);
+    EXPECT_TRUE(out == Matrix(small + 2.0 * small.adjoint())) << "N = " << n;
+  }
   const Matrix expected = out0 + (-0.75) * x.adjoint();
   const Matrix result = sameOnEveryThreadCount([&] {
     Matrix out = out0;
@@ -146,12 +183,7 @@ TEST(ParallelPasses, OneNormAndZeroTestAgreeWithLoopsOnEveryThreadCount) {
   std::srand(8);
   Matrix x = Matrix::Random(140, 230);
   x.col(201) *= 3.0;  // the largest column in the last task's range
-  double expected = 0.0;
-  for (Eigen::Index j = 0; j < x.cols(); ++j) {
-    double sum = 0.0;
-    for (Eigen::Index i = 0; i < x.rows(); ++i) sum += std::abs(x(i, j));
-    expected = std::max(expected, sum);
-  }
+  const double expected = oneNormByLoops(x);
   ThreadCount count;
   for (const int threads : {1, 2, 3}) {
     count.set(threads);
@@ -167,8 +199,8 @@ TEST(ParallelPasses, OneNormAndZeroTestAgreeWithLoopsOnEveryThreadCount) {
 }
 
 // Products and LU solves are split among the library's threads under a single-threaded
-// BLAS (this test's environment sets OPENBLAS_NUM_THREADS=1): against Eigen's own product
-// and inverse, which call no BLAS, and the same bits on every thread count.
+// BLAS (this test's environment sets OPENBLAS_NUM_THREADS=1): against Eigen's coefficient-wise
+// product (no BLAS) and an inverse, and the same bits on every thread count.
 TEST(ParallelPasses, ProductsAndSolvesSplitByColumnsAgreeWithEigen) {
   if (detail::blasThreadCount() == 0) GTEST_SKIP() << "a BLAS that does not report its threads";
   ASSERT_EQ(detail::blasThreadCount(), 1) << "run with OPENBLAS_NUM_THREADS=1";
@@ -184,7 +216,7 @@ TEST(ParallelPasses, ProductsAndSolvesSplitByColumnsAgreeWithEigen) {
   EXPECT_LT((product - expected).norm(), 1e-13 * expected.norm());
 
   const Matrix A = Matrix::Random(140, 140) + 20.0 * Matrix::Identity(140, 140);
-  const Matrix X = Matrix::Random(140, 97);
+  const Matrix X = Matrix::Random(140, 200);  // four chunks of 64 columns
   const Matrix solved = sameOnEveryThreadCount([&] {
     Matrix factors = A, Y = X;
     DenseLu<Matrix> lu;
@@ -218,9 +250,10 @@ TEST(ParallelPasses, PoissonSolveByBandsInvertsTheLaplacian) {
 }
 
 // A whole DDB step of the fluid with dissipation (solver, predictor, Poisson solves, both
-// conjugations) gives the same state on every thread count.
+// conjugations) gives the same state on every thread count. N = 224: every pass splits three
+// ways (makeSkewHermitian's triangle has 224²/2 ≥ 3·8192 entries).
 TEST(ParallelPasses, AFluidStepIsTheSameOnEveryThreadCount) {
-  const Eigen::Index n = 128;
+  const Eigen::Index n = 224;
   const auto system = makeZeitlinFluid(n, 0.5);
   const Matrix W0 = randomVorticity(n, 1);
   sameOnEveryThreadCount([&] {

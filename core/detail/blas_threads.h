@@ -1,19 +1,24 @@
 // How many threads the BLAS runs a call on, where the BLAS says: OpenBLAS's
-// openblas_get_num_threads(), looked up as a weak symbol so that any other BLAS links too
+// openblas_get_num_threads(), looked up as weak symbols so that any other BLAS links too
 // (it then reports 0, unknown). The library splits a product among its own threads only
 // under a single-threaded BLAS (core/matrix_backend.h): two thread pools on the same cores
-// slow each other (docs/design.md, "Threads").
+// slow each other (docs/design.md, "Threads"). And only under OpenBLAS's pthreads build
+// (openblas_get_parallel() == 1), which may be called from several threads at once; its
+// serial and OpenMP builds are reported as unknown.
 #pragma once
 
 #include <algorithm>
 
 extern "C" int openblas_get_num_threads(void) __attribute__((weak));
+extern "C" int openblas_get_parallel(void) __attribute__((weak));
 
 namespace ddb::detail {
 
 /// The BLAS's thread count, 0 when unknown.
 inline int blasThreadCount() {
-  return openblas_get_num_threads != nullptr ? openblas_get_num_threads() : 0;
+  constexpr int kPthreads = 1;  // openblas_get_parallel()'s value for the pthreads build
+  if (openblas_get_num_threads == nullptr || openblas_get_parallel == nullptr) return 0;
+  return openblas_get_parallel() == kPthreads ? openblas_get_num_threads() : 0;
 }
 
 /// The columns of one BLAS call when a product or a solve of `cols` columns is split among

@@ -53,8 +53,9 @@ class DenseLu {
   /// X ← A⁻¹X, given the A of the last successful factor() (X: A's rows, any columns).
   void solve(const Matrix& A, Matrix& X) {
 #ifdef DDB_USE_LAPACK
-    // Each column of X is solved alone: under a single-threaded BLAS, by chunks of columns
-    // on the library's threads, as products (MatrixBackend::multiply).
+    // The columns of X are independent: under a single-threaded BLAS, one getrs per chunk of
+    // columns, on the library's threads, as products are (MatrixBackend::multiply).
+    if (X.cols() == 0) return;
     const auto n = static_cast<lapack_int>(A.rows());
     const auto solveColumns = [&](long first, long count) {
       const auto columns = static_cast<lapack_int>(count);
@@ -66,7 +67,7 @@ class DenseLu {
                             pivots_.data(), lapackData(X.col(first).data()), n);
       }
     };
-    if (detail::blasThreadCount() != 1 || X.cols() == 0) {
+    if (detail::blasThreadCount() != 1) {
       solveColumns(0, X.cols());
     } else {
       ThreadPool::instance().forColumnChunks(X.cols(), detail::blasChunkWidth(X.cols()),
