@@ -52,15 +52,10 @@ struct MatrixBackend {
   /// out = a b (out aliases neither). Under a single-threaded BLAS, by chunks of columns of
   /// out, one BLAS call each, on the library's threads (core/detail/blas_threads.h).
   static void multiply(const X& a, const X& b, X& out) {
-    if (detail::blasThreadCount() != 1) {
-      out.noalias() = a * b;
-      return;
-    }
     out.resize(a.rows(), b.cols());
-    ThreadPool::instance().forColumnChunks(
-        b.cols(), detail::blasChunkWidth(b.cols()), [&](long first, long count) {
-          out.middleCols(first, count).noalias() = a * b.middleCols(first, count);
-        });
+    detail::forBlasColumnChunks(b.cols(), [&](long first, long count) {
+      out.middleCols(first, count).noalias() = a * b.middleCols(first, count);
+    });
   }
   /// out += scale·xᴴ (out is not x). Tile by tile, each tile of x read by columns into a
   /// small buffer first (loadTransposed below), tile columns on the library's threads
@@ -107,7 +102,7 @@ struct MatrixBackend {
           loadTransposed(x, j0, i0, cols, kTile, buffer);  // buffer(a, b) = x(j0 + b, i0 + a)
           for (Eigen::Index b = 0; b < cols; ++b) {
             for (Eigen::Index a = 0; a < kTile; ++a) {
-              const Scalar v = 0.5 * (x(i0 + a, j0 + b) - Eigen::numext::conj(buffer(a, b)));
+              const Scalar v = skewPart(x(i0 + a, j0 + b), buffer(a, b));
               x(i0 + a, j0 + b) = v;
               buffer(a, b) = -Eigen::numext::conj(v);
             }
@@ -119,14 +114,18 @@ struct MatrixBackend {
         // The diagonal tile, in place.
         for (Eigen::Index j = j0; j < j0 + cols; ++j) {
           for (Eigen::Index i = j0; i < j; ++i) {
-            const Scalar v = 0.5 * (x(i, j) - Eigen::numext::conj(x(j, i)));
+            const Scalar v = skewPart(x(i, j), x(j, i));
             x(i, j) = v;
             x(j, i) = -Eigen::numext::conj(v);
           }
-          x(j, j) = 0.5 * (x(j, j) - Eigen::numext::conj(x(j, j)));
+          x(j, j) = skewPart(x(j, j), x(j, j));
         }
       }
     });
+  }
+  /// Entry (i, j) of (x − xᴴ)/2 from x_ij and x_ji.
+  static Scalar skewPart(const Scalar& upper, const Scalar& lower) {
+    return 0.5 * (upper - Eigen::numext::conj(lower));
   }
   static Scalar trace(const X& x) { return x.trace(); }
   /// x ← x + c·I.

@@ -49,6 +49,12 @@ class DistributedZeitlinFluid {
   static double energy(const Dual& W, const Dual& P) {
     return -B::innerProduct(P, W) / (2.0 * W.size());
   }
+  /// dH/dt = −α‖[P, W]‖_F²/ħ² of the flow at W, H = N·E/ħ (SteadyStateProbe::energyRate:
+  /// −k(ad*_ξ W, ad*_ξ W) with ad*_ξ W = −[W, P]/ħ and k♯ = α·Id), given ‖[P, W]‖_F.
+  double energyRate(double commutator_norm) const {
+    const double rate = commutator_norm / hbar();
+    return -alpha_ * rate * rate;
+  }
   /// ‖[P, W]‖_F = ‖[W, P]‖_F, [W, P] = (PW)ᴴ − PW (both skew-Hermitian): one product;
   /// `product` and `commutator` are workspaces of W's layout. Collective.
   static double commutatorNorm(const Dual& W, const Dual& P, Dual& product, Dual& commutator) {

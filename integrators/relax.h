@@ -166,6 +166,54 @@ inline std::string messageAtStep(const SolveFailure& failure, long k, double t, 
 
 }  // namespace detail
 
+/// Whether t has reached the cap t_end (infinite: none), up to the rounding of a sum of steps.
+inline bool reachedTimeCap(double t, double t_end) {
+  return std::isfinite(t_end) && t_end - t <= 1e-12 * t_end;
+}
+
+/// What one attempted step did (attemptStep).
+struct StepAttempt {
+  bool accepted = false;  ///< the trial is the next state; `energy` is its H
+  bool rejected = false;  ///< the step control rejected it: h halved (a rejected step)
+  double energy = 0.0;
+  std::string failure;  ///< non-empty: the run fails (a failed fixed step, or h exhausted)
+};
+
+/// One step of size h attempted from state k at time t, of energy e0, where the flow's dH/dt
+/// is `rate`, under `control`: Relaxation's rule, shared with callers that step states it
+/// cannot hold (fluid-relax-mpi's distributed ones). step() takes the step into the caller's
+/// trial state and throws SolveFailure if it fails (a trial that is not finite included);
+/// energy() is the trial's H. With a fixed h a failure ends the run; adaptive, a failure or
+/// the judge's verdict (EnergyStepControl::judge) rejects the step, and the run fails only
+/// once h has fallen below its floor.
+template <class Step, class Energy>
+StepAttempt attemptStep(EnergyStepControl& control, bool adaptive, long k, double t, double h,
+                        double rate, double e0, Step&& step, Energy&& energy) {
+  StepAttempt attempt;
+  std::string why;
+  try {
+    step();
+  } catch (const SolveFailure& failure) {
+    if (!adaptive) {
+      attempt.failure = detail::messageAtStep(failure, k, t, h);
+      return attempt;
+    }
+    why = control.reject(failure.what());
+  }
+  if (why.empty()) {
+    attempt.energy = energy();
+    if (adaptive) why = control.judge(h, rate, e0, attempt.energy);
+  }
+  attempt.accepted = why.empty();
+  attempt.rejected = !attempt.accepted;
+  if (attempt.rejected && control.exhausted()) {
+    attempt.failure = "relax: step " + std::to_string(k) + " from t = " + formatValue(t) +
+                      " rejected down to h = " + formatValue(h) +
+                      " (below 2^-30 of the first h): " + why;
+  }
+  return attempt;
+}
+
 /// A relaxation as an object (Boost.Odeint's steppers and GeometricIntegrators.jl's
 /// integrators keep problem, method and cursor apart likewise): advance() takes one
 /// accepted step at a time, and save()/load() carry the whole cursor (state, time, step
@@ -226,47 +274,32 @@ class Relaxation {
     while (true) {
       if (probing_ && state().residual <= options_.tolerance) return stop(RelaxStop::kSteady);
       if (state().k >= options_.max_steps) return stop(RelaxStop::kStepCap);
-      const double left = options_.t_end - state().t;
-      if (std::isfinite(options_.t_end) && left <= 1e-12 * options_.t_end) {
-        return stop(RelaxStop::kTimeCap);
-      }
-      const double h = std::min(control_->h(), left);
-      const double rate = probe_.energyRate();
+      if (reachedTimeCap(state().t, options_.t_end)) return stop(RelaxStop::kTimeCap);
+      const double h = std::min(control_->h(), options_.t_end - state().t);
       trial_ = result_.final;
-      std::string rejected;
-      try {
-        method_->advance(trial_, state().t, h);
-        if (!trial_.allFinite()) throw NonFiniteState(method_->name(), -1, state().t, h, trial_);
-      } catch (const SolveFailure& failure) {
-        if (!options_.control.adaptive) {
-          result_.failure = detail::messageAtStep(failure, state().k, state().t, h);
-          result_.failed_step = state().k;
-          return stop(RelaxStop::kFailure);
-        }
-        rejected = control_->reject(failure.what());
+      const StepAttempt attempt = attemptStep(
+          *control_, options_.control.adaptive, state().k, state().t, h, probe_.energyRate(),
+          state().energy,
+          [&] {
+            method_->advance(trial_, state().t, h);
+            if (!trial_.allFinite()) {
+              throw NonFiniteState(method_->name(), -1, state().t, h, trial_);
+            }
+          },
+          [&] { return system_.energy(trial_); });
+      if (attempt.rejected) ++result_.steps_rejected;
+      if (!attempt.failure.empty()) {
+        result_.failure = attempt.failure;
+        result_.failed_step = state().k;
+        return stop(RelaxStop::kFailure);
       }
-      const double energy = rejected.empty() ? system_.energy(trial_) : 0.0;
-      if (options_.control.adaptive && rejected.empty()) {
-        rejected = control_->judge(h, rate, state().energy, energy);
-      }
-      if (!rejected.empty()) {
-        ++result_.steps_rejected;
-        if (control_->exhausted()) {
-          result_.failure = "relax: step " + std::to_string(state().k) +
-                            " from t = " + formatValue(state().t) +
-                            " rejected down to h = " + formatValue(h) +
-                            " (below 2^-30 of the first h): " + rejected;
-          result_.failed_step = state().k;
-          return stop(RelaxStop::kFailure);
-        }
-        continue;
-      }
+      if (!attempt.accepted) continue;
       std::swap(result_.final, trial_);
       RelaxState& s = cursor();
       ++s.k;
       s.t = times_.after(s.t, h);
       s.h = h;
-      s.energy = energy;
+      s.energy = attempt.energy;
       s.residual = residualAt(result_.final);
       return true;
     }

@@ -3,11 +3,12 @@
 // do not divide N, α = 0, 0.5 and −0.5, 100 steps: W_final.csv equal to 1e-13 relative,
 // history.csv row by row and summary.json key by key equal to rounding (the Legendre
 // iteration counts up to a stopping test decided the other way at the tolerance's edge);
-// --until-steady stops at the same step; bad input is refused by every rank with fluid-relax's
-// message, once, exit status 2 and nothing written. Checkpoints (docs/distributed.md,
-// "Checkpoints"): a run stopped and resumed on the same ranks and block size ends with every
-// file byte for byte the uninterrupted run's (fluid.hdf5's datasets bit for bit); either
-// app resumes the other's checkpoint and agrees with the uninterrupted serial run to
+// --until-steady stops at the same step; --adaptive takes the serial app's steps (the same h,
+// the same rejections) on 1, 2 and 4 ranks, to --steps and to --t-end; bad input is refused
+// by every rank with fluid-relax's message, once, exit status 2 and nothing written. Checkpoints
+// (docs/distributed.md, "Checkpoints"): a run stopped and resumed on the same ranks and block size
+// ends with every file byte for byte the uninterrupted run's (fluid.hdf5's datasets bit for bit);
+// either app resumes the other's checkpoint and agrees with the uninterrupted serial run to
 // rounding; --h5 writes fluid-relax's fluid.hdf5 to rounding; bad resumes are refused; a
 // SIGTERM to one rank leaves a checkpoint and exit status 143, and the resumed run is the
 // uninterrupted one's to the bit.
@@ -185,6 +186,46 @@ TEST(FluidRelaxMpi, StopsWhenSteadyAtTheSerialAppsStep) {
   fs::remove_all(mpi);
 }
 
+// --adaptive: the energy step control's verdicts, from the energy and dH/dt evaluated
+// distributed, are the serial app's: the same step sizes (exactly), the same rejections, a
+// state equal to rounding. A first h of 0.5 is rejected and regrown several times (α = 0.5)
+// and, with α = −0.5, the run ends at --t-end on a last step shortened onto it.
+class FluidRelaxMpiAdaptiveTest : public testing::TestWithParam<std::tuple<int, std::string>> {};
+
+TEST_P(FluidRelaxMpiAdaptiveTest, TakesTheSerialAppsSteps) {
+  const auto [ranks, caps] = GetParam();
+  const std::string name = "adaptive_" + std::to_string(ranks) + "_" + std::to_string(caps.size());
+  const fs::path serial = freshFolder("ddb_mpi_serial_", name);
+  const fs::path mpi = freshFolder("ddb_mpi_", name);
+  const std::string common = "--n 33 --adaptive --h 0.5 --every 5 --quiet " + caps;
+  const AppResult s = runProgram(FLUID_RELAX_PATH, common + " --out " + serial.string());
+  ASSERT_EQ(s.status, 0) << s.output;
+  const AppResult m = runMpi(ranks, common + " --block 5 --out " + mpi.string());
+  ASSERT_EQ(m.status, 0) << m.output;
+  const auto summary = readJson(serial / "summary.json");
+  EXPECT_GT(summary["steps_rejected"].get<long>(), 3);
+  const bool by_time = caps.find("--t-end") != std::string::npos;
+  EXPECT_EQ(summary["stop"], by_time ? "time cap" : "step cap");
+  EXPECT_LT(matrixDistance(readCsv(mpi / "W_final.csv", nullptr),
+                           readCsv(serial / "W_final.csv", nullptr)),
+            1e-13);
+  expectSameHistory(mpi, serial);
+  expectSameSummary(mpi, serial, ranks);
+  fs::remove_all(serial);
+  fs::remove_all(mpi);
+}
+
+INSTANTIATE_TEST_SUITE_P(RanksCaps, FluidRelaxMpiAdaptiveTest,
+                         testing::Combine(testing::Values(1, 2, 4),
+                                          testing::Values("--alpha 0.5 --steps 40",
+                                                          "--alpha -0.5 --t-end 5.3")),
+                         [](const auto& info) {
+                           return "P" + std::to_string(std::get<0>(info.param)) +
+                                  (std::get<1>(info.param).find("--t-end") != std::string::npos
+                                       ? "_TimeCap"
+                                       : "_StepCap");
+                         });
+
 // Bad input: fluid-relax's message from one rank, exit status 2, no output folder; and the
 // flags this app does not have.
 TEST(FluidRelaxMpi, RefusesBadInputOnEveryRankOnce) {
@@ -198,6 +239,8 @@ TEST(FluidRelaxMpi, RefusesBadInputOnEveryRankOnce) {
       {"--n 16 --steps 10 --block 17", "--block"},
       {"--steps 10 --block 2.5", "--block"},
       {"--steps 10 --method rk4", "--method"},
+      {"--steps 10 --newton --until-steady 1e-3", "--newton"},
+      {"--steps 10 --adaptive --alpha 0", "--adaptive"},
       {"--steps 10 --resume somewhere", "--resume"},
   };
   for (const auto& [arguments, flag] : cases) {
@@ -297,11 +340,13 @@ nlohmann::ordered_json summaryWithoutRuntime(const fs::path& out) {
 }
 
 // A run of 40 steps against one of 20 resumed to 40, on `ranks` ranks with the flags
-// `layout` (--block, or none) and of size `n`: every file the same bytes.
-void expectResumedRunToTheBit(int ranks, int n, const std::string& layout) {
+// `layout` (--block, or none) and `control` (--adaptive, or none) and of size `n`: every
+// file the same bytes.
+void expectResumedRunToTheBit(int ranks, int n, const std::string& layout,
+                              const std::string& control = "") {
   const fs::path whole = freshFolder("ddb_mpi_", "whole");
   const fs::path resumed = freshFolder("ddb_mpi_", "resumed");
-  const std::string run = kResumable + " --n " + std::to_string(n) + layout;
+  const std::string run = kResumable + " --n " + std::to_string(n) + layout + control;
   const AppResult a = runMpi(ranks, run + " --steps 40 --out " + whole.string());
   ASSERT_EQ(a.status, 0) << a.output;
   const AppResult b = runMpi(ranks, run + " --steps 20 --out " + resumed.string());
@@ -329,6 +374,13 @@ TEST(FluidRelaxMpiCheckpoint, ResumedRunContinuesTheUninterruptedOneToTheBit) {
 // on resume, must land on the blocks they came from.
 TEST(FluidRelaxMpiCheckpoint, ResumedRunOnAGridOfBlocksContinuesToTheBit) {
   expectResumedRunToTheBit(4, 33, " --block 5");
+}
+
+// With --adaptive the checkpoint carries the step control (h, its floor, the good steps in a
+// row) and the state's dH/dt is evaluated again on resume: the resumed run chooses the
+// uninterrupted run's steps.
+TEST(FluidRelaxMpiCheckpoint, ResumedAdaptiveRunContinuesToTheBit) {
+  expectResumedRunToTheBit(2, 16, "", " --adaptive --h 0.5");
 }
 
 // A checkpoint of either app resumed by the other: the runs end where the uninterrupted
@@ -388,7 +440,7 @@ std::vector<std::pair<std::string, std::string>> folderBytes(const fs::path& dir
 TEST(FluidRelaxMpiCheckpoint, RefusesBadResumesOnEveryRankOnce) {
   const fs::path done = freshFolder("ddb_mpi_", "done");
   const fs::path corrupt = freshFolder("ddb_mpi_", "corrupt");
-  const fs::path adaptive = freshFolder("ddb_mpi_", "adaptive");
+  const fs::path newton = freshFolder("ddb_mpi_", "newton");
   AppResult r = runMpi(2, kResumable + " --n 16 --steps 10 --out " + done.string());
   ASSERT_EQ(r.status, 0) << r.output;
   fs::copy(done, corrupt);
@@ -397,14 +449,15 @@ TEST(FluidRelaxMpiCheckpoint, RefusesBadResumesOnEveryRankOnce) {
     bytes[bytes.size() / 2] ^= 1;
     std::ofstream(corrupt / "checkpoint.ddb", std::ios::binary) << bytes;
   }
-  r = runProgram(FLUID_RELAX_PATH, "--n 8 --steps 3 --adaptive --quiet --out " + adaptive.string());
+  r = runProgram(FLUID_RELAX_PATH,
+                 "--n 8 --steps 3 --newton --until-steady 1e-12 --quiet --out " + newton.string());
   ASSERT_EQ(r.status, 0) << r.output;
   const fs::path missing = freshFolder("ddb_mpi_", "missing");
   const std::vector<std::tuple<std::string, fs::path, std::string>> cases = {
       {"--resume " + missing.string(), missing, "no checkpoint to resume from"},
       {"--steps 20 --resume " + corrupt.string(), corrupt, "is corrupt (checksum mismatch)"},
       {"--resume " + done.string(), done, "the run has taken 10 steps, its cap 10"},
-      {"--steps 20 --resume " + adaptive.string(), adaptive, "its run used --adaptive"},
+      {"--steps 20 --resume " + newton.string(), newton, "its run used --newton"},
   };
   for (const auto& [arguments, folder, message] : cases) {
     const bool existed = fs::exists(folder);
@@ -418,7 +471,7 @@ TEST(FluidRelaxMpiCheckpoint, RefusesBadResumesOnEveryRankOnce) {
       EXPECT_EQ(folderBytes(folder), before) << arguments;
     }
   }
-  for (const fs::path& folder : {done, corrupt, adaptive}) fs::remove_all(folder);
+  for (const fs::path& folder : {done, corrupt, newton}) fs::remove_all(folder);
 }
 
 // Starts `mpiexec -n 2 fluid-relax-mpi arguments` (output discarded), waits for its first

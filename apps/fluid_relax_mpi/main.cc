@@ -1,10 +1,12 @@
 // fluid-relax-mpi: fluid-relax's ddb-cay relaxation with every N×N matrix distributed
 // block-cyclically over the ranks of an MPI job (docs/distributed.md, "fluid-relax-mpi").
-// The step is the library's one DDB step on distributed matrices (DistributedDdb); the
-// command line, its checks and the files are fluid-relax's (docs/file-formats.md), written
-// by rank 0 from the states gathered there for the history rows and at the end; summary.json
-// adds mpi_ranks, process_grid and block_size. The energy (for energy rises) and the
-// residual (for --until-steady) of every step are evaluated distributed. Exit statuses as
+// The step is the library's one DDB step on distributed matrices (DistributedDdb), accepted
+// or rejected by Relaxation's rule (attemptStep: fixed steps, or --adaptive's energy step
+// control); the command line, its checks and the files are fluid-relax's
+// (docs/file-formats.md), written by rank 0 from the states gathered there for the history
+// rows and at the end; summary.json adds mpi_ranks, process_grid and block_size. The energy
+// (for energy rises and the step control) and the residual (for --until-steady and the step
+// control) of every step are evaluated distributed. Exit statuses as
 // fluid-relax's, agreed by every rank: 2 bad input on any rank (nothing written), 1 a failed
 // step or a file rank 0 could not write, 130/143 a SIGINT/SIGTERM on any rank (outputs and a
 // checkpoint written); anything unexpected on one rank ends the job (MPI_Abort). Checkpoints
@@ -102,8 +104,8 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   DistributedDdb ddb(W.layout(), s.alpha);
   const DistributedZeitlinFluid& fluid = ddb.system();
   // The cursor of fluid-relax's Relaxation, kept alike so that the checkpoints are its
-  // record (docs/file-formats.md, "Checkpoints"): the state's record, the step control (fixed
-  // steps here) and the step times.
+  // record (docs/file-formats.md, "Checkpoints"): the state's record, the step control and
+  // the step times.
   RelaxResult<SUN> result;
   RelaxState& at = result.last;
   EnergyStepControl control(s.relax.control, s.h);
@@ -141,14 +143,18 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
     throw Reported{status};
   }
   if (resume != nullptr) spdlog::info("resuming {} at step {}, t = {}", s.out.string(), at.k, at.t);
-  spdlog::info(
-      "N = {}, alpha = {}, {} init, ddb-cay on {} ranks ({}x{} grid, block {}): {} steps of h = "
-      "{}{}",
-      n, s.alpha, s.init, grid.size(), grid.rows(), grid.cols(), run.block, s.steps, s.h,
-      s.default_h ? " (default)" : "");
+  const bool adaptive = s.relax.control.adaptive;
+  spdlog::info("N = {}, alpha = {}, {} init, ddb-cay on {} ranks ({}x{} grid, block {}): {}{}{}", n,
+               s.alpha, s.init, grid.size(), grid.rows(), grid.cols(), run.block,
+               adaptive ? "adaptive steps from h = " : fmt::format("{} steps of h = ", s.steps),
+               s.h, s.default_h ? " (default)" : "");
 
+  // Rises are counted where the flow lowers H; --adaptive reads H, and dH/dt from r's
+  // commutator, at every state, as Relaxation does.
   const bool watch_energy = app::EnergyRises::applies(true, s.alpha);
-  const bool probing = s.relax.tolerance > 0;
+  const bool need_energy = watch_energy || adaptive;
+  const bool probing = adaptive || s.relax.tolerance > 0;
+  double rate = 0.0;        // dH/dt at the current state, for the step control
   std::string write_error;  // rank 0's first failed write
   const auto onRoot = [&](const std::function<void()>& write) {
     if (!root || !write_error.empty()) return;
@@ -162,41 +168,45 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   const auto historyRow = [&](long k, double t, const DistributedMatrix* state) {
     const Matrix whole = state->gather();
     onRoot([&] {
-      tally.drift = outputs->row(k, t, k == 0 ? 0.0 : s.h, whole);
+      tally.drift = outputs->row(k, t, k == 0 ? 0.0 : at.h, whole);
       tally.drift_max = std::max(tally.drift_max, tally.drift);
     });
   };
   EveryKth<const DistributedMatrix*, decltype(historyRow)> history(o.every, historyRow);
 
-  // H = N·E/ħ of W (the energy fluid-relax watches for rises), from P = W's stream matrix.
-  const auto energyFromStream = [&] {
-    return DistributedZeitlinFluid::energy(W, P) * static_cast<double>(n) / fluid.hbar();
+  // H = N·E/ħ of a state (the energy fluid-relax watches for rises), from P = its stream
+  // matrix.
+  const auto energyFromStream = [&](const DistributedMatrix& state) {
+    return DistributedZeitlinFluid::energy(state, P) * static_cast<double>(n) / fluid.hbar();
   };
-  // The current state's H and r = ‖[P, W]‖/(‖P‖ ‖W‖) (0 where ‖P‖ ‖W‖ = 0,
-  // SteadyStateProbe's convention), from one Poisson solve, distributed; only what the run
-  // reads.
+  // r = ‖[P, W]‖/(‖P‖ ‖W‖) (0 where ‖P‖ ‖W‖ = 0, SteadyStateProbe's convention) and dH/dt
+  // of the current state, given its P; one product, distributed.
+  const auto probeState = [&] {
+    const double scale = B::frobeniusNorm(P) * B::frobeniusNorm(W);
+    const double norm = DistributedZeitlinFluid::commutatorNorm(W, P, product, commutator);
+    at.residual = scale > 0.0 ? norm / scale : 0.0;
+    rate = fluid.energyRate(norm);
+  };
+  // The current state's H, r and dH/dt, from one Poisson solve; only what the run reads.
   const auto observeState = [&] {
-    if (!watch_energy && !probing) return;
+    if (!need_energy && !probing) return;
     fluid.streamMatrixInto(W, P);
-    if (watch_energy) {
-      at.energy = energyFromStream();
-      tally.rises.observe(at.k, at.t, at.energy);
+    if (need_energy) {
+      at.energy = energyFromStream(W);
+      if (watch_energy) tally.rises.observe(at.k, at.t, at.energy);
     }
-    if (probing) {
-      const double scale = B::frobeniusNorm(P) * B::frobeniusNorm(W);
-      const double norm = DistributedZeitlinFluid::commutatorNorm(W, P, product, commutator);
-      at.residual = scale > 0.0 ? norm / scale : 0.0;
-    }
+    if (probing) probeState();
   };
+
   // A checkpoint of the current state, written by rank 0 from the gathered state and warm
   // start (collective); the files that grow are on disk up to `lengths` (rank 0's).
   auto last_checkpoint = std::chrono::steady_clock::now();
   long checkpointed_at = -1;  // the step of the last checkpoint
   const auto checkpoint = [&](const HistoryFiles::Lengths& lengths) {
-    if (!watch_energy) {
+    if (!need_energy) {
       // Relaxation's record holds H of every state, which this run evaluates only here.
       fluid.streamMatrixInto(W, P);
-      at.energy = energyFromStream();
+      at.energy = energyFromStream(W);
     }
     BinaryRecordWriter record;
     if (root) {
@@ -218,9 +228,15 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   if (resume == nullptr) {
     observeState();
     history(0, 0.0, &W);
-  } else if (at.k % o.every != 0) {
+  } else {
+    if (probing) {
+      // As the uninterrupted run left it (Relaxation::load evaluates its probe): the step
+      // control needs dH/dt at the state.
+      fluid.streamMatrixInto(W, P);
+      probeState();
+    }
     // The checkpoint's state is the last row, held back (its length excludes that row).
-    history(at.k, at.t, &W);
+    if (at.k % o.every != 0) history(at.k, at.t, &W);
   }
   app::Progress progress(o.log.quiet || !root);
   const std::string label = "ddb-cay N=" + std::to_string(n) + " P=" + std::to_string(grid.size());
@@ -235,24 +251,38 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
       result.stop = RelaxStop::kStepCap;
       break;
     }
-    // The step from a copy, so that a failed step keeps the state before it. Its decisions
-    // use values reduced alike on every rank, so every rank fails alike.
-    const double h = control.h();
+    if (reachedTimeCap(at.t, s.relax.t_end)) {
+      result.stop = RelaxStop::kTimeCap;
+      break;
+    }
+    // The step from a copy, so that a failed or rejected step keeps the state before it. Its
+    // decisions use values reduced alike on every rank, so every rank decides alike.
+    const double h = std::min(control.h(), s.relax.t_end - at.t);
     B::entries(trial) = B::entries(W);
-    try {
-      ddb.advance(trial, at.t, h);
-      // Named by the norm every rank agrees on, not by a rank's own block of entries.
-      const double norm = B::frobeniusNorm(trial);
-      if (!std::isfinite(norm)) {
-        const Eigen::Matrix<double, 1, 1> value(norm);
-        throw NonFiniteState("ddb-cay", -1, at.t, h, value, "state's Frobenius norm");
-      }
-    } catch (const SolveFailure& failure) {
-      result.failure = detail::messageAtStep(failure, at.k, at.t, h);
+    const StepAttempt attempt = attemptStep(
+        control, adaptive, at.k, at.t, h, rate, at.energy,
+        [&] {
+          ddb.advance(trial, at.t, h);
+          // Named by the norm every rank agrees on, not by a rank's own block of entries.
+          const double norm = B::frobeniusNorm(trial);
+          if (!std::isfinite(norm)) {
+            const Eigen::Matrix<double, 1, 1> value(norm);
+            throw NonFiniteState("ddb-cay", -1, at.t, h, value, "state's Frobenius norm");
+          }
+        },
+        [&] {
+          if (!adaptive) return 0.0;  // H is evaluated for the accepted state below
+          fluid.streamMatrixInto(trial, P);
+          return energyFromStream(trial);
+        });
+    if (attempt.rejected) ++result.steps_rejected;
+    if (!attempt.failure.empty()) {
+      result.failure = attempt.failure;
       result.failed_step = at.k;
       result.stop = RelaxStop::kFailure;
       break;
     }
+    if (!attempt.accepted) continue;
     W.swap(trial);
     ++at.k;
     at.t = times.after(at.t, h);

@@ -23,25 +23,21 @@ void refuseUnsupported(const CLI::App& cli, const fluid::Options& o) {
   if (o.method != "ddb-cay") {
     app::usageError("--method", o.method, "fluid-relax-mpi runs ddb-cay only");
   }
-  for (const char* flag : {"--adaptive", "--newton"}) {
-    if (cli.count(flag) > 0) {
-      throw app::UsageError(std::string(flag) +
-                            ": not available in fluid-relax-mpi (docs/distributed.md); run "
-                            "fluid-relax for it");
-    }
+  if (cli.count("--newton") > 0) {
+    throw app::UsageError(
+        "--newton: not available in fluid-relax-mpi (docs/distributed.md); run fluid-relax for "
+        "it");
   }
 }
 
-// A checkpoint of a run this app cannot continue (fluid-relax's other methods, --adaptive,
-// --newton) is refused naming --resume.
+// A checkpoint of a run this app cannot continue (fluid-relax's other methods, --newton) is
+// refused naming --resume.
 void refuseForeignRun(const std::string& dir, const fluid::Checkpoint& c) {
   std::string what;
   if (c.settings.relax.newton) {
     what = "--newton";
   } else if (c.options.method != "ddb-cay") {
     what = "--method " + c.options.method;
-  } else if (c.settings.relax.control.adaptive) {
-    what = "--adaptive";
   }
   if (!what.empty()) {
     app::usageError("--resume", dir,
@@ -128,7 +124,7 @@ void addMpiOptions(CLI::App& cli, MpiOptions& o) {
   cli.footer(
       "\nfluid-relax-mpi is fluid-relax's ddb-cay relaxation with every N x N matrix "
       "distributed over the MPI ranks\n(docs/distributed.md): start it with mpirun -np P. "
-      "Not available here: --method other than ddb-cay,\n--adaptive, --newton.\n\nInitial "
+      "Not available here: --method other than ddb-cay,\n--newton.\n\nInitial "
       "vorticities (--init; all "
       "scaled to ||W||_F = sqrt(N), seeded by --seed):\n" +
       app::describeChoices(app::initDescriptions()) +

@@ -7,6 +7,8 @@
 // serial and OpenMP builds are reported as unknown.
 #pragma once
 
+#include <ddb/core/thread_pool.h>
+
 #include <algorithm>
 
 extern "C" int openblas_get_num_threads(void) __attribute__((weak));
@@ -26,5 +28,17 @@ inline int blasThreadCount() {
 /// differently in calls of other widths, so that the results do not depend on the number of
 /// threads; at most 16 chunks, so that the left factor is not packed again too often.
 inline long blasChunkWidth(long cols) { return std::max<long>(64, (cols + 15) / 16); }
+
+/// f(first, count) over the columns [0, cols) of a product or a solve, one BLAS call each:
+/// once over all of them, or, under a single-threaded BLAS, by chunks of blasChunkWidth(cols)
+/// on the library's threads.
+template <class F>
+void forBlasColumnChunks(long cols, const F& f) {
+  if (blasThreadCount() != 1) {
+    f(0L, cols);
+  } else {
+    ThreadPool::instance().forColumnChunks(cols, blasChunkWidth(cols), f);
+  }
+}
 
 }  // namespace ddb::detail

@@ -10,7 +10,6 @@
 
 #include <ddb/core/detail/blas_threads.h>
 #include <ddb/core/detail/lapack.h>
-#include <ddb/core/thread_pool.h>
 
 #include <Eigen/Core>
 #include <Eigen/LU>
@@ -67,12 +66,7 @@ class DenseLu {
                             pivots_.data(), lapackData(X.col(first).data()), n);
       }
     };
-    if (detail::blasThreadCount() != 1) {
-      solveColumns(0, X.cols());
-    } else {
-      ThreadPool::instance().forColumnChunks(X.cols(), detail::blasChunkWidth(X.cols()),
-                                             solveColumns);
-    }
+    detail::forBlasColumnChunks(X.cols(), solveColumns);
 #else
     static_cast<void>(A);
     solved_.noalias() = lu_.solve(X);  // Eigen's solve may not alias its right-hand side
