@@ -4,11 +4,14 @@
 // that do not divide N, α = 0, 0.5, −0.5. The final W agrees to 1e-13 relative, the
 // products the Legendre solve takes (sweeps and frozen-solution refinements) agree step by
 // step up to a stopping test decided the other way at the tolerance's edge, and the
-// spectrum (Eigen's eigensolver on the gathered W) moves by at most 1e-12.
+// spectrum (Eigen's eigensolver on the gathered W) moves by at most 1e-12. The energy, the
+// residual r and dH/dt that fluid-relax-mpi's step control reads, evaluated distributed, are
+// the serial SteadyStateProbe's (which pairs ad*_ξ W with the metric's φ).
 #include <ddb/distributed/distributed_ddb.h>
 #include <ddb/distributed/process_grid.h>
 #include <ddb/groups/sun.h>
 #include <ddb/integrators/ddb.h>
+#include <ddb/integrators/steady_state_probe.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <gtest/gtest.h>
@@ -97,6 +100,34 @@ TEST_P(DistributedDdbTest, AgreesWithTheDenseStepSweepForSweep) {
     }
     const Eigen::VectorXd initial = spectrum(W0), final = spectrum(W_distributed);
     EXPECT_LT((final - initial).norm() / initial.norm(), 1e-12);
+  }
+}
+
+TEST_P(DistributedDdbTest, EnergyResidualAndRateAreTheSerialProbes) {
+  const Eigen::MatrixXcd W0 = randomVorticity(n(), 1);
+  const auto system = makeZeitlinFluid(n(), alpha());
+  SteadyStateProbe<SUN> probe(*system);
+  probe.evaluate(W0);
+
+  DistributedMatrix W(grid_, n(), block());
+  W.scatterFrom(W0);
+  DistributedMatrix P(W.layout()), product(W.layout()), commutator(W.layout());
+  const DistributedZeitlinFluid fluid(W.layout(), alpha());
+  fluid.streamMatrixInto(W, P);
+  using B = MatrixBackend<DistributedMatrix>;
+  const double energy = DistributedZeitlinFluid::energy(W, P) * n() / fluid.hbar();
+  const double norm = DistributedZeitlinFluid::commutatorNorm(W, P, product, commutator);
+  const double residual = norm / (B::frobeniusNorm(P) * B::frobeniusNorm(W));
+  const double rate = fluid.energyRate(norm);
+  const auto relative = [](double a, double b) { return std::abs(a - b) / std::abs(b); };
+  EXPECT_LT(relative(energy, system->energy(W0)), 1e-13);
+  EXPECT_LT(relative(residual, probe.residual()), 1e-13);
+  if (alpha() == 0.0) {
+    EXPECT_EQ(rate, 0.0);
+    EXPECT_EQ(probe.energyRate(), 0.0);
+  } else {
+    EXPECT_LT(relative(rate, probe.energyRate()), 1e-13);
+    EXPECT_EQ(rate<0, alpha()> 0);  // the flow lowers H for α > 0 (Proposition 3.3)
   }
 }
 

@@ -147,7 +147,7 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   spdlog::info("N = {}, alpha = {}, {} init, ddb-cay on {} ranks ({}x{} grid, block {}): {}{}{}", n,
                s.alpha, s.init, grid.size(), grid.rows(), grid.cols(), run.block,
                adaptive ? "adaptive steps from h = " : fmt::format("{} steps of h = ", s.steps),
-               s.h, s.default_h ? " (default)" : "");
+               control.h(), s.default_h && resume == nullptr ? " (default)" : "");
 
   // Rises are counted where the flow lowers H; --adaptive reads H, and dH/dt from r's
   // commutator, at every state, as Relaxation does.
@@ -187,10 +187,11 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
     at.residual = scale > 0.0 ? norm / scale : 0.0;
     rate = fluid.energyRate(norm);
   };
-  // The current state's H, r and dH/dt, from one Poisson solve; only what the run reads.
-  const auto observeState = [&] {
+  // The current state's H, r and dH/dt, from one Poisson solve (none if P is W's already);
+  // only what the run reads.
+  const auto observeState = [&](bool stream_is_current) {
     if (!need_energy && !probing) return;
-    fluid.streamMatrixInto(W, P);
+    if (!stream_is_current) fluid.streamMatrixInto(W, P);
     if (need_energy) {
       at.energy = energyFromStream(W);
       if (watch_energy) tally.rises.observe(at.k, at.t, at.energy);
@@ -226,7 +227,7 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   };
 
   if (resume == nullptr) {
-    observeState();
+    observeState(false);
     history(0, 0.0, &W);
   } else {
     if (probing) {
@@ -291,7 +292,8 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
     const long iterations = stats.fixed_point + stats.newton;
     tally.iterations_total += iterations;
     tally.iterations_max = std::max(tally.iterations_max, iterations);
-    observeState();
+    // With --adaptive, the accepted trial's energy left P = its stream matrix.
+    observeState(adaptive);
     history(at.k, at.t, &W);
     const bool due = o.checkpoint_every > 0 ? at.k % o.checkpoint_every == 0
                                             : std::chrono::steady_clock::now() - last_checkpoint >=
