@@ -9,9 +9,10 @@
 // predictor. Times are the largest over the ranks (MPI_Wtime between barriers). Prints one
 // JSON object from rank 0, with the bytes sent to other ranks per product and per step
 // (summed over the ranks; counted at the MPI calls, mpi_byte_counter.cc). The BLAS thread
-// count is the environment's.
+// count is the environment's. grid_rows picks the process grid's shape (0, the default: the
+// ProcessGrid's own, rows ≥ cols).
 //
-//   mpiexec -n P distributed-step-bench N [steps] [alpha] [block]
+//   mpiexec -n P distributed-step-bench N [steps] [alpha] [block] [grid_rows]
 #include <ddb/distributed/distributed_ddb.h>
 #include <ddb/distributed/process_grid.h>
 #include <ddb/integrators/ddb.h>
@@ -52,7 +53,7 @@ PerCall perCall(const ProcessGrid& grid, long count, const std::function<void()>
 int runBench(int argc, char** argv, const ProcessGrid& grid) {
   if (argc < 2) {
     if (grid.rank() == 0)
-      std::fprintf(stderr, "usage: distributed-step-bench N [steps] [alpha] [block]\n");
+      std::fprintf(stderr, "usage: distributed-step-bench N [steps] [alpha] [block] [grid_rows]\n");
     return 2;
   }
   const int n = std::atoi(argv[1]);
@@ -116,9 +117,12 @@ int runBench(int argc, char** argv, const ProcessGrid& grid) {
 int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);
   int status = 0;
-  {
-    const ddb::ProcessGrid grid;
+  try {
+    const ddb::ProcessGrid grid(MPI_COMM_WORLD, argc > 5 ? std::atoi(argv[5]) : 0);
     status = runBench(argc, argv, grid);
+  } catch (const ddb::InvalidArgument& e) {
+    std::fprintf(stderr, "distributed-step-bench: %s\n", e.what());
+    status = 2;
   }
   MPI_Finalize();
   return status;

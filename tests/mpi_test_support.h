@@ -1,5 +1,6 @@
-// Shared by the MPI tests: seeded random matrices, the same on every rank, the relative
-// Frobenius distance, and the suites parameterised by N and the block size.
+// Shared by the MPI tests: the process grid they run on, seeded random matrices, the same on
+// every rank, the relative Frobenius distance, and the suites parameterised by N and the
+// block size.
 #pragma once
 
 #include <ddb/distributed/process_grid.h>
@@ -7,11 +8,25 @@
 
 #include <Eigen/Core>
 #include <complex>
+#include <cstdlib>
 #include <random>
 #include <string>
 #include <tuple>
 
 namespace ddb::test {
+
+/// The grid rows the tests ask for: DDB_TEST_GRID_ROWS (set by tests/CMakeLists.txt for the
+/// runs on the other shape of P = 2 and 3 ranks), else 0, the default shape.
+inline int gridRows() {
+  const char* rows = std::getenv("DDB_TEST_GRID_ROWS");
+  return rows != nullptr ? std::atoi(rows) : 0;
+}
+
+/// The grid of all ranks the tests run on.
+class TestGrid : public ProcessGrid {
+ public:
+  TestGrid() : ProcessGrid(MPI_COMM_WORLD, gridRows()) {}
+};
 
 inline Eigen::MatrixXcd randomComplexMatrix(int n, unsigned seed) {
   std::mt19937_64 generator(seed);
@@ -32,7 +47,7 @@ class SizeAndBlockTest : public testing::TestWithParam<std::tuple<int, int>> {
  protected:
   int n() const { return std::get<0>(GetParam()); }
   int block() const { return std::get<1>(GetParam()); }
-  ProcessGrid grid_;
+  TestGrid grid_;
 };
 
 inline std::string sizeAndBlockName(const testing::TestParamInfo<std::tuple<int, int>>& info) {

@@ -37,7 +37,7 @@ class DistributedDdbTest : public testing::TestWithParam<std::tuple<int, int, do
   int n() const { return std::get<0>(GetParam()); }
   int block() const { return std::get<1>(GetParam()); }
   double alpha() const { return std::get<2>(GetParam()); }
-  ProcessGrid grid_;
+  test::TestGrid grid_;
 };
 
 // fluid-relax's default step (apps/fluid_relax/options.h): 0.02 ħ/‖P₀‖₂.

@@ -25,26 +25,52 @@ namespace {
 using test::randomComplexMatrix;
 using test::relativeDistance;
 
-TEST(ProcessGrid, IsTheMostSquareFactorisation) {
+// The default: the most square grid with rows ≥ cols (docs/distributed.md, "Layouts").
+TEST(ProcessGrid, DefaultIsTheMostSquareFactorisationWithRowsAtLeastCols) {
   const ProcessGrid grid;
-  const std::map<int, std::pair<int, int>> expected = {
-      {1, {1, 1}}, {2, {1, 2}}, {3, {1, 3}}, {4, {2, 2}}};
+  const std::map<int, std::pair<int, int>> expected = {{1, {1, 1}}, {2, {2, 1}}, {3, {3, 1}},
+                                                       {4, {2, 2}}, {6, {3, 2}}, {8, {4, 2}}};
   const auto shape = expected.find(grid.size());
   if (shape == expected.end()) GTEST_SKIP() << "no expected shape for " << grid.size() << " ranks";
   EXPECT_EQ(grid.rows(), shape->second.first);
   EXPECT_EQ(grid.cols(), shape->second.second);
   EXPECT_EQ(grid.rankAt(grid.row(), grid.col()), grid.rank());
+  for (const auto& [ranks, rows_cols] : expected) {
+    EXPECT_EQ(ProcessGrid::defaultRows(ranks), rows_cols.first) << ranks << " ranks";
+  }
+}
+
+// Every divisor of P as the rows, rank r at (r / cols, r mod cols); others refused on every
+// rank, naming the parameter.
+TEST(ProcessGrid, TakesAnyRowsThatDivideTheRanks) {
+  const int ranks = ProcessGrid().size();
+  for (int rows = 1; rows <= ranks; ++rows) {
+    if (ranks % rows != 0) continue;
+    const ProcessGrid grid(MPI_COMM_WORLD, rows);
+    EXPECT_EQ(grid.rows(), rows);
+    EXPECT_EQ(grid.cols(), ranks / rows);
+    EXPECT_EQ(grid.row(), grid.rank() / grid.cols());
+    EXPECT_EQ(grid.col(), grid.rank() % grid.cols());
+  }
+  for (const int rows : {-1, ranks + 1}) {
+    try {
+      const ProcessGrid grid(MPI_COMM_WORLD, rows);
+      ADD_FAILURE() << rows << " rows accepted on " << ranks << " ranks";
+    } catch (const InvalidArgument& e) {
+      EXPECT_NE(std::string(e.what()).find("grid rows"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(DistributedMatrix, RefusesABadBlockSize) {
-  const ProcessGrid grid;
+  const test::TestGrid grid;
   EXPECT_THROW(DistributedMatrix(grid, 8, 0), InvalidArgument);
   EXPECT_THROW(DistributedMatrix(grid, 0, 4), InvalidArgument);
 }
 
 // Only rank 0's matrix is read; its wrong size is refused on every rank, none left waiting.
 TEST(DistributedMatrix, ScatterRefusesAWrongSizeOnEveryRank) {
-  const ProcessGrid grid;
+  const test::TestGrid grid;
   DistributedMatrix distributed(grid, 8, 3);
   const Eigen::MatrixXcd wrong = Eigen::MatrixXcd::Zero(grid.rank() == 0 ? 7 : 8, 8);
   EXPECT_THROW(distributed.scatterFrom(wrong), InvalidArgument);

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <map>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "mpi_test_support.h"
@@ -47,7 +48,7 @@ TEST_P(DistributedPoissonTest, MatchesTheSerialSolve) {
 }
 
 TEST(DistributedPoissonSolver, RefusesAnotherBlockSize) {
-  const ProcessGrid grid;
+  const test::TestGrid grid;
   const DistributedMatrix w(grid, 8, 3);
   DistributedMatrix other(grid, 8, 4);
   DistributedPoissonSolver solver(w.layout());
@@ -62,15 +63,19 @@ INSTANTIATE_TEST_SUITE_P(SizesAndBlocks, DistributedPoissonTest,
 // j mod cols = r mod cols; diagonal m goes to rank q(m) mod P with q = 0, 1, 2, 3, 4, 5, 6
 // for m = 0, 1, −1, 2, −2, 3, −3. Counting, rank by rank, the entries it holds whose
 // diagonal is owned elsewhere (sent there) plus the entries of its own diagonals that
-// another rank holds (sent back), at 16 bytes each (docs/distributed.md works P = 2):
-//   P = 2 (1×2): 2 + 4, 4 + 2;  P = 3 (1×3): 4 + 3, 2 + 3, 3 + 3;
-//   P = 4 (2×2): 1 + 3, 1 + 1, 1 + 1, 3 + 1.
+// another rank holds (sent back), at 16 bytes each (docs/distributed.md works 1×2 and 2×1):
+//   1×2: 2 + 4, 4 + 2;  2×1: 4 + 6, 6 + 4;
+//   1×3: 4 + 3, 2 + 3, 3 + 3;  3×1: 4 + 3, 3 + 4, 3 + 3;
+//   2×2: 1 + 3, 1 + 1, 1 + 1, 3 + 1.
 TEST(DistributedPoissonSolver, SendsTheBytesCountedByHand) {
-  const ProcessGrid grid;
-  const std::map<int, std::vector<std::int64_t>> expected = {
-      {1, {0}}, {2, {96, 96}}, {3, {112, 80, 96}}, {4, {64, 32, 32, 64}}};
-  const auto counts = expected.find(grid.size());
-  if (counts == expected.end()) GTEST_SKIP() << "no count for " << grid.size() << " ranks";
+  const test::TestGrid grid;
+  const std::map<std::pair<int, int>, std::vector<std::int64_t>> expected = {
+      {{1, 1}, {0}},           {{1, 2}, {96, 96}},       {{2, 1}, {160, 160}},
+      {{1, 3}, {112, 80, 96}}, {{3, 1}, {112, 112, 96}}, {{2, 2}, {64, 32, 32, 64}}};
+  const auto counts = expected.find({grid.rows(), grid.cols()});
+  if (counts == expected.end()) {
+    GTEST_SKIP() << "no count for a " << grid.rows() << "x" << grid.cols() << " grid";
+  }
   const DistributedMatrix w(grid, 4, 1);
   const DistributedPoissonSolver solver(w.layout());
   EXPECT_EQ(solver.bytesSentPerSolve(), counts->second[static_cast<std::size_t>(grid.rank())]);

@@ -123,7 +123,7 @@ void expectSameSummary(const fs::path& mpi, const fs::path& serial, int ranks) {
     }
   }
   EXPECT_EQ(a["mpi_ranks"], ranks);
-  const int rows = ranks == 4 ? 2 : 1;
+  const int rows = ranks == 4 ? 2 : ranks;  // the default grid: rows ≥ cols
   EXPECT_EQ(a["process_grid"], nlohmann::ordered_json::array({rows, ranks / rows}));
 }
 
