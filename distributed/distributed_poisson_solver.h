@@ -1,7 +1,9 @@
 // The Poisson solve P = Δ⁻¹(W − tr(W)/N · I) of Zeitlin's fluid on a block-cyclic W
 // (docs/distributed.md): whole diagonals are gathered on their owners
 // (DiagonalRedistribution), each is solved there by the serial HoppeYauLaplacian's
-// per-diagonal sweep, and the result goes back to the block-cyclic layout.
+// per-diagonal sweep, and the result goes back to the block-cyclic layout. Each rank keeps
+// the factors of its own diagonals only, packed as its diagonals are (N²/P numbers, not the
+// serial class's N×N matrices).
 #pragma once
 
 #include <ddb/distributed/diagonal_redistribution.h>
@@ -18,32 +20,39 @@ namespace ddb {
 class DistributedPoissonSolver {
  public:
   explicit DistributedPoissonSolver(const BlockCyclicLayout& layout)
-      : laplacian_(layout.size()),
-        grid_(&layout.grid()),
-        block_(layout.block()),
-        redistribution_(layout) {
-    diagonals_.resize(redistribution_.ownedEntries());
+      : n_(layout.size()), grid_(&layout.grid()), block_(layout.block()), redistribution_(layout) {
+    const Eigen::Index entries = redistribution_.ownedEntries();
+    diagonals_.resize(entries);
+    lower_.resize(entries);
+    inverse_pivot_.resize(entries);
+    Eigen::VectorXd diagonal, off;
+    const auto& owned = redistribution_.diagonals();
+    for (std::size_t d = 0; d < owned.size(); ++d) {
+      const int m = owned[d];
+      HoppeYauLaplacian::blockCoefficients(n_, m, diagonal, off);
+      Eigen::VectorBlock<Eigen::VectorXd> lower = segment(lower_, d),
+                                          inverse_pivot = segment(inverse_pivot_, d);
+      HoppeYauLaplacian::factorBlock(diagonal, off, m == 0, lower, inverse_pivot);
+    }
   }
 
   /// out = Δ⁻¹(W − tr(W)/N · I); collective. out may be W; both have this solver's grid, N
   /// and block size.
   void solve(const DistributedMatrix& W, DistributedMatrix& out) {
     for (const DistributedMatrix* m : {&W, static_cast<const DistributedMatrix*>(&out)}) {
-      if (m->size() != laplacian_.size() || m->layout().block() != block_ ||
-          &m->layout().grid() != grid_) {
+      if (m->size() != n_ || m->layout().block() != block_ || &m->layout().grid() != grid_) {
         throwInvalid(
             "matrix",
             "N = " + std::to_string(m->size()) + ", block " + std::to_string(m->layout().block()),
-            "must have N = " + std::to_string(laplacian_.size()) + " and block " +
-                std::to_string(block_) + " for this solver");
+            "must have N = " + std::to_string(n_) + " and block " + std::to_string(block_) +
+                " for this solver");
       }
     }
     redistribution_.toDiagonals(W.local(), diagonals_);
     const auto& owned = redistribution_.diagonals();
     for (std::size_t d = 0; d < owned.size(); ++d) {
-      const int m = owned[d];
-      laplacian_.solveDiagonal(
-          m, diagonals_.segment(redistribution_.offsets()[d], laplacian_.size() - std::abs(m)));
+      HoppeYauLaplacian::sweepDiagonal(owned[d] == 0, segment(lower_, d),
+                                       segment(inverse_pivot_, d), segment(diagonals_, d));
     }
     redistribution_.toBlockCyclic(diagonals_, out.local());
   }
@@ -54,11 +63,19 @@ class DistributedPoissonSolver {
   }
 
  private:
-  HoppeYauLaplacian laplacian_;
+  // The entries of this rank's d-th diagonal in a vector packed like diagonals_.
+  template <class Vector>
+  Eigen::VectorBlock<Vector> segment(Vector& packed, std::size_t d) const {
+    const int m = redistribution_.diagonals()[d];
+    return packed.segment(redistribution_.offsets()[d], n_ - std::abs(m));
+  }
+
+  int n_;
   const ProcessGrid* grid_;
   int block_;
   DiagonalRedistribution redistribution_;
   Eigen::VectorXcd diagonals_;
+  Eigen::VectorXd lower_, inverse_pivot_;  // the factors of the owned diagonals, packed
 };
 
 }  // namespace ddb

@@ -8,14 +8,14 @@ MEASURED.jsonl holds distributed-step-bench's lines (docs/data/distributed-step-
 Prints the calibration, the model's table for N = 2048 and 4096 and the fewest ranks that
 reach GLIFS's published time; with OUT.png also draws the figure.
 
-The model, per step on P ranks in the library's pr x pc grid (pr the largest divisor of P
-not above sqrt(P)), block b = 64, in the form of the ScaLAPACK Users' Guide's performance
+The model, per step on P ranks in the library's default pr x pc grid (pc the largest divisor
+of P not above sqrt(P), pr = P / pc), block b = 64, in the form of the ScaLAPACK Users' Guide's performance
 model (flops / P + words / sqrt(P) + messages):
   T = K_f 8 N^3 / (P F) + K_v V / B
       + L (K_v (N / b) (ceil(log2 pr) + ceil(log2 pc)) + 2 K_s (P - 1) + M_inv)
   V = 16 N^2 (1/pr + 1/pc - 2/P)  bytes a rank receives in one pzgemm (SUMMA: the row strip
       of A and the column strip of B it does not hold; equal to distributed-step-bench's
-      counted totals / P on 1 x 2 and 2 x 2 grids)
+      counted totals / P on 1 x 2, 2 x 1 and 2 x 2 grids)
   2 K_s (P - 1): the Poisson solves' all-to-all exchanges, two per solve, one solve per
       fixed-point sweep (K_s sweeps per step)
   M_inv = 2 N ceil(log2 pr) for alpha != 0: the LU factorisation's and the inversion's
@@ -40,8 +40,8 @@ GLIFS_N, GLIFS_CORES, GLIFS_STEP_S = 4096, 2500, 0.55
 
 
 def grid(p):
-    rows = max(d for d in range(1, int(math.isqrt(p)) + 1) if p % d == 0)
-    return rows, p // rows
+    cols = max(d for d in range(1, int(math.isqrt(p)) + 1) if p % d == 0)
+    return p // cols, cols
 
 
 def product_bytes_per_rank(n, p):
@@ -129,7 +129,7 @@ def plot(c, lines, scenarios, out):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    # Square grids and the measured P = 2: a prime P would give a 1 x P grid.
+    # Square grids and the measured P = 2: a prime P would give a P x 1 grid.
     ranks = [1, 2] + [k * k for k in range(2, 65)]
     colours = {512: "tab:gray", 1024: "tab:blue", 2048: "tab:green", 4096: "tab:red"}
     fig, axes = plt.subplots(1, 2, figsize=(12, 5.2), sharey=True)

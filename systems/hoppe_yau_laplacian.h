@@ -27,6 +27,10 @@
 namespace ddb {
 
 class HoppeYauLaplacian {
+  // A diagonal of an N×N matrix as a vector (onDiagonal).
+  using DiagonalView = Eigen::Map<Eigen::VectorXd, 0, Eigen::InnerStride<>>;
+  using ConstDiagonalView = Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<>>;
+
  public:
   explicit HoppeYauLaplacian(Eigen::Index n) : n_(n), blocks_(static_cast<std::size_t>(n)) {
     if (n < 2) throwInvalid("N", std::to_string(n), "must be >= 2");
@@ -34,16 +38,62 @@ class HoppeYauLaplacian {
     inverse_pivot_.setZero(n, n);
     for (Eigen::Index m = 0; m < n; ++m) {
       Block& b = blocks_[static_cast<std::size_t>(m)];
-      const Eigen::Index length = n - m;
-      b.diagonal.resize(length);
-      b.off.resize(length);  // off(k) couples k−1 and k along the diagonal; off(0) unused
-      for (Eigen::Index k = 0; k < length; ++k) {
-        const double i = double(k), j = double(k + m), N = double(n);
-        b.diagonal(k) = -((N - 1) * (i + j + 1) - 2 * i * j);
-        b.off(k) = k == 0 ? 0.0 : std::sqrt(i * (N - i) * j * (N - j));
-      }
-      factor(b, m);
+      blockCoefficients(n, m, b.diagonal, b.off);
+      // Entry k of diagonal m at (k, k + m) and of −m at (k + m, k): strides of N + 1.
+      DiagonalView lower = onDiagonal(lower_, m), inverse_pivot = onDiagonal(inverse_pivot_, m);
+      factorBlock(b.diagonal, b.off, m == 0, lower, inverse_pivot);
+      onDiagonal(lower_, -m) = lower;
+      onDiagonal(inverse_pivot_, -m) = inverse_pivot;
     }
+  }
+
+  /// Diagonal m's tridiagonal block (the same for m and −m): its diagonal d_k and the
+  /// couplings off(k) of entries k − 1 and k (off(0) = 0), k = 0 … N − |m| − 1.
+  static void blockCoefficients(Eigen::Index n, Eigen::Index m, Eigen::VectorXd& diagonal,
+                                Eigen::VectorXd& off) {
+    const Eigen::Index offset = std::abs(m), length = n - offset;
+    diagonal.resize(length);
+    off.resize(length);
+    for (Eigen::Index k = 0; k < length; ++k) {
+      const double i = double(k), j = double(k + offset), N = double(n);
+      diagonal(k) = -((N - 1) * (i + j + 1) - 2 * i * j);
+      off(k) = k == 0 ? 0.0 : std::sqrt(i * (N - i) * j * (N - j));
+    }
+  }
+
+  /// The LDLᵀ factors of a block, restricted to entries first … length − 1 (first = 1 for
+  /// m = 0, whose first unknown is pinned, else 0): lower(k) = off(k)/w_{k−1} and
+  /// inverse_pivot(k) = 1/w_k, w_k = d_k − lower(k) off(k); entries before `first` get 0.
+  template <class Lower, class InversePivot>
+  static void factorBlock(const Eigen::VectorXd& diagonal, const Eigen::VectorXd& off, bool zeroth,
+                          Lower& lower, InversePivot& inverse_pivot) {
+    const Eigen::Index length = diagonal.size(), first = zeroth ? 1 : 0;
+    double w = 0.0;
+    for (Eigen::Index k = 0; k < length; ++k) {
+      if (k < first) {
+        lower(k) = inverse_pivot(k) = 0.0;
+        continue;
+      }
+      lower(k) = k > first ? off(k) / w : 0.0;
+      w = diagonal(k) - lower(k) * off(k);
+      inverse_pivot(k) = 1.0 / w;
+    }
+  }
+
+  /// values ← the block's solve given its factors (factorBlock): the forward sweep, then
+  /// back substitution; the zeroth diagonal removes the mean before and after, as solve does
+  /// with the trace.
+  template <class Lower, class InversePivot>
+  static void sweepDiagonal(bool zeroth, const Lower& lower, const InversePivot& inverse_pivot,
+                            Eigen::Ref<Eigen::VectorXcd> values) {
+    const Eigen::Index length = values.size();
+    if (zeroth) values.array() -= values.mean();
+    for (Eigen::Index k = 1; k < length; ++k) values(k) -= lower(k) * values(k - 1);
+    values(length - 1) *= inverse_pivot(length - 1);
+    for (Eigen::Index k = length - 2; k >= 0; --k) {
+      values(k) = values(k) * inverse_pivot(k) - lower(k + 1) * values(k + 1);
+    }
+    if (zeroth) values.array() -= values.mean();
   }
 
   Eigen::Index size() const { return n_; }
@@ -104,14 +154,7 @@ class HoppeYauLaplacian {
                    std::to_string(m) + " with " + std::to_string(values.size()) + " entries",
                    "must be within ±" + std::to_string(n_ - 1) + " and have N − |m| entries");
     }
-    if (m == 0) values.array() -= values.mean();
-    for (Eigen::Index k = 1; k < length; ++k) values(k) -= lower_(k, k + offset) * values(k - 1);
-    values(length - 1) *= inverse_pivot_(length - 1, n_ - 1);
-    for (Eigen::Index k = length - 2; k >= 0; --k) {
-      values(k) =
-          values(k) * inverse_pivot_(k, k + offset) - lower_(k + 1, k + 1 + offset) * values(k + 1);
-    }
-    if (m == 0) values.array() -= values.mean();
+    sweepDiagonal(m == 0, onDiagonal(lower_, m), onDiagonal(inverse_pivot_, m), values);
   }
 
  private:
@@ -166,18 +209,16 @@ class HoppeYauLaplacian {
     Eigen::VectorXd diagonal, off;
   };
 
-  // LDLᵀ of block m restricted to indices first..end (first = 1 for m = 0, else 0):
-  // lower(k) = off(k)/w_{k−1}, w_k = d_k − lower(k) off(k), stored with 1/w_k at the entry
-  // k of diagonals m and −m (entries before `first` keep lower = 1/w = 0).
-  void factor(const Block& b, Eigen::Index m) {
-    const Eigen::Index length = b.diagonal.size(), first = m == 0 ? 1 : 0;
-    double w = 0.0;
-    for (Eigen::Index k = first; k < length; ++k) {
-      const double lower = k > first ? b.off(k) / w : 0.0;
-      w = b.diagonal(k) - lower * b.off(k);
-      lower_(k, k + m) = lower_(k + m, k) = lower;
-      inverse_pivot_(k, k + m) = inverse_pivot_(k + m, k) = 1.0 / w;
-    }
+  // Diagonal m of an N×N matrix as a vector, entry k at (k, k + m) (m ≥ 0) or (k − m, k).
+  static DiagonalView onDiagonal(Eigen::MatrixXd& matrix, Eigen::Index m) {
+    const Eigen::Index n = matrix.rows();
+    return DiagonalView(matrix.data() + (m >= 0 ? m * n : -m), n - std::abs(m),
+                        Eigen::InnerStride<>(n + 1));
+  }
+  static ConstDiagonalView onDiagonal(const Eigen::MatrixXd& matrix, Eigen::Index m) {
+    const Eigen::Index n = matrix.rows();
+    return ConstDiagonalView(matrix.data() + (m >= 0 ? m * n : -m), n - std::abs(m),
+                             Eigen::InnerStride<>(n + 1));
   }
 
   const Block& block(Eigen::Index m) const {

@@ -1,8 +1,9 @@
 // fluid-relax-mpi end to end (docs/distributed.md, "fluid-relax-mpi") against fluid-relax,
-// the serial app: on 1, 2 and 4 ranks (oversubscribed), N = 16 and 33 with block sizes that
-// do not divide N, α = 0, 0.5 and −0.5, 100 steps: W_final.csv equal to 1e-13 relative,
-// history.csv row by row and summary.json key by key equal to rounding (the Legendre
-// iteration counts up to a stopping test decided the other way at the tolerance's edge);
+// the serial app: on 1, 2 and 4 ranks (oversubscribed; also on the grid shapes --grid-rows
+// asks for), N = 16 and 33 with block sizes that do not divide N, α = 0, 0.5 and −0.5, 100 steps:
+// W_final.csv equal to 1e-13 relative, history.csv row by row and summary.json key by key equal to
+// rounding (the Legendre iteration counts up to a stopping test decided the other way at the
+// tolerance's edge);
 // --until-steady stops at the same step; --adaptive takes the serial app's steps (the same h,
 // the same rejections) on 1, 2 and 4 ranks, to --steps and to --t-end; bad input is refused
 // by every rank with fluid-relax's message, once, exit status 2 and nothing written. Checkpoints
@@ -93,7 +94,8 @@ void expectSameHistory(const fs::path& mpi, const fs::path& serial) {
   }
 }
 
-void expectSameSummary(const fs::path& mpi, const fs::path& serial, int ranks) {
+// rows: the process grid's rows asked for, 0 for the default shape.
+void expectSameSummary(const fs::path& mpi, const fs::path& serial, int ranks, int rows = 0) {
   const auto a = readJson(mpi / "summary.json");
   const auto b = readJson(serial / "summary.json");
   const std::set<std::string> rounding = {"energy_initial",
@@ -123,7 +125,7 @@ void expectSameSummary(const fs::path& mpi, const fs::path& serial, int ranks) {
     }
   }
   EXPECT_EQ(a["mpi_ranks"], ranks);
-  const int rows = ranks == 4 ? 2 : ranks;  // the default grid: rows ≥ cols
+  if (rows == 0) rows = ranks == 4 ? 2 : ranks;  // the default grid: rows ≥ cols
   EXPECT_EQ(a["process_grid"], nlohmann::ordered_json::array({rows, ranks / rows}));
 }
 
@@ -166,6 +168,37 @@ INSTANTIATE_TEST_SUITE_P(RanksSizesAlphas, FluidRelaxMpiTest,
                            std::replace(alpha.begin(), alpha.end(), '-', 'm');
                            return "P" + std::to_string(std::get<0>(info.param)) + "_N" +
                                   std::to_string(std::get<1>(info.param)) + "_alpha" + alpha;
+                         });
+
+// --grid-rows: the other shapes of 2 and 4 ranks (1×2, 1×4, 4×1) write what the serial app
+// writes, as the default shapes do above, and summary.json names the grid.
+class FluidRelaxMpiGridTest : public testing::TestWithParam<std::tuple<int, int>> {};
+
+TEST_P(FluidRelaxMpiGridTest, WritesWhatTheSerialAppWrites) {
+  const auto [ranks, rows] = GetParam();
+  const std::string name = "grid_" + std::to_string(ranks) + "_" + std::to_string(rows);
+  const fs::path serial = freshFolder("ddb_mpi_serial_", name);
+  const fs::path mpi = freshFolder("ddb_mpi_", name);
+  const std::string common = "--n 33 --alpha 0.5 --steps 100 --every 10 --quiet";
+  const AppResult s = runProgram(FLUID_RELAX_PATH, common + " --out " + serial.string());
+  ASSERT_EQ(s.status, 0) << s.output;
+  const AppResult m = runMpi(
+      ranks, common + " --block 5 --grid-rows " + std::to_string(rows) + " --out " + mpi.string());
+  ASSERT_EQ(m.status, 0) << m.output;
+  EXPECT_LT(matrixDistance(readCsv(mpi / "W_final.csv", nullptr),
+                           readCsv(serial / "W_final.csv", nullptr)),
+            1e-13);
+  expectSameHistory(mpi, serial);
+  expectSameSummary(mpi, serial, ranks, rows);
+  fs::remove_all(serial);
+  fs::remove_all(mpi);
+}
+
+INSTANTIATE_TEST_SUITE_P(RanksRows, FluidRelaxMpiGridTest,
+                         testing::Values(std::tuple{2, 1}, std::tuple{4, 1}, std::tuple{4, 4}),
+                         [](const auto& info) {
+                           return "P" + std::to_string(std::get<0>(info.param)) + "_rows" +
+                                  std::to_string(std::get<1>(info.param));
                          });
 
 TEST(FluidRelaxMpi, StopsWhenSteadyAtTheSerialAppsStep) {
@@ -238,6 +271,10 @@ TEST(FluidRelaxMpi, RefusesBadInputOnEveryRankOnce) {
       {"--steps 10 --bogus", "bogus"},
       {"--n 16 --steps 10 --block 17", "--block"},
       {"--steps 10 --block 2.5", "--block"},
+      {"--steps 10 --grid-rows 3", "--grid-rows = 3: must be a divisor of the number of ranks, 2"},
+      {"--steps 10 --grid-rows 0", "--grid-rows"},
+      {"--steps 10 --grid-rows 1.5", "--grid-rows"},
+      {"--steps 10 --grid-rows two", "--grid-rows"},
       {"--steps 10 --method rk4", "--method"},
       {"--steps 10 --newton --until-steady 1e-3", "--newton"},
       {"--steps 10 --adaptive --alpha 0", "--adaptive"},

@@ -374,7 +374,10 @@ int run(int argc, char** argv, const ProcessGrid& grid) {
   app::setupLogging(o.relax.log);
   if (grid.rank() != 0) spdlog::set_level(spdlog::level::off);
   MpiRun run = mpiRun(cli, o, grid);
-  const int result = relax(run, grid);
+  // --grid-rows: a grid of the same ranks in the shape asked for (every rank agreed on it).
+  std::optional<ProcessGrid> shaped;
+  if (run.grid_rows != grid.rows()) shaped.emplace(grid.comm(), run.grid_rows);
+  const int result = relax(run, shaped ? *shaped : grid);
   if (grid.rank() != 0) return result;
   return makeFigures(run.options, run.settings.out, result, DDB_PLOT_SCRIPT, DDB_ANIMATE_SCRIPT);
 }

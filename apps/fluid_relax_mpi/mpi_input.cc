@@ -64,11 +64,24 @@ void shareDefinition(const ProcessGrid& grid, fluid::Options& o, fluid::GivenFla
   n = static_cast<Eigen::Index>(in.get<std::int64_t>());
 }
 
-int readBlock(const MpiOptions& o, const ProcessGrid& grid, long n) {
+// --grid-rows: a divisor of the number of ranks, or the ProcessGrid's default shape.
+int readGridRows(const MpiOptions& o, const ProcessGrid& grid) {
+  const int ranks = grid.size();
+  if (o.grid_rows.empty()) return ProcessGrid::defaultRows(ranks);
+  const double rows = app::parseNumber("--grid-rows", o.grid_rows, o.grid_rows);
+  if (!(rows >= 1 && rows <= ranks && rows == static_cast<int>(rows) &&
+        ranks % static_cast<int>(rows) == 0)) {
+    app::usageError("--grid-rows", o.grid_rows,
+                    "must be a divisor of the number of ranks, " + std::to_string(ranks));
+  }
+  return static_cast<int>(rows);
+}
+
+int readBlock(const MpiOptions& o, int ranks, int grid_rows, long n) {
   if (o.block.empty()) {
     // ⌊N/q⌋ gives every process row and column at least one block (⌈N/q⌉ may not: N = 6
-    // on a 1×5 grid would give 3 blocks of 2).
-    const long per_process = n / std::max(grid.rows(), grid.cols());
+    // on a 5×1 grid would give 3 blocks of 2).
+    const long per_process = n / std::max(grid_rows, ranks / grid_rows);
     return static_cast<int>(std::clamp<long>(per_process, 1, kDefaultBlock));
   }
   const double block = app::parseNumber("--block", o.block, o.block);
@@ -121,6 +134,9 @@ void addMpiOptions(CLI::App& cli, MpiOptions& o) {
       "--block", o.block,
       "block size of the block-cyclic layout (default: " + std::to_string(kDefaultBlock) +
           ", or N / max(grid rows, grid cols) rounded down if smaller)");
+  cli.add_option("--grid-rows", o.grid_rows,
+                 "rows of the process grid, a divisor of the number of ranks (default: the most "
+                 "square grid with rows >= columns)");
   cli.footer(
       "\nfluid-relax-mpi is fluid-relax's ddb-cay relaxation with every N x N matrix "
       "distributed over the MPI ranks\n(docs/distributed.md): start it with mpirun -np P. "
@@ -151,7 +167,8 @@ MpiRun mpiRun(const CLI::App& cli, const MpiOptions& o, const ProcessGrid& grid)
     const int status = onEveryRank(grid, [&] {
       refuseForeignRun(dir, c);
       fluid::resumeSettings(cli, o.relax, c);
-      run.block = readBlock(o, grid, run.n);
+      run.grid_rows = readGridRows(o, grid);
+      run.block = readBlock(o, grid.size(), run.grid_rows, run.n);
     });
     if (status != 0) throw Reported{status};
     run.options = c.options;
@@ -166,7 +183,10 @@ MpiRun mpiRun(const CLI::App& cli, const MpiOptions& o, const ProcessGrid& grid)
     throw Reported{status};
   }
   shareDefinition(grid, run.options, run.given, run.settings, run.n);
-  if (const int status = onEveryRank(grid, [&] { run.block = readBlock(o, grid, run.n); })) {
+  if (const int status = onEveryRank(grid, [&] {
+        run.grid_rows = readGridRows(o, grid);
+        run.block = readBlock(o, grid.size(), run.grid_rows, run.n);
+      })) {
     throw Reported{status};
   }
   return run;

@@ -1,8 +1,8 @@
 // fluid-relax-mpi's input (docs/distributed.md, "fluid-relax-mpi"): fluid-relax's command
 // line and checks (fluid_relax/input.h, and fluid_relax/checkpoint.h for --resume) with
-// --block, less the flags it refuses, and the agreement of all ranks on the outcome: rank 0
-// alone makes W₀ or reads the checkpoint and checks what depends on them, every rank checks
-// the rest, and a rank that refuses the input refuses it for all.
+// --block and --grid-rows, less the flags it refuses, and the agreement of all ranks on the
+// outcome: rank 0 alone makes W₀ or reads the checkpoint and checks what depends on them, every
+// rank checks the rest, and a rank that refuses the input refuses it for all.
 #pragma once
 
 #include <ddb/distributed/process_grid.h>
@@ -25,7 +25,8 @@ constexpr const char* kApp = "fluid-relax-mpi";
 /// history row's state gathered whole there.
 constexpr Eigen::Index kMaxN = SUN::kMaxN;
 /// The default block size is this, or less where N is small: max(1, ⌊N / max(grid rows,
-/// cols)⌋), so that every rank holds entries when N ≥ max(grid rows, cols).
+/// cols)⌋), so that every rank holds entries when N ≥ max(grid rows, cols). The grid is the
+/// ProcessGrid's default shape unless --grid-rows asks for another.
 constexpr int kDefaultBlock = 64;
 
 /// An outcome every rank agreed on and one rank has printed: the app exits with `status`.
@@ -35,10 +36,11 @@ struct Reported {
 
 struct MpiOptions {
   fluid::Options relax;
-  std::string block;  // as given ("" for the default)
+  std::string block;      // as given ("" for the default)
+  std::string grid_rows;  // likewise
 };
 
-/// fluid-relax's options with --block and this app's --help footer.
+/// fluid-relax's options with --block, --grid-rows and this app's --help footer.
 void addMpiOptions(CLI::App& cli, MpiOptions& o);
 
 /// The run a command line asks for, the same on every rank but for the whole matrices,
@@ -56,13 +58,15 @@ struct MpiRun {
   /// with an empty record.
   std::optional<fluid::Checkpoint> resume;
   int block = 0;
+  /// The process grid's rows (--grid-rows, or the default shape's), a divisor of the ranks.
+  int grid_rows = 0;
 };
 
 /// fluid::settings() (a new run: W₀, the default h and every check that reads W₀) or
 /// fluid-relax's reading of the checkpoint (--resume), on rank 0, whose run definition is
 /// then broadcast; the refused flags, the resume's checks against the command line and
-/// --block on every rank. Bad input on any rank is Reported{2} on every rank (printed by the
-/// lowest such rank), so that no rank goes on alone.
+/// --block and --grid-rows on every rank. Bad input on any rank is Reported{2} on every rank
+/// (printed by the lowest such rank), so that no rank goes on alone.
 MpiRun mpiRun(const CLI::App& cli, const MpiOptions& o, const ProcessGrid& grid);
 
 /// Runs `job` on rank 0 and agrees on its outcome: a UsageError (status 2) or any other
