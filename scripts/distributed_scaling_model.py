@@ -148,7 +148,7 @@ def plot(c, lines, scenarios, out):
             ax.plot([GLIFS_CORES], [GLIFS_STEP_S], "*", color="black", ms=14,
                     label="GLIFS, N = 4096 (published)")
         ax.axvline(500, color="black", lw=0.8, ls=":")
-        ax.text(540, 120, "500 cores", fontsize=9)
+        ax.text(540, 1.4e-3, "500 cores", fontsize=9)
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_ylim(1e-3, 300)
@@ -158,7 +158,7 @@ def plot(c, lines, scenarios, out):
     axes[0].set_ylabel("time per DDB Cayley step (s)")
     # One legend for both panels, where the α = 0.5 panel has room (the GLIFS star is α = 0's).
     handles, labels = axes[0].get_legend_handles_labels()
-    axes[1].legend(handles, labels, fontsize=8, loc="lower left")
+    axes[1].legend(handles, labels, fontsize=8, loc="upper right")
     fig.suptitle("Distributed DDB Cayley step: measured on 1 and 2 ranks of this machine (dots), "
                  "modelled for large P (lines)\nsolid: this machine's bandwidth per rank "
                  "(%.2g GB/s, fitted); dashed: a cluster node's link shared by its ranks "
