@@ -118,10 +118,22 @@ int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);
   int status = 0;
   try {
-    const ddb::ProcessGrid grid(MPI_COMM_WORLD, argc > 5 ? std::atoi(argv[5]) : 0);
+    // grid_rows: a whole number (ProcessGrid refuses one that does not divide P).
+    int rows = 0;
+    if (argc > 5) {
+      char* end = nullptr;
+      const long value = std::strtol(argv[5], &end, 10);
+      if (end == argv[5] || *end != '\0' || value < 1 || value > 1 << 20) {
+        ddb::throwInvalid("grid rows", argv[5], "must be a positive integer");
+      }
+      rows = static_cast<int>(value);
+    }
+    const ddb::ProcessGrid grid(MPI_COMM_WORLD, rows);
     status = runBench(argc, argv, grid);
   } catch (const ddb::InvalidArgument& e) {
-    std::fprintf(stderr, "distributed-step-bench: %s\n", e.what());
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    if (rank == 0) std::fprintf(stderr, "distributed-step-bench: %s\n", e.what());
     status = 2;
   }
   MPI_Finalize();

@@ -2,8 +2,8 @@
 // (docs/distributed.md): whole diagonals are gathered on their owners
 // (DiagonalRedistribution), each is solved there by the serial HoppeYauLaplacian's
 // per-diagonal sweep, and the result goes back to the block-cyclic layout. Each rank keeps
-// the factors of its own diagonals only, packed as its diagonals are (N²/P numbers, not the
-// serial class's N×N matrices).
+// the factors of its own diagonals only, packed as its diagonals are (two vectors of about
+// N²/P numbers, not the serial class's N×N matrices).
 #pragma once
 
 #include <ddb/distributed/diagonal_redistribution.h>
@@ -21,6 +21,7 @@ class DistributedPoissonSolver {
  public:
   explicit DistributedPoissonSolver(const BlockCyclicLayout& layout)
       : n_(layout.size()), grid_(&layout.grid()), block_(layout.block()), redistribution_(layout) {
+    if (n_ < 2) throwInvalid("N", std::to_string(n_), "must be >= 2");
     const Eigen::Index entries = redistribution_.ownedEntries();
     diagonals_.resize(entries);
     lower_.resize(entries);
@@ -30,8 +31,8 @@ class DistributedPoissonSolver {
     for (std::size_t d = 0; d < owned.size(); ++d) {
       const int m = owned[d];
       HoppeYauLaplacian::blockCoefficients(n_, m, diagonal, off);
-      Eigen::VectorBlock<Eigen::VectorXd> lower = segment(lower_, d),
-                                          inverse_pivot = segment(inverse_pivot_, d);
+      Eigen::VectorBlock<Eigen::VectorXd> lower = ownedSegment(lower_, d),
+                                          inverse_pivot = ownedSegment(inverse_pivot_, d);
       HoppeYauLaplacian::factorBlock(diagonal, off, m == 0, lower, inverse_pivot);
     }
   }
@@ -51,8 +52,9 @@ class DistributedPoissonSolver {
     redistribution_.toDiagonals(W.local(), diagonals_);
     const auto& owned = redistribution_.diagonals();
     for (std::size_t d = 0; d < owned.size(); ++d) {
-      HoppeYauLaplacian::sweepDiagonal(owned[d] == 0, segment(lower_, d),
-                                       segment(inverse_pivot_, d), segment(diagonals_, d));
+      HoppeYauLaplacian::sweepDiagonal(owned[d] == 0, ownedSegment(lower_, d),
+                                       ownedSegment(inverse_pivot_, d),
+                                       ownedSegment(diagonals_, d));
     }
     redistribution_.toBlockCyclic(diagonals_, out.local());
   }
@@ -65,7 +67,7 @@ class DistributedPoissonSolver {
  private:
   // The entries of this rank's d-th diagonal in a vector packed like diagonals_.
   template <class Vector>
-  Eigen::VectorBlock<Vector> segment(Vector& packed, std::size_t d) const {
+  Eigen::VectorBlock<Vector> ownedSegment(Vector& packed, std::size_t d) const {
     const int m = redistribution_.diagonals()[d];
     return packed.segment(redistribution_.offsets()[d], n_ - std::abs(m));
   }

@@ -9,8 +9,8 @@ Prints the calibration, the model's table for N = 2048 and 4096 and the fewest r
 reach GLIFS's published time; with OUT.png also draws the figure.
 
 The model, per step on P ranks in the library's default pr x pc grid (pc the largest divisor
-of P not above sqrt(P), pr = P / pc), block b = 64, in the form of the ScaLAPACK Users' Guide's performance
-model (flops / P + words / sqrt(P) + messages):
+of P not above sqrt(P), pr = P / pc), block b = 64, in the form of the ScaLAPACK Users'
+Guide's performance model (flops / P + words / sqrt(P) + messages):
   T = K_f 8 N^3 / (P F) + K_v V / B
       + L (K_v (N / b) (ceil(log2 pr) + ceil(log2 pc)) + 2 K_s (P - 1) + M_inv)
   V = 16 N^2 (1/pr + 1/pc - 2/P)  bytes a rank receives in one pzgemm (SUMMA: the row strip

@@ -1,10 +1,16 @@
 // The main of the MPI tests: every rank runs every test (the distributed operations are
 // collective); rank 0 prints GoogleTest's usual report, the other ranks only their failed
 // assertions, prefixed with their rank, and every rank exits with the worst result of all.
+// --grid-rows=R (after GoogleTest's own flags) runs the tests on a grid of R rows
+// (mpi_test_support.h, TestGrid); anything else left over is refused.
 #include <gtest/gtest.h>
 #include <mpi.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "mpi_test_support.h"
 
 namespace {
 
@@ -29,6 +35,19 @@ int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  constexpr const char* kRows = "--grid-rows=";
+  for (int i = 1; i < argc; ++i) {
+    char* end = nullptr;
+    const long rows = std::strncmp(argv[i], kRows, std::strlen(kRows)) == 0
+                          ? std::strtol(argv[i] + std::strlen(kRows), &end, 10)
+                          : 0;
+    if (rows < 1 || rows > 1024 || *end != '\0') {
+      if (rank == 0) std::fprintf(stderr, "unknown argument %s (--grid-rows=R only)\n", argv[i]);
+      MPI_Finalize();
+      return 2;
+    }
+    ddb::test::gridRowsAsked() = static_cast<int>(rows);
+  }
   if (rank != 0) {
     auto& listeners = testing::UnitTest::GetInstance()->listeners();
     delete listeners.Release(listeners.default_result_printer());

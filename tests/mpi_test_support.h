@@ -8,24 +8,24 @@
 
 #include <Eigen/Core>
 #include <complex>
-#include <cstdlib>
 #include <random>
 #include <string>
 #include <tuple>
 
 namespace ddb::test {
 
-/// The grid rows the tests ask for: DDB_TEST_GRID_ROWS (set by tests/CMakeLists.txt for the
-/// runs on the other shape of P = 2 and 3 ranks), else 0, the default shape.
-inline int gridRows() {
-  const char* rows = std::getenv("DDB_TEST_GRID_ROWS");
-  return rows != nullptr ? std::atoi(rows) : 0;
+/// The grid rows the tests ask for: the test program's --grid-rows=R (tests/mpi_test_main.cc;
+/// tests/CMakeLists.txt passes it for the runs on the other shape of P = 2 and 3 ranks), else
+/// 0, the default shape.
+inline int& gridRowsAsked() {
+  static int rows = 0;
+  return rows;
 }
 
 /// The grid of all ranks the tests run on.
 class TestGrid : public ProcessGrid {
  public:
-  TestGrid() : ProcessGrid(MPI_COMM_WORLD, gridRows()) {}
+  TestGrid() : ProcessGrid(MPI_COMM_WORLD, gridRowsAsked()) {}
 };
 
 inline Eigen::MatrixXcd randomComplexMatrix(int n, unsigned seed) {

@@ -40,19 +40,20 @@ TEST(ProcessGrid, DefaultIsTheMostSquareFactorisationWithRowsAtLeastCols) {
   }
 }
 
-// Every divisor of P as the rows, rank r at (r / cols, r mod cols); others refused on every
-// rank, naming the parameter.
+// Every divisor of P as the rows, rank r at (r / cols, r mod cols); others (−1, the
+// non-divisors up to P, P + 1) refused on every rank, naming the parameter.
 TEST(ProcessGrid, TakesAnyRowsThatDivideTheRanks) {
   const int ranks = ProcessGrid().size();
-  for (int rows = 1; rows <= ranks; ++rows) {
-    if (ranks % rows != 0) continue;
-    const ProcessGrid grid(MPI_COMM_WORLD, rows);
-    EXPECT_EQ(grid.rows(), rows);
-    EXPECT_EQ(grid.cols(), ranks / rows);
-    EXPECT_EQ(grid.row(), grid.rank() / grid.cols());
-    EXPECT_EQ(grid.col(), grid.rank() % grid.cols());
-  }
-  for (const int rows : {-1, ranks + 1}) {
+  for (int rows = -1; rows <= ranks + 1; ++rows) {
+    if (rows == 0) continue;  // the default shape
+    if (rows >= 1 && ranks % rows == 0) {
+      const ProcessGrid grid(MPI_COMM_WORLD, rows);
+      EXPECT_EQ(grid.rows(), rows);
+      EXPECT_EQ(grid.cols(), ranks / rows);
+      EXPECT_EQ(grid.row(), grid.rank() / grid.cols());
+      EXPECT_EQ(grid.col(), grid.rank() % grid.cols());
+      continue;
+    }
     try {
       const ProcessGrid grid(MPI_COMM_WORLD, rows);
       ADD_FAILURE() << rows << " rows accepted on " << ranks << " ranks";
@@ -60,6 +61,14 @@ TEST(ProcessGrid, TakesAnyRowsThatDivideTheRanks) {
       EXPECT_NE(std::string(e.what()).find("grid rows"), std::string::npos) << e.what();
     }
   }
+}
+
+// The suites' grid has the rows the program was started with (--grid-rows=R), else the
+// default shape's.
+TEST(ProcessGrid, TheTestsGridHasTheRowsAsked) {
+  const test::TestGrid grid;
+  const int asked = test::gridRowsAsked();
+  EXPECT_EQ(grid.rows(), asked > 0 ? asked : ProcessGrid::defaultRows(grid.size()));
 }
 
 TEST(DistributedMatrix, RefusesABadBlockSize) {

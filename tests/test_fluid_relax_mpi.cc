@@ -288,6 +288,16 @@ TEST(FluidRelaxMpi, RefusesBadInputOnEveryRankOnce) {
     EXPECT_EQ(messageCount(r.error), 1u) << arguments << "\n" << r.error;
     EXPECT_FALSE(fs::exists(out)) << arguments;
   }
+  // Rows within [1, P] that do not divide P.
+  {
+    const AppResult r = runMpi(4, "--steps 10 --grid-rows 3 --out " + out.string());
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.error.find("--grid-rows = 3: must be a divisor of the number of ranks, 4"),
+              std::string::npos)
+        << r.error;
+    EXPECT_EQ(messageCount(r.error), 1u) << r.error;
+    EXPECT_FALSE(fs::exists(out));
+  }
 }
 
 // ---- Checkpoints, --resume and --h5 ----
@@ -495,6 +505,7 @@ TEST(FluidRelaxMpiCheckpoint, RefusesBadResumesOnEveryRankOnce) {
       {"--steps 20 --resume " + corrupt.string(), corrupt, "is corrupt (checksum mismatch)"},
       {"--resume " + done.string(), done, "the run has taken 10 steps, its cap 10"},
       {"--steps 20 --resume " + newton.string(), newton, "its run used --newton"},
+      {"--steps 20 --grid-rows 3 --resume " + done.string(), done, "--grid-rows = 3"},
   };
   for (const auto& [arguments, folder, message] : cases) {
     const bool existed = fs::exists(folder);

@@ -343,11 +343,15 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
     return app::kExitFailed;
   }
   if (result.stop == RelaxStop::kInterrupted) {
+    // The same grid shape continues the run to the bit (docs/distributed.md, "Checkpoints").
+    const std::string shape = grid.rows() == ProcessGrid::defaultRows(grid.size())
+                                  ? ""
+                                  : " --grid-rows " + std::to_string(grid.rows());
     spdlog::warn(
         "stopped by {} after step {} (t = {}): wrote the outputs and a checkpoint to {}; "
-        "continue with: mpirun -np {} fluid-relax-mpi --resume {}",
+        "continue with: mpirun -np {} fluid-relax-mpi --resume {}{}",
         app::StopSignals::name(flags.signal), at.k, at.t, s.out.string(), grid.size(),
-        s.out.string());
+        s.out.string(), shape);
     return app::StopSignals::exitStatus(flags.signal);
   }
   spdlog::info("{} at step {}, t = {}: spectrum drift <= {:.2e}, {:.3g} s; wrote {}",

@@ -65,8 +65,7 @@ void shareDefinition(const ProcessGrid& grid, fluid::Options& o, fluid::GivenFla
 }
 
 // --grid-rows: a divisor of the number of ranks, or the ProcessGrid's default shape.
-int readGridRows(const MpiOptions& o, const ProcessGrid& grid) {
-  const int ranks = grid.size();
+int readGridRows(const MpiOptions& o, int ranks) {
   if (o.grid_rows.empty()) return ProcessGrid::defaultRows(ranks);
   const double rows = app::parseNumber("--grid-rows", o.grid_rows, o.grid_rows);
   if (!(rows >= 1 && rows <= ranks && rows == static_cast<int>(rows) &&
@@ -153,7 +152,10 @@ void addMpiOptions(CLI::App& cli, MpiOptions& o) {
 
 MpiRun mpiRun(const CLI::App& cli, const MpiOptions& o, const ProcessGrid& grid) {
   MpiRun run;
-  if (const int status = onEveryRank(grid, [&] { refuseUnsupported(cli, o.relax); })) {
+  if (const int status = onEveryRank(grid, [&] {
+        refuseUnsupported(cli, o.relax);
+        run.grid_rows = readGridRows(o, grid.size());
+      })) {
     throw Reported{status};
   }
   if (!o.relax.resume.empty()) {
@@ -167,7 +169,6 @@ MpiRun mpiRun(const CLI::App& cli, const MpiOptions& o, const ProcessGrid& grid)
     const int status = onEveryRank(grid, [&] {
       refuseForeignRun(dir, c);
       fluid::resumeSettings(cli, o.relax, c);
-      run.grid_rows = readGridRows(o, grid);
       run.block = readBlock(o, grid.size(), run.grid_rows, run.n);
     });
     if (status != 0) throw Reported{status};
@@ -183,10 +184,8 @@ MpiRun mpiRun(const CLI::App& cli, const MpiOptions& o, const ProcessGrid& grid)
     throw Reported{status};
   }
   shareDefinition(grid, run.options, run.given, run.settings, run.n);
-  if (const int status = onEveryRank(grid, [&] {
-        run.grid_rows = readGridRows(o, grid);
-        run.block = readBlock(o, grid.size(), run.grid_rows, run.n);
-      })) {
+  if (const int status =
+          onEveryRank(grid, [&] { run.block = readBlock(o, grid.size(), run.grid_rows, run.n); })) {
     throw Reported{status};
   }
   return run;
