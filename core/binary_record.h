@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -23,10 +24,13 @@ class CorruptRecord : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// FNV-1a's offset basis: the hash of no bytes.
+constexpr std::uint64_t kFnv1a64Basis = 0xcbf29ce484222325ULL;
+
 /// The 64-bit FNV-1a hash of `bytes` (Fowler, Noll, Vo): a checksum against truncation and
-/// corruption, not against tampering.
-inline std::uint64_t fnv1a64(std::string_view bytes) {
-  std::uint64_t hash = 0xcbf29ce484222325ULL;
+/// corruption, not against tampering. It is a stream hash: the hash of a + b is
+/// fnv1a64(b, fnv1a64(a)), so that a file that grows can keep its hash as it is written.
+inline std::uint64_t fnv1a64(std::string_view bytes, std::uint64_t hash = kFnv1a64Basis) {
   for (const char c : bytes) {
     hash ^= static_cast<unsigned char>(c);
     hash *= 0x100000001b3ULL;
@@ -125,8 +129,15 @@ class BinaryRecordReader {
       throw CorruptRecord("a matrix of " + std::to_string(rows) + " x " + std::to_string(cols) +
                           " where the layout has another size");
     }
-    const auto bytes = sizeof(typename Derived::Scalar) * static_cast<std::size_t>(rows) *
-                       static_cast<std::size_t>(cols);
+    // The size is checked against what is left before it is multiplied out, so that a
+    // corrupt shape can neither overflow the product nor allocate beyond the record.
+    constexpr auto kScalar = sizeof(typename Derived::Scalar);
+    const auto r = static_cast<std::uint64_t>(rows), c = static_cast<std::uint64_t>(cols);
+    if (r != 0 && c > std::numeric_limits<std::uint64_t>::max() / kScalar / r) {
+      throw CorruptRecord("a matrix of " + std::to_string(rows) + " x " + std::to_string(cols) +
+                          " larger than any record");
+    }
+    const auto bytes = static_cast<std::size_t>(kScalar * r * c);
     require(bytes);
     m.resize(rows, cols);
     take(m.data(), bytes);

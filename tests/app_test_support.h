@@ -137,9 +137,11 @@ inline nlohmann::ordered_json readJson(const fs::path& path) {
   return nlohmann::ordered_json::parse(readFile(path));
 }
 
-/// An empty (removed) folder under the system's temporary directory.
+/// An empty (removed) folder under the system's temporary directory, named for this process
+/// too, so that two suites run at once (ctest -j, two checkouts) never share one.
 inline fs::path freshFolder(const std::string& prefix, const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / (prefix + name);
+  const fs::path dir =
+      fs::temp_directory_path() / (prefix + std::to_string(::getpid()) + "_" + name);
   fs::remove_all(dir);
   return dir;
 }

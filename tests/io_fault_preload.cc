@@ -7,6 +7,8 @@
 //                      create mkstemp or fopen for writing of a matching name fails with
 //                             EACCES (the folder became unwritable)
 //                      rename rename onto a matching target fails with EACCES
+//   DDB_IO_FAULT_AFTER the number of matching calls that succeed before the faults begin
+//                      (default 0): a disk that fills in the middle of a run
 // Every call that is not matched goes on to the real function. The apps write through
 // stdio and call fsync, mkstemp and rename themselves, so these are the calls they make;
 // glibc's internal write() from fflush cannot be interposed, hence fwrite and fflush.
@@ -24,8 +26,13 @@ namespace {
 bool faultOn(const char* op, const std::string& path) {
   const char* wanted_op = std::getenv("DDB_IO_FAULT_OP");
   const char* pattern = std::getenv("DDB_IO_FAULT_PATH");
-  return wanted_op != nullptr && pattern != nullptr && std::strcmp(wanted_op, op) == 0 &&
-         path.find(pattern) != std::string::npos;
+  if (wanted_op == nullptr || pattern == nullptr || std::strcmp(wanted_op, op) != 0 ||
+      path.find(pattern) == std::string::npos) {
+    return false;
+  }
+  static const char* after = std::getenv("DDB_IO_FAULT_AFTER");
+  static long matched = 0;
+  return ++matched > (after != nullptr ? std::atol(after) : 0);
 }
 
 /// The path an open descriptor refers to, from /proc/self/fd.

@@ -79,10 +79,10 @@ TEST(EnergyRises, AreNotCountedWhereNoMonotoneEnergyIsPromised) {
           .status,
       0);
   EXPECT_EQ(summaryRises(out / "summary.json"), -1);
-  ASSERT_EQ(
-      runProgram(FLUID_RELAX_PATH, "--quiet --n 8 --steps 5 --alpha -0.5 --out " + out.string())
-          .status,
-      0);
+  ASSERT_EQ(runProgram(FLUID_RELAX_PATH,
+                       "--quiet --n 8 --steps 5 --alpha -0.5 --overwrite --out " + out.string())
+                .status,
+            0);
   EXPECT_EQ(summaryRises(out / "summary.json"), -1);
 }
 

@@ -3,7 +3,9 @@
 // (write or fsync: ENOSPC) or an output folder that turned unwritable (creating the
 // file or renaming it into place: EACCES) would. Each fault must give exit status 1 and
 // a message naming the file, leave no temporary file, and keep every file completed
-// before it whole: byte for byte what a run without the fault wrote. (A chmod of the
+// before it whole: byte for byte what a run without the fault wrote. A journal (history.csv's
+// .partial) stays as far as it got, since a checkpoint may continue it
+// (tests/test_run_folder.cc resumes such folders). (A chmod of the
 // folder mid-run would not do: tests may run as root, whom a mode of 0555 does not stop.)
 #include <gmock/gmock.h>
 
@@ -59,9 +61,20 @@ void expectFaultsHandled(const AppCase& app, const std::string& prefix,
         if (name == file) break;
         expected.insert(name);
       }
+      // The fluid apps' lock (run.lock) stays, empty; a journal that failed (history.csv's
+      // .partial) stays as far as it was written, for a resume (docs/reliability.md).
       std::set<std::string> found;
       for (const auto& entry : fs::directory_iterator(out)) {
-        found.insert(entry.path().filename().string());
+        const std::string name = entry.path().filename().string();
+        if (name == "run.lock") {
+          EXPECT_EQ(readFile(entry.path()), "") << what;
+        } else if (name == file + ".partial") {
+          const std::string clean_file = readFile(clean / file);
+          EXPECT_EQ(clean_file.substr(0, fs::file_size(entry.path())), readFile(entry.path()))
+              << what << ": the journal kept is not the clean run's prefix";
+        } else {
+          found.insert(name);
+        }
       }
       EXPECT_EQ(found, expected) << what << ": a temporary or a partial file was left";
       for (const std::string& name : expected) {

@@ -49,12 +49,18 @@ struct Record {
     energies.push_back(state.energy);
   }
 
-  /// r_K/r_{K−1} over the last step. Newton's convergence is superlinear: the last steps
-  /// shrink r by orders of magnitude each. A search with a wrong Hessian product would
-  /// converge linearly, by a steady factor near 1 at these conditionings.
-  double lastReduction() const {
-    const std::size_t k = residuals.size();
-    return k >= 2 ? residuals[k - 1] / residuals[k - 2] : 1.0;
+  /// The least r_k/r_{k−1} over the steps that started at r_{k−1} ≥ `floor`. Newton's
+  /// convergence is superlinear: near the steady state a step shrinks r by orders of
+  /// magnitude. A search with a wrong Hessian product would converge linearly, by a steady
+  /// factor near 1 at these conditionings. Steps that start within a few orders of rounding
+  /// are left out: there the reduction depends on the path rounding took (a CPU's BLAS kernel
+  /// changes it), not on the method.
+  double bestReductionFrom(double floor) const {
+    double best = 1.0;
+    for (std::size_t k = 1; k < residuals.size(); ++k) {
+      if (residuals[k - 1] >= floor) best = std::min(best, residuals[k] / residuals[k - 1]);
+    }
+    return best;
   }
 };
 
@@ -87,8 +93,7 @@ TEST(OrbitNewton, RigidBodyReachesTheAxisOfLeastEnergyQuadratically) {
   EXPECT_NEAR(run.final.norm(), s.mu0().norm(), 4 * kEps);
   EXPECT_LE(record.against, 8 * kEps);
   EXPECT_EQ(run.last.t, 0.0);
-  EXPECT_LE(record.lastReduction(), 1e-3);
-  EXPECT_GE(record.residuals.rbegin()[1], 1e-12);  // the last step started above rounding
+  EXPECT_LE(record.bestReductionFrom(1e-12), 1e-3);
 }
 
 TEST(OrbitNewton, NegativeAlphaReachesTheAxisOfLargestEnergy) {
@@ -144,8 +149,7 @@ TEST(OrbitNewton, FluidReachesASteadyStateOnTheOrbitWithTheEnergyFalling) {
   EXPECT_LE((spectrum(W) - spectrum(W0)).norm() / spectrum(W0).norm(), 1e-14);
   EXPECT_LE(record.against, 8 * kEps);
   EXPECT_LT(record.energies.back(), record.energies.front());
-  EXPECT_LE(record.lastReduction(), 1e-3);
-  EXPECT_GE(record.residuals.rbegin()[1], 1e-11);  // the last step started above rounding
+  EXPECT_LE(record.bestReductionFrom(1e-10), 1e-3);
 }
 
 TEST(OrbitNewton, OnlyTheSignOfAlphaMatters) {

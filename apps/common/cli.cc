@@ -1,9 +1,11 @@
 #include "common/cli.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <limits>
 #include <string_view>
 
@@ -58,6 +60,18 @@ std::optional<double> readDouble(std::string_view item) {
 double parseNumber(const std::string& flag, const std::string& text, const std::string& item) {
   const std::optional<double> v = readDouble(item);
   if (v && std::isfinite(*v)) return *v;
+  // A number too small for a normal double (which readDouble refuses) is refused as such:
+  // strtod reads it, to a subnormal or zero.
+  errno = 0;
+  char* end = nullptr;
+  const double tiny = std::strtod(item.c_str(), &end);
+  if (end != item.c_str() && *end == '\0' && std::isfinite(tiny) &&
+      std::abs(tiny) < std::numeric_limits<double>::min() && (tiny != 0 || errno == ERANGE)) {
+    usageError(flag, text,
+               "'" + item +
+                   "' is below the least normal double (2.2250738585072014e-308): give 0 "
+                   "or a number of larger magnitude");
+  }
   usageError(flag, text, "'" + item + "' is not a finite number");
 }
 
@@ -113,6 +127,7 @@ void rejectIfGiven(const CLI::App& cli, const std::string& flag, const std::stri
 void addSeedOption(CLI::App& cli, std::uint64_t& seed, const std::string& description) {
   cli.add_option("--seed", seed, description)
       ->capture_default_str()
+      ->check(fitsIn<std::uint64_t>())
       ->check(
           [](const std::string& text) {
             return text.rfind('-', 0) != 0 ? std::string()

@@ -6,9 +6,12 @@
 
 #include <CLI/CLI.hpp>
 #include <Eigen/Core>
+#include <charconv>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
+#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -49,6 +52,23 @@ std::string describeChoices(const std::vector<std::pair<std::string, std::string
 /// Throws a UsageError naming `flag` if it was given although it does not apply to
 /// `context` (a flag that would be silently ignored is bad input).
 void rejectIfGiven(const CLI::App& cli, const std::string& flag, const std::string& context);
+
+/// A check of an integer option's text: CLI11 2.1 reads integers with strtoll/strtoull,
+/// which saturate a value beyond the type's range (99999999999999999999 became 2^63 − 1)
+/// without a word; this refuses it, naming the range. Other text is left to CLI11's reading.
+template <class T>
+CLI::Validator fitsIn() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        T value{};
+        const char* begin = text.c_str() + (text.rfind('+', 0) == 0 ? 1 : 0);
+        const auto result = std::from_chars(begin, text.c_str() + text.size(), value);
+        if (result.ec != std::errc::result_out_of_range) return {};
+        return text + " is out of range: [" + std::to_string(std::numeric_limits<T>::min()) + ", " +
+               std::to_string(std::numeric_limits<T>::max()) + "]";
+      },
+      "");
+}
 
 /// Adds `--seed` (default 1) with `description`; a negative value is refused, which
 /// CLI11 would otherwise wrap around to 2^64 - 1 without a word.

@@ -69,4 +69,23 @@ void writeAttribute(hid_t on, const char* name, const std::string& value,
   writeAttribute(on, name, type.get(), &text, file);
 }
 
+void readAttribute(hid_t on, const char* name, hid_t type, void* value,
+                   const std::filesystem::path& file) {
+  const std::string what = std::string("read the attribute ") + name;
+  if (H5Aexists(on, name) <= 0) {
+    throw IoError(file.string() + ": not a fluid-relax HDF5 file: no attribute " + name);
+  }
+  const Handle attribute(H5Aopen(on, name, H5P_DEFAULT), file, what);
+  checkStatus(H5Aread(attribute.get(), type, value), file, what);
+}
+
+std::string readStringAttribute(hid_t on, const char* name, const std::filesystem::path& file) {
+  const Handle type = stringType(file);
+  char* text = nullptr;
+  readAttribute(on, name, type.get(), &text, file);
+  std::string value = text != nullptr ? text : "";
+  H5free_memory(text);
+  return value;
+}
+
 }  // namespace ddb::app::hdf5

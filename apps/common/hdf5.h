@@ -69,4 +69,12 @@ void writeAttribute(hid_t on, const char* name, hid_t type, const void* value,
 void writeAttribute(hid_t on, const char* name, const std::string& value,
                     const std::filesystem::path& file);
 
+/// Reads the scalar attribute `name` of the object `on` as `type` (H5T_NATIVE_*) into
+/// `value`; throws IoError naming `file` if it is missing or of another kind.
+void readAttribute(hid_t on, const char* name, hid_t type, void* value,
+                   const std::filesystem::path& file);
+
+/// Reads the scalar string attribute `name` of `on` (as writeAttribute writes it).
+std::string readStringAttribute(hid_t on, const char* name, const std::filesystem::path& file);
+
 }  // namespace ddb::app::hdf5

@@ -17,15 +17,19 @@ std::filesystem::path JournalFile::partialOf(const std::filesystem::path& target
   return target.string() + ".partial";
 }
 
+std::filesystem::path JournalFile::resumeFileOf(const std::filesystem::path& target) {
+  const std::filesystem::path partial = partialOf(target);
+  return ::access(partial.c_str(), F_OK) == 0 ? partial : target;
+}
+
 JournalFile::JournalFile(std::filesystem::path target)
     : target_(std::move(target)), partial_(partialOf(target_)) {
   file_ = std::fopen(partial_.c_str(), "wb");
   if (file_ == nullptr) fail("cannot create");
 }
 
-JournalFile::JournalFile(std::filesystem::path target, std::uint64_t length)
-    : target_(std::move(target)) {
-  // partial_ stays empty until the file is open: a resume that fails removes nothing.
+JournalFile::JournalFile(std::filesystem::path target, std::uint64_t length, std::uint64_t digest)
+    : target_(std::move(target)), digest_(digest) {
   const std::filesystem::path partial = partialOf(target_);
   if (::access(partial.c_str(), F_OK) != 0 && ::access(target_.c_str(), F_OK) == 0 &&
       std::rename(target_.c_str(), partial.c_str()) != 0) {
@@ -43,11 +47,12 @@ JournalFile::JournalFile(std::filesystem::path target, std::uint64_t length)
   partial_ = partial;
 }
 
-JournalFile::~JournalFile() { discard(); }
+JournalFile::~JournalFile() { close(); }
 
 void JournalFile::write(std::string_view text) {
   if (file_ == nullptr) throw std::logic_error("JournalFile::write after commit");
   if (std::fwrite(text.data(), 1, text.size(), file_) != text.size()) fail("cannot write");
+  digest_ = fnv1a64(text, digest_);
 }
 
 std::uint64_t JournalFile::sync() {
@@ -64,21 +69,18 @@ void JournalFile::commit() {
   file_ = nullptr;
   if (std::fclose(file) != 0) fail("cannot write");
   if (std::rename(partial_.c_str(), target_.c_str()) != 0) fail("cannot rename over");
-  partial_.clear();
   syncFolderOf(target_);
 }
 
 void JournalFile::fail(const char* what) {
   const std::string reason = std::strerror(errno);
-  discard();
+  close();
   throw IoError(std::string(what) + " " + target_.string() + ": " + reason);
 }
 
-void JournalFile::discard() noexcept {
+void JournalFile::close() noexcept {
   if (file_ != nullptr) std::fclose(file_);
   file_ = nullptr;
-  if (!partial_.empty()) ::unlink(partial_.c_str());
-  partial_.clear();
 }
 
 }  // namespace ddb::app

@@ -103,13 +103,15 @@ void addOptions(CLI::App& cli, Options& o) {
                      "choose h by the energy (docs/steady-states.md): the methods that keep the "
                      "Casimirs, alpha != 0; --h is the first step, --t-end caps the time");
   cli.add_option("--every", o.every, "write every K-th state and the last one to <method>.csv")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(app::fitsIn<decltype(o.every)>());
   cli.add_option("--out", o.out, "output folder")->capture_default_str();
   cli.add_flag("--plot", o.plot, "render PNG figures with matplotlib");
   cli.add_option("--sweep-h", o.sweep, "HMIN:HMAX:COUNT log-spaced step sizes -> error_vs_h.csv");
   cli.add_option("--repeat", o.repeat,
                  "timed runs per method for the median runtime, for runs shorter than 1 s")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(app::fitsIn<decltype(o.repeat)>());
   cli.add_option("--inertia", o.inertia,
                  "principal moments a,b,c (default: scenario A/B " + shortList(a.inertia) + ", C " +
                      shortList(rigidBodyScenarios().back().inertia) + ", other systems " +
@@ -135,7 +137,8 @@ void addOptions(CLI::App& cli, Options& o) {
   cli.add_option("--n", o.n,
                  "manakov, zeitlin: N of SO(N) or SU(N), 2 <= N <= " + std::to_string(kMaxMatrixN) +
                      " (default manakov " + std::to_string(kManakovDefaultN) + ", zeitlin " +
-                     std::to_string(kZeitlinDefaultN) + ")");
+                     std::to_string(kZeitlinDefaultN) + ")")
+      ->check(app::fitsIn<decltype(o.n)>());
   cli.add_option("--j", o.j,
                  "manakov: J1,...,JN > 0, inertia operator J Omega + Omega J (default "
                  "J_i = 1 + (i-1)/(N-1))");

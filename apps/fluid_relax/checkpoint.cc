@@ -11,13 +11,17 @@
 #include "common/atomic_file.h"
 #include "common/cli.h"
 #include "common/exit_status.h"
+#include "common/run_folder.h"
 
 namespace ddb::fluid {
 
 namespace {
 
-// The layout's version: a checkpoint of another layout is refused, not misread.
-constexpr std::int32_t kLayout = 2;
+// The layout's version: a checkpoint of another layout is refused, not misread. Layout 3
+// added history.csv's hash; a checkpoint of layout 2 is still read (without that check),
+// so that a run begun by an earlier build resumes.
+constexpr std::int32_t kLayout = 3;
+constexpr std::int32_t kLayoutWithoutDigest = 2;
 constexpr const char* kTag = "fluid-relax checkpoint";
 
 void putOptions(BinaryRecordWriter& out, const Options& o) {
@@ -50,6 +54,10 @@ void getOptions(BinaryRecordReader& in, Options& o) {
   in.get(o.newton);
   in.get(o.h5);
   in.get(o.animate);
+  // What a command line could not have given (a record altered and its checksum made anew).
+  if (o.every < 1 || o.steps < 0 || o.steps > kMaxSteps) {
+    throw CorruptRecord("options out of their domain");
+  }
 }
 
 void putGivenFlags(BinaryRecordWriter& out, const GivenFlags& given) {
@@ -97,7 +105,12 @@ void getSettingsBesidesW0(BinaryRecordReader& in, Settings& s) {
   in.get(s.relax.control.tolerance);
   in.get(s.relax.newton);
   in.get(s.init);
-  if (!(s.h > 0)) throw CorruptRecord("settings out of their domain");
+  const bool in_domain = std::isfinite(s.alpha) && s.h > 0 && std::isfinite(s.h) && s.steps >= 1 &&
+                         s.steps <= kMaxSteps && s.relax.max_steps >= 1 &&
+                         s.relax.max_steps <= kMaxSteps && s.relax.tolerance >= 0 &&
+                         s.relax.tolerance < 1 && !(s.relax.t_end <= 0) &&
+                         s.relax.control.tolerance > 0 && s.relax.control.tolerance < 1;
+  if (!in_domain) throw CorruptRecord("settings out of their domain");
 }
 
 void putSettings(BinaryRecordWriter& out, const Settings& s) {
@@ -110,17 +123,24 @@ void getSettings(BinaryRecordReader& in, Settings& s) {
   in.expectTag("settings");
   in.get(s.W0);
   getSettingsBesidesW0(in, s);
-  if (s.W0.rows() < 2 || s.W0.rows() != s.W0.cols()) {
+  if (s.W0.rows() < 2 || s.W0.rows() > SUN::kMaxN || s.W0.rows() != s.W0.cols()) {
     throw CorruptRecord("settings out of their domain");
   }
 }
 
 std::string readCheckpointBytes(const std::string& dir) {
   const std::filesystem::path path = std::filesystem::path(dir) / kCheckpointFile;
+  if (!std::filesystem::exists(std::filesystem::symlink_status(path))) {
+    app::usageError("--resume", dir, "no checkpoint to resume from: " + path.string());
+  }
+  // Its kind before it is opened (a FIFO would block, /dev/zero never end), and exactly the
+  // bytes it has: nothing is allocated beyond the file's length.
+  const std::uint64_t size = app::requireRegularFile("--resume", dir, path);
   std::ifstream file(path, std::ios::binary);
-  if (!file) app::usageError("--resume", dir, "no checkpoint to resume from: " + path.string());
-  std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  if (file.bad()) app::usageError("--resume", dir, "cannot read " + path.string());
+  std::string bytes(size, '\0');
+  if (!file || !file.read(bytes.data(), static_cast<std::streamsize>(size))) {
+    app::usageError("--resume", dir, "cannot read " + path.string());
+  }
   return bytes;
 }
 
@@ -133,7 +153,7 @@ Checkpoint parseCheckpoint(const std::string& dir, std::string bytes) {
     BinaryRecordReader in = BinaryRecordReader::unseal(std::move(bytes));
     in.expectTag(kTag);
     const auto layout = in.get<std::int32_t>();
-    if (layout != kLayout) {
+    if (layout != kLayout && layout != kLayoutWithoutDigest) {
       throw CorruptRecord("layout " + std::to_string(layout) + ", this build reads " +
                           std::to_string(kLayout));
     }
@@ -147,8 +167,12 @@ Checkpoint parseCheckpoint(const std::string& dir, std::string bytes) {
     in.get(c.tally.iterations_max);
     c.tally.rises.load(in);
     in.expectTag("files");
-    in.get(c.history_bytes);
-    in.get(c.h5_frames);
+    in.get(c.files.history_bytes);
+    in.get(c.files.h5_frames);
+    if (layout == kLayout) c.files.history_digest = in.get<std::uint64_t>();
+    if (c.files.h5_frames < 0 || (c.files.h5_frames > 0 && !(c.options.h5 || c.options.animate))) {
+      throw CorruptRecord("files out of their domain");
+    }
     c.relaxation = std::move(in);
   } catch (const CorruptRecord& corrupt) {
     app::usageError("--resume", dir,
@@ -163,8 +187,8 @@ GivenFlags givenFlags(const CLI::App& cli) {
   GivenFlags given;
   for (const CLI::Option* option : cli.get_options()) {
     static const std::set<std::string> kFree{
-        "--out",  "--resume",  "--steps", "--t-end", "--checkpoint-every",
-        "--plot", "--verbose", "--quiet", "--block"};
+        "--out",     "--resume", "--steps", "--t-end",     "--checkpoint-every", "--plot",
+        "--verbose", "--quiet",  "--block", "--grid-rows", "--overwrite"};
     if (option->count() == 0 || kFree.count(option->get_name()) > 0) continue;
     std::string text;
     for (const std::string& result : option->results()) text += (text.empty() ? "" : ",") + result;
@@ -174,8 +198,7 @@ GivenFlags givenFlags(const CLI::App& cli) {
 }
 
 BinaryRecordWriter beginCheckpoint(const Options& o, const GivenFlags& given, const Settings& s,
-                                   const Tally& tally, std::uint64_t history_bytes,
-                                   std::int64_t h5_frames) {
+                                   const Tally& tally, const FileLengths& files) {
   BinaryRecordWriter record;
   record.tag(kTag);
   record.put(kLayout);
@@ -189,8 +212,9 @@ BinaryRecordWriter beginCheckpoint(const Options& o, const GivenFlags& given, co
   record.put(tally.iterations_max);
   tally.rises.save(record);
   record.tag("files");
-  record.put(history_bytes);
-  record.put(h5_frames);
+  record.put(files.history_bytes);
+  record.put(files.h5_frames);
+  record.put(files.history_digest.value_or(kFnv1a64Basis));
   return record;
 }
 

@@ -1,7 +1,10 @@
 #include "fluid_relax/fluid_h5.h"
 
+#include <spdlog/fmt/fmt.h>
+
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <ctime>
 #include <system_error>
 #include <tuple>
@@ -98,14 +101,8 @@ void appendRow(hid_t dataset, hid_t type, const RowShape& row, hsize_t at, const
 }
 
 double readDoubleAttribute(hid_t file, const char* name, const std::filesystem::path& path) {
-  if (H5Aexists(file, name) <= 0) {
-    throw app::IoError(path.string() + ": not a fluid-relax HDF5 file: no attribute " + name);
-  }
-  const Handle attribute(H5Aopen(file, name, H5P_DEFAULT), path,
-                         std::string("read the attribute ") + name);
   double value = 0.0;
-  checkStatus(H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, &value), path,
-              std::string("read the attribute ") + name);
+  app::hdf5::readAttribute(file, name, H5T_NATIVE_DOUBLE, &value, path);
   return value;
 }
 
@@ -198,6 +195,47 @@ FluidH5 FluidH5::reopen(const std::filesystem::path& path, long frames) {
   h5.frames_ = frames;
   h5.flush();
   return h5;
+}
+
+void FluidH5::checkResumable(const std::filesystem::path& path, const FluidH5Attributes& expected,
+                             long frames) {
+  app::hdf5::quiet();
+  if (H5Fis_hdf5(path.c_str()) <= 0) throw app::IoError(path.string() + ": not an HDF5 file");
+  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), path, "open the file");
+  const auto differs = [&](const char* name, const std::string& found, const std::string& run) {
+    if (found != run) {
+      throw app::IoError(path.string() + " is another run's: its " + name + " is " + found +
+                         ", this run's " + run);
+    }
+  };
+  std::int64_t n = 0;
+  app::hdf5::readAttribute(file.get(), "N", H5T_NATIVE_INT64, &n, path);
+  differs("N", std::to_string(n), std::to_string(expected.n));
+  // The numbers as their bytes: the file holds the run's doubles exactly.
+  for (const auto& [name, value] : {std::pair{"alpha", expected.alpha}, {"h", expected.h}}) {
+    const double found = readDoubleAttribute(file.get(), name, path);
+    if (std::memcmp(&found, &value, sizeof value) != 0) {
+      differs(name, fmt::format("{}", found), fmt::format("{}", value));
+    }
+  }
+  differs("method", app::hdf5::readStringAttribute(file.get(), "method", path), expected.method);
+  differs("init", app::hdf5::readStringAttribute(file.get(), "init", path), expected.init);
+  if (expected.seed) {
+    std::uint64_t seed = 0;
+    app::hdf5::readAttribute(file.get(), "seed", H5T_NATIVE_UINT64, &seed, path);
+    differs("seed", std::to_string(seed), std::to_string(*expected.seed));
+  } else {
+    differs("init_file", app::hdf5::readStringAttribute(file.get(), "init_file", path),
+            expected.init_file);
+  }
+  FluidH5 h5(path, static_cast<long>(n), 0.0);
+  h5.file_ = std::move(file);
+  h5.openDatasets();
+  if (h5.frames_ < frames) {
+    throw app::IoError(path.string() + ": has " + std::to_string(h5.frames_) +
+                       " frames, fewer than the " + std::to_string(frames) +
+                       " the checkpoint recorded");
+  }
 }
 
 void FluidH5::openDatasets() {

@@ -54,6 +54,13 @@ class FluidH5 {
   /// frames. Datasets of unequal lengths (a run killed within a frame) are cut alike.
   static FluidH5 reopen(const std::filesystem::path& path, long frames);
 
+  /// Checks, reading only, that `path` is a fluid.hdf5 of the run `expected` describes (N,
+  /// alpha, h, method, init and its seed or file; not version or created) with at least
+  /// `frames` frames: what a --resume checks before it changes anything. Throws IoError
+  /// naming `path` and what differs.
+  static void checkResumable(const std::filesystem::path& path, const FluidH5Attributes& expected,
+                             long frames);
+
   /// Appends one frame (W must be N×N, omega of size N²). Throws IoError.
   void append(const FluidH5Frame& frame);
 

@@ -179,6 +179,11 @@ void resumeSettings(const CLI::App& cli, const Options& given, Checkpoint& c) {
                           (used.empty() ? "none" : used) + ")");
     }
   }
+  if (given.overwrite) {
+    throw app::UsageError(
+        "--overwrite: a resumed run continues the run in its folder; --overwrite is for a new "
+        "run (--out)");
+  }
   if (cli.count("--out") > 0 && std::filesystem::path(given.out).lexically_normal() !=
                                     std::filesystem::path(given.resume).lexically_normal()) {
     app::usageError("--out", given.out, "a resumed run writes into its --resume folder");

@@ -24,12 +24,14 @@
 #include "common/json.h"
 #include "common/logging.h"
 #include "common/progress.h"
+#include "common/run_folder.h"
 #include "common/spectrum_drift.h"
 #include "common/stop_signals.h"
 #include "fluid_relax/checkpoint.h"
 #include "fluid_relax/input.h"
 #include "fluid_relax/options.h"
 #include "fluid_relax/outputs.h"
+#include "fluid_relax/run_files.h"
 #include "fluid_relax/summary.h"
 
 namespace {
@@ -60,8 +62,10 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
                      });
     tally = resume->tally;
   }
-  app::prepareOutputFolder(resume != nullptr ? "--resume" : "--out",
-                           resume != nullptr ? o.resume : o.out, s.out);
+  if (resume != nullptr) {
+    app::prepareOutputFolder("--resume", o.resume, s.out);
+    app::removeTemporaries(s.out, runFiles());
+  }
   // ---- from here on, files are written: failures are exit status 1 ----
 
   if (resume != nullptr) {
@@ -113,8 +117,7 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   // The files that grow are on disk up to the lengths the checkpoint records.
   const auto checkpoint = [&](const HistoryFiles::Lengths& lengths) {
     const auto begin = std::chrono::steady_clock::now();
-    BinaryRecordWriter record =
-        beginCheckpoint(o, given, s, tally, lengths.history_bytes, lengths.h5_frames);
+    BinaryRecordWriter record = beginCheckpoint(o, given, s, tally, lengths);
     run.save(record);
     writeCheckpoint(s.out, record);
     last_checkpoint = std::chrono::steady_clock::now();
@@ -195,22 +198,20 @@ int runRelax(int argc, char** argv) {
   addOptions(cli, o, kMaxN);
   if (const auto status = app::parseCommandLine(cli, argc, argv)) return *status;
   app::setupLogging(o.log);
-  // The run's options: this command line's, or a resumed run's recorded ones.
-  Options run_options = o;
-  int status = 0;
-  std::filesystem::path out;
   if (!o.resume.empty()) {
+    // The lock first: the checkpoint and the files are read as their one writer left them.
+    const app::RunFolderLock lock = lockResumeFolder(o.resume);
     Checkpoint c = readCheckpoint(o.resume);
     resumeSettings(cli, o, c);
-    out = c.settings.out;
-    run_options = c.options;
-    status = relax(c.options, c.settings, c.given, &c);
-  } else {
-    const Settings s = settings(cli, o, kMaxN);
-    out = s.out;
-    status = relax(o, s, givenFlags(cli), nullptr);
+    checkResumeFolder(o.resume, c);
+    const int status = relax(c.options, c.settings, c.given, &c);
+    return makeFigures(c.options, c.settings.out, status, DDB_PLOT_SCRIPT, DDB_ANIMATE_SCRIPT);
   }
-  return makeFigures(run_options, out, status, DDB_PLOT_SCRIPT, DDB_ANIMATE_SCRIPT);
+  const Settings s = settings(cli, o, kMaxN);
+  const app::RunFolderLock lock =
+      app::claimNewRunFolder("--out", o.out, s.out, runFiles(), o.overwrite, "--overwrite");
+  const int status = relax(o, s, givenFlags(cli), nullptr);
+  return makeFigures(o, s.out, status, DDB_PLOT_SCRIPT, DDB_ANIMATE_SCRIPT);
 }
 
 }  // namespace

@@ -21,7 +21,8 @@ std::vector<std::pair<std::string, std::string>> fluidMethods() {
 
 void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n) {
   cli.add_option("--n", o.n, "resolution N, 2 <= N <= " + std::to_string(max_n))
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(app::fitsIn<long>());
   cli.add_option("--alpha", o.alpha,
                  "double-bracket coefficient (> 0 relaxes to lower energy, < 0 raises it)")
       ->capture_default_str();
@@ -30,7 +31,8 @@ void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n) {
                      " hbar/||P0||_2, " + app::number(kZeitlinStiffness) +
                      " hbar/(|alpha| ||W0||_2^2)), P0 the initial stream matrix; recorded in "
                      "summary.json)");
-  cli.add_option("--steps", o.steps, "number of steps (exactly one of --steps and --t-end)");
+  cli.add_option("--steps", o.steps, "number of steps (exactly one of --steps and --t-end)")
+      ->check(app::fitsIn<long>());
   cli.add_option("--t-end", o.t_end,
                  "final time: round(T/h) steps of the given --h, or with the default h the "
                  "smallest step count whose equal steps are no longer than it");
@@ -50,12 +52,20 @@ void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n) {
                  "N is taken from the file");
   cli.add_option("--method", o.method, "integrator (listed below)")->capture_default_str();
   cli.add_option("--every", o.every, "write every K-th state and the last one to history.csv")
+      ->capture_default_str()
+      ->check(app::fitsIn<long>());
+  cli.add_option("--out", o.out,
+                 "output folder; one process writes it at a time (OUT/run.lock), and a new run "
+                 "into a folder that holds another run's files is refused without --overwrite")
       ->capture_default_str();
-  cli.add_option("--out", o.out, "output folder")->capture_default_str();
+  cli.add_flag("--overwrite", o.overwrite,
+               "let a new run replace the run whose files are in --out: every file of that run "
+               "is removed first (files of other names are kept)");
   cli.add_option("--checkpoint-every", o.checkpoint_every,
                  "write OUT/checkpoint.ddb every K accepted steps (default: every " +
                      app::number(kCheckpointSeconds) +
-                     " s of wall time), and always at the end of the run");
+                     " s of wall time), and always at the end of the run")
+      ->check(app::fitsIn<long>());
   cli.add_option("--resume", o.resume,
                  "continue the run in DIR from its checkpoint, to the bit as if never stopped, "
                  "with its recorded settings; --steps or --t-end may set a new cap");

@@ -38,6 +38,7 @@ struct Options {
   bool newton = false;        // --newton: OrbitNewton's search instead of steps
   long checkpoint_every = 0;  // steps; 0: every kCheckpointSeconds of wall time
   std::string resume;         // the run folder to resume, or empty
+  bool overwrite = false;     // a new run may replace another run's files in --out
   bool plot = false;
   bool h5 = false, animate = false;  // fluid.hdf5; its animation (implies h5)
   app::LogFlags log;

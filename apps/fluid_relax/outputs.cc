@@ -15,8 +15,9 @@ HistoryCsv::HistoryCsv(const std::filesystem::path& path) : file_(path), row_(7)
   file_.write("t,energy,enstrophy,commutator_norm,spectrum_drift,h,residual\n");
 }
 
-HistoryCsv::HistoryCsv(const std::filesystem::path& path, std::uint64_t length)
-    : file_(path, length), row_(7) {}
+HistoryCsv::HistoryCsv(const std::filesystem::path& path, std::uint64_t length,
+                       std::uint64_t digest)
+    : file_(path, length, digest), row_(7) {}
 
 void HistoryCsv::write(double t, double energy, double enstrophy, double commutator_norm,
                        double spectrum_drift, double h, double residual) {
@@ -37,13 +38,14 @@ HistoryFiles::HistoryFiles(const Options& o, const Settings& s, const LiePoisson
       probe_(system),
       basis_(hamiltonian_.laplacian()) {
   if (resume != nullptr) {
-    csv_.emplace(s.out / "history.csv", resume->history_bytes);
+    csv_.emplace(s.out / "history.csv", resume->files.history_bytes,
+                 resume->files.history_digest.value());
   } else {
     csv_.emplace(s.out / "history.csv");
   }
   if (o.h5 || o.animate) {
     h5_ = resume != nullptr
-              ? FluidH5::reopen(s.out / kFluidH5, resume->h5_frames)
+              ? FluidH5::reopen(s.out / kFluidH5, resume->files.h5_frames)
               : FluidH5::create(s.out / kFluidH5, h5Attributes(o, s, hamiltonian_.hbar()));
   }
 }
@@ -59,6 +61,7 @@ void HistoryFiles::write(long k, double t, double h, const Eigen::MatrixXcd& W, 
 HistoryFiles::Lengths HistoryFiles::sync() {
   Lengths lengths;
   lengths.history_bytes = csv_->sync();
+  lengths.history_digest = csv_->digest();
   if (h5_) {
     h5_->flush();
     lengths.h5_frames = h5_->frames();

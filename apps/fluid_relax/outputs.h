@@ -15,6 +15,7 @@
 #include "common/atomic_file.h"
 #include "common/csv_row.h"
 #include "common/journal_file.h"
+#include "fluid_relax/checkpoint.h"
 #include "fluid_relax/fluid_h5.h"
 #include "fluid_relax/input.h"
 
@@ -26,12 +27,15 @@ class HistoryCsv {
  public:
   /// Creates the file with its header.
   explicit HistoryCsv(const std::filesystem::path& path);
-  /// Continues the file of a resumed run from the `length` bytes its checkpoint recorded.
-  HistoryCsv(const std::filesystem::path& path, std::uint64_t length);
+  /// Continues the file of a resumed run from the `length` bytes its checkpoint recorded,
+  /// whose hash is `digest` (checked by checkResumeFolder).
+  HistoryCsv(const std::filesystem::path& path, std::uint64_t length, std::uint64_t digest);
   void write(double t, double energy, double enstrophy, double commutator_norm,
              double spectrum_drift, double h, double residual);
   /// Makes the rows written durable; returns the file's length (for a checkpoint).
   std::uint64_t sync() { return file_.sync(); }
+  /// The hash of the file's bytes so far (JournalFile::digest).
+  std::uint64_t digest() const { return file_.digest(); }
   /// Completes the file under its name (JournalFile::commit).
   void commit() { file_.commit(); }
 
@@ -46,21 +50,17 @@ constexpr const char* kFluidH5 = "fluid.hdf5";
 /// fluid.hdf5's root attributes for the run of `o`, `s` (ħ of the run's Hamiltonian).
 FluidH5Attributes h5Attributes(const Options& o, const Settings& s, double hbar);
 
-struct Checkpoint;
-
 /// The files of the history rows: history.csv's row of a state and, with --h5 or --animate,
 /// its frame in fluid.hdf5, from one evaluation of the state's numbers; fluid-relax's, and
 /// fluid-relax-mpi's on rank 0 from the gathered states.
 class HistoryFiles {
  public:
-  /// The lengths a checkpoint records: history.csv's bytes, fluid.hdf5's frames (0 without).
-  struct Lengths {
-    std::uint64_t history_bytes = 0;
-    std::int64_t h5_frames = 0;
-  };
+  /// The lengths a checkpoint records.
+  using Lengths = FileLengths;
 
   /// New files in s.out, or (resume) a resumed run's, continued from the lengths its
-  /// checkpoint recorded. `system` is the run's fluid (makeZeitlinFluid). Throws IoError.
+  /// checkpoint recorded (the folder checked by checkResumeFolder). `system` is the run's fluid
+  /// (makeZeitlinFluid). Throws IoError.
   HistoryFiles(const Options& o, const Settings& s, const LiePoissonSystem<SUN>& system,
                const Checkpoint* resume);
   /// The row of state k at time t reached by a step h (0 for k = 0), of spectrum drift `drift`.

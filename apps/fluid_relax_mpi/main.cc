@@ -40,6 +40,7 @@
 #include "common/stop_signals.h"
 #include "fluid_relax/checkpoint.h"
 #include "fluid_relax/outputs.h"
+#include "fluid_relax/run_files.h"
 #include "fluid_relax/summary.h"
 #include "fluid_relax_mpi/mpi_input.h"
 
@@ -132,8 +133,13 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
     at.residual = NAN;
   }
   if (const int status = onRankZero(grid, [&] {
-        app::prepareOutputFolder(resume != nullptr ? "--resume" : "--out",
-                                 resume != nullptr ? o.resume : o.out, s.out);
+        if (resume != nullptr) {
+          app::prepareOutputFolder("--resume", o.resume, s.out);
+          app::removeTemporaries(s.out, runFiles());
+        } else {
+          run.lock.emplace(app::claimNewRunFolder("--out", o.out, s.out, runFiles(), o.overwrite,
+                                                  "--overwrite"));
+        }
       })) {
     throw Reported{status};
   }
@@ -211,7 +217,7 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
     }
     BinaryRecordWriter record;
     if (root) {
-      record = beginCheckpoint(o, run.given, s, tally, lengths.history_bytes, lengths.h5_frames);
+      record = beginCheckpoint(o, run.given, s, tally, lengths);
     }
     saveRelaxCursor(record, at, W, result.steps_rejected, times);
     control.save(record);

@@ -13,6 +13,7 @@
 #include "common/cli.h"
 #include "common/exit_status.h"
 #include "common/initial_vorticity.h"
+#include "fluid_relax/run_files.h"
 
 namespace ddb::fluid_mpi {
 
@@ -162,7 +163,11 @@ MpiRun mpiRun(const CLI::App& cli, const MpiOptions& o, const ProcessGrid& grid)
     const std::string& dir = o.relax.resume;
     run.resume.emplace();
     fluid::Checkpoint& c = *run.resume;
-    if (const int status = onRankZero(grid, [&] { c = fluid::readCheckpoint(dir); })) {
+    if (const int status = onRankZero(grid, [&] {
+          // The lock first: the checkpoint and the files are read as their one writer left them.
+          run.lock.emplace(fluid::lockResumeFolder(dir));
+          c = fluid::readCheckpoint(dir);
+        })) {
       throw Reported{status};
     }
     shareDefinition(grid, c.options, c.given, c.settings, run.n);
@@ -172,6 +177,10 @@ MpiRun mpiRun(const CLI::App& cli, const MpiOptions& o, const ProcessGrid& grid)
       run.block = readBlock(o, grid.size(), run.grid_rows, run.n);
     });
     if (status != 0) throw Reported{status};
+    // The folder against the checkpoint, on rank 0, which holds both.
+    if (const int checked = onRankZero(grid, [&] { fluid::checkResumeFolder(dir, c); })) {
+      throw Reported{checked};
+    }
     run.options = c.options;
     run.given = c.given;
     run.settings = std::move(c.settings);

@@ -13,6 +13,7 @@
 #include <optional>
 #include <string>
 
+#include "common/run_folder.h"
 #include "fluid_relax/checkpoint.h"
 #include "fluid_relax/input.h"
 #include "fluid_relax/options.h"
@@ -60,6 +61,9 @@ struct MpiRun {
   int block = 0;
   /// The process grid's rows (--grid-rows, or the default shape's), a divisor of the ranks.
   int grid_rows = 0;
+  /// Rank 0's lock of the run folder (docs/file-formats.md, "Run folders"), held to the end:
+  /// taken before the checkpoint is read (--resume) or once the input is checked (a new run).
+  std::optional<app::RunFolderLock> lock;
 };
 
 /// fluid::settings() (a new run: W₀, the default h and every check that reads W₀) or
