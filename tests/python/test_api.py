@@ -158,6 +158,12 @@ def test_a_failed_step_keeps_the_states_before_it():
     (dict(mu0=[1.0, float("nan"), 0.0]), "mu0 = (1, nan, 0)"),
     (dict(mu0=[1j, 0, 0]), "mu0 = an array of dtype complex128"),
     (dict(mu0="abc"), "mu0"),
+    (dict(system=None), "system = None"),
+    (dict(method=3), "method = 3"),
+    (dict(h="0.1"), "h = '0.1'"),
+    (dict(steps=1.5), "steps = 1.5"),
+    (dict(steps=10**30), "steps = " + str(10**30)),
+    (dict(every=2.0), "every = 2.0"),
 ])
 def test_bad_arguments_name_the_parameter(kwargs, parameter):
     a = ddb.scenario("A")
@@ -176,7 +182,18 @@ def test_bad_system_arguments_name_the_parameter():
         (lambda: ddb.manakov([1, 0, 2], 0.5), "J"),
         (lambda: ddb.zeitlin(1, 0.5), "N = 1"),
         (lambda: ddb.zeitlin_vorticity("vortex", 4), "kind = vortex"),
-        (lambda: ddb.scenario("D"), "scenario = D"),
+        (lambda: ddb.scenario("D"), "name = D"),
+        (lambda: ddb.scenario(1), "name = 1"),
+        # N x N matrices from a user-given N: refused past the documented N <= 4096 before
+        # they are allocated (a MemoryError otherwise).
+        (lambda: ddb.manakov(np.ones(100_000), 0.5), "J = an array of 100000 numbers"),
+        (lambda: ddb.zeitlin(100_000, 0.5), "N = 100000"),
+        (lambda: ddb.zeitlin(8.0, 0.5), "N = 8.0"),
+        (lambda: ddb.zeitlin_vorticity("random", 100_000), "N = 100000"),
+        (lambda: ddb.zeitlin_vorticity("random", 8, -1), "seed = -1"),
+        (lambda: ddb.zeitlin_vorticity(None, 8), "kind = None"),
+        (lambda: ddb.rigid_body([1, 2, 3], "0.5"), "alpha = '0.5'"),
+        (lambda: ddb.heavy_top(mgl=[1]), "mgl = [1]"),
         (lambda: ddb.heavy_top(metric=[1, 1, 1]), "metric"),
         (lambda: ddb.integrate(ddb.heavy_top(), "sddb-paper-cay", ddb.HeavyTopSetup().mu0, 0.1,
                                1), "method = sddb-paper-cay"),
