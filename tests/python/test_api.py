@@ -239,3 +239,31 @@ def test_integrate_releases_the_gil():
     finally:
         sys.setswitchinterval(interval)
     assert woke_during_the_run
+
+
+@pytest.mark.parametrize("method", ["ddb-cay", "sddb-exp", "rk4", "lobatto3c"])
+def test_subnormal_components_are_flushed_and_the_run_stays_on_the_axis(method):
+    # m = (0, c, 0) lies on a principal axis: the rigid body's equilibrium, with or without
+    # dissipation (Omega = I^-1 m is parallel to m). Components below 2^-1022 start it.
+    a = ddb.scenario("A")
+    tiny = np.finfo(float).tiny  # 2^-1022, the smallest normal number
+    _, m = ddb.integrate(a.system(), method, [tiny / 8, -0.5042, -tiny / 1e6], 0.1, 200)
+    assert np.all(np.isfinite(m))
+    _, axis = ddb.integrate(a.system(), method, [0.0, -0.5042, 0.0], 0.1, 200)
+    np.testing.assert_allclose(axis, np.tile([0.0, -0.5042, 0.0], (201, 1)), rtol=1e-15, atol=0)
+    np.testing.assert_array_equal(m[1:], axis[1:])
+
+
+def test_a_decay_into_the_subnormal_range_ends_on_the_axis():
+    # From a normal-range state, the off-axis components fall by about e^-0.009 a step until
+    # they pass 2^-1022 (after some 7.6e4 steps): states then keep no subnormal numbers, and
+    # the run ends at the limit point -|m0| e2 (Scenario B) with |m| kept.
+    a = ddb.scenario("A")
+    mu0 = np.array([1e-3, -0.5042, 1e-3])
+    _, m = ddb.integrate(a.system(), "ddb-cay", mu0, 0.1, 200_000, every=1000)
+    tiny = np.finfo(float).tiny
+    assert np.all(np.isfinite(m))
+    assert not np.any((m != 0) & (np.abs(m) < tiny))
+    assert np.any((m[:, 0] != 0) & (np.abs(m[:, 0]) < 1e-300))  # it did pass close by
+    np.testing.assert_array_equal(m[-1, [0, 2]], [0.0, 0.0])
+    assert m[-1, 1] == pytest.approx(-np.linalg.norm(mu0), rel=1e-15)
