@@ -141,10 +141,16 @@ Returns t, an array (k,) of times, and states, an array (k, 3), (k, 6) or (k, N,
 into it (one copy per kept state, none per step). The GIL is released during the loop
 (a system defined in Python takes it back for each call of its functions).
 
-Raises ValueError naming the parameter for bad arguments (unknown or inapplicable method,
-non-finite or wrongly shaped mu0, h <= 0, steps < 0, every < 1) and ddb.SolveFailure when a
-step fails (an implicit solve that did not converge, a non-finite state, ...): its fields
-say where (step, t, h, residual) and its `times`, `states` hold what was computed before.)doc");
+Raises ValueError naming the parameter for bad arguments (a wrong type, an unknown or
+inapplicable method, non-finite or wrongly shaped mu0, h <= 0, steps < 0, every < 1) and
+ddb.SolveFailure when a step fails (an implicit solve that did not converge, a non-finite
+state or result of a Python-defined Hamiltonian, ...): its fields say where (step, t, h,
+residual) and its `times`, `states` hold what was computed before.
+
+Ctrl-C (SIGINT, or any signal whose Python handler raises) stops the run between steps,
+within about 50 ms: the handler's exception (KeyboardInterrupt) is raised with `times` and
+`states` attributes holding the states kept so far, the last one computed included. So is
+any exception raised inside a Python-defined Hamiltonian.)doc");
 }
 
 }  // namespace ddb::python
