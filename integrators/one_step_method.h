@@ -7,10 +7,29 @@
 #include <ddb/core/binary_record.h>
 #include <ddb/core/errors.h>
 
+#include <Eigen/Core>
+#include <cmath>
 #include <string>
 #include <vector>
 
 namespace ddb {
+
+/// Sets the entries of `mu` (real and imaginary parts alike) that are subnormal, 0 < |x| <
+/// 2^-1022, to zero of the same sign, and changes no other bit. A decaying component that
+/// reaches the subnormal range stays there (each step rounds it back to a few multiples of
+/// 2^-1074) and every later step pays the CPU's slow path on it: 1.4 us against 0.065 us a
+/// rigid-body ddb-cay step (issue 42). A run whose states stay out of that range is
+/// unchanged to the bit; a flushed entry moves by less than 2^-1022.
+template <class Dual>
+void flushSubnormals(Dual& mu) {
+  using Real = typename Eigen::NumTraits<typename Dual::Scalar>::Real;
+  constexpr Eigen::Index kParts = Eigen::NumTraits<typename Dual::Scalar>::IsComplex ? 2 : 1;
+  // std::complex<Real> is laid out as Real[2] (C++17 [complex.numbers]/4).
+  Real* x = reinterpret_cast<Real*>(mu.data());
+  for (Eigen::Index i = 0; i < kParts * mu.size(); ++i) {
+    if (std::fpclassify(x[i]) == FP_SUBNORMAL) x[i] = std::copysign(Real(0), x[i]);
+  }
+}
 
 template <class G>
 class OneStepMethod {
@@ -68,6 +87,7 @@ void integrate(OneStepMethod<G>& method, const typename G::template Dual<double>
     if (!mu.allFinite()) {
       throw NonFiniteState(method.name(), k, t, h, mu);
     }
+    flushSubnormals(mu);
     observer(k + 1, t0 + static_cast<double>(k + 1) * h, mu);
   }
 }

@@ -1,5 +1,7 @@
-// Parameters from Python: a vector of numbers, its length and dtype checked, or an
-// InvalidArgument (a ValueError) naming the parameter, as for the library's own checks.
+// Parameters from Python: numbers, integers, strings and vectors of numbers, their types
+// and ranges checked, or an InvalidArgument (a ValueError) naming the parameter, as for the
+// library's own checks. The bindings take py::handle and convert here, where a typed
+// parameter would answer a wrong type with pybind11's dump of the signature.
 #pragma once
 
 #include <ddb/core/errors.h>
@@ -7,9 +9,49 @@
 #include <pybind11/pybind11.h>
 
 #include <Eigen/Core>
+#include <limits>
 #include <string>
 
 namespace ddb::python {
+
+/// `object` (a Python or NumPy real number, or anything with __float__) as a double.
+inline double realArgument(const std::string& name, pybind11::handle object) {
+  const double value = PyFloat_AsDouble(object.ptr());
+  if (value == -1.0 && PyErr_Occurred() != nullptr) {
+    PyErr_Clear();
+    throwInvalid(name, std::string(pybind11::repr(object)), "must be a real number");
+  }
+  return value;
+}
+
+/// `object` (a Python or NumPy integer: not a float, whose fraction would be dropped) as an
+/// Int in [lowest, highest].
+template <class Int>
+Int integerArgument(const std::string& name, pybind11::handle object,
+                    Int lowest = std::numeric_limits<Int>::lowest(),
+                    Int highest = std::numeric_limits<Int>::max()) {
+  namespace py = pybind11;
+  const std::string what = std::string(py::repr(object));
+  const auto range = "[" + std::to_string(lowest) + ", " + std::to_string(highest) + "]";
+  PyObject* index = PyNumber_Index(object.ptr());
+  if (index == nullptr) {
+    PyErr_Clear();
+    throwInvalid(name, what, "must be an integer in " + range);
+  }
+  const auto value = py::reinterpret_steal<py::int_>(index);
+  if (value < py::int_(lowest) || value > py::int_(highest)) {
+    throwInvalid(name, what, "must be an integer in " + range);
+  }
+  return value.cast<Int>();
+}
+
+/// `object` (a str) as a string.
+inline std::string textArgument(const std::string& name, pybind11::handle object) {
+  if (!pybind11::isinstance<pybind11::str>(object)) {
+    throwInvalid(name, std::string(pybind11::repr(object)), "must be a str");
+  }
+  return object.cast<std::string>();
+}
 
 /// `object` (a sequence or array of `size` real numbers) as an Eigen vector (a copy).
 template <int Rows = Eigen::Dynamic>

@@ -5,7 +5,9 @@
 #include <pybind11/stl.h>
 
 #include <memory>
+#include <string>
 
+#include "arguments.h"
 #include "bindings.h"
 #include "system.h"
 
@@ -31,8 +33,19 @@ void bindScenarios(py::module_& m) {
         return "<ddb.RigidBodyScenario " + s.name + ": " + s.description + ">";
       });
   m.def("scenarios", &rigidBodyScenarios, "Scenarios A, B and C of the paper, in its order.");
-  m.def("scenario", &rigidBodyScenario, py::arg("name"),
-        "The scenario called `name` (A, B or C); ValueError for another name.");
+  m.def(
+      "scenario",
+      [](py::handle name_object) {
+        // The library's rigidBodyScenario() names its parameter `scenario`; this one is `name`.
+        const std::string name = textArgument("name", name_object);
+        std::string valid;
+        for (const RigidBodyScenario& s : rigidBodyScenarios()) {
+          if (s.name == name) return s;
+          valid += (valid.empty() ? "" : ", ") + s.name;
+        }
+        throwInvalid("name", name, "expected one of " + valid);
+      },
+      py::arg("name"), "The scenario called `name` (A, B or C); ValueError for another name.");
   py::class_<HeavyTopSetup>(m, "HeavyTopSetup",
                             "The apps' default heavy top: its parameters (each may be changed), "
                             "mu0 (gamma tilted by 0.3 rad from e3) and t_end.")

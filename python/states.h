@@ -58,9 +58,9 @@ pybind11::array_t<ScalarOf<G>, pybind11::array::c_style> asStateArray(const std:
   return py::array_t<ScalarOf<G>, py::array::c_style | py::array::forcecast>::ensure(array);
 }
 
-/// One state from `object`, of shape stateShape<G>(n), finite (a copy).
+/// One state from `object`, of shape stateShape<G>(n), its entries unchecked (a copy).
 template <class G>
-Dual<G> stateFromArray(const std::string& name, pybind11::handle object, Eigen::Index n) {
+Dual<G> stateOfShape(const std::string& name, pybind11::handle object, Eigen::Index n) {
   const auto array = asStateArray<G>(name, object);
   const std::vector<pybind11::ssize_t> shape(array.shape(), array.shape() + array.ndim());
   if (shape != stateShape<G>(n)) {
@@ -73,7 +73,13 @@ Dual<G> stateFromArray(const std::string& name, pybind11::handle object, Eigen::
   } else {
     state = Eigen::Map<const Dual<G>>(array.data());
   }
-  return requireFinite(name, state);
+  return state;
+}
+
+/// One state from `object`, of shape stateShape<G>(n), finite (a copy).
+template <class G>
+Dual<G> stateFromArray(const std::string& name, pybind11::handle object, Eigen::Index n) {
+  return requireFinite(name, stateOfShape<G>(name, object, n));
 }
 
 /// Calls f(state) for one state or each of a stack (shape stateShape<G>(n) or (k, ...)),

@@ -18,9 +18,9 @@ void bindSystems(py::module_& m) {
   const RigidBodyScenario& a = rigidBodyScenario("A");
   m.def(
       "rigid_body",
-      [](py::handle inertia, double alpha) {
+      [](py::handle inertia, py::handle alpha) {
         return std::make_shared<System>(
-            makeRigidBody(vectorArgument<3>("inertia", inertia), alpha));
+            makeRigidBody(vectorArgument<3>("inertia", inertia), realArgument("alpha", alpha)));
       },
       py::arg("inertia") = a.inertia, py::arg("alpha") = a.alpha,
       "The free rigid body on SO3 (paper, Sections 3 and 5): principal moments `inertia` "
@@ -29,10 +29,11 @@ void bindSystems(py::module_& m) {
   const HeavyTopSetup top;
   m.def(
       "heavy_top",
-      [](py::handle inertia, double mgl, py::handle chi, double alpha, py::handle metric) {
-        return std::make_shared<System>(makeHeavyTop(vectorArgument<3>("inertia", inertia), mgl,
-                                                     vectorArgument<3>("chi", chi), alpha,
-                                                     vectorArgument<6>("metric", metric)));
+      [](py::handle inertia, py::handle mgl, py::handle chi, py::handle alpha, py::handle metric) {
+        return std::make_shared<System>(
+            makeHeavyTop(vectorArgument<3>("inertia", inertia), realArgument("mgl", mgl),
+                         vectorArgument<3>("chi", chi), realArgument("alpha", alpha),
+                         vectorArgument<6>("metric", metric)));
       },
       py::arg("inertia") = top.inertia, py::arg("mgl") = top.mgl, py::arg("chi") = top.chi,
       py::arg("alpha") = top.alpha, py::arg("metric") = top.metric,
@@ -42,10 +43,10 @@ void bindSystems(py::module_& m) {
   const KirchhoffSetup body;
   m.def(
       "kirchhoff",
-      [](py::handle inertia, py::handle mass, double alpha, py::handle metric) {
-        return std::make_shared<System>(makeKirchhoffBody(vectorArgument<3>("inertia", inertia),
-                                                          vectorArgument<3>("mass", mass), alpha,
-                                                          vectorArgument<6>("metric", metric)));
+      [](py::handle inertia, py::handle mass, py::handle alpha, py::handle metric) {
+        return std::make_shared<System>(makeKirchhoffBody(
+            vectorArgument<3>("inertia", inertia), vectorArgument<3>("mass", mass),
+            realArgument("alpha", alpha), vectorArgument<6>("metric", metric)));
       },
       py::arg("inertia") = body.inertia, py::arg("mass") = body.mass, py::arg("alpha") = body.alpha,
       py::arg("metric") = body.metric,
@@ -53,13 +54,20 @@ void bindSystems(py::module_& m) {
       "diag(metric). Defaults: KirchhoffSetup().");
   m.def(
       "manakov",
-      [](py::handle J, double alpha) {
+      [](py::handle J, py::handle alpha) {
         const Eigen::VectorXd j = vectorArgument("J", J, -1);
-        return std::make_shared<System>(makeManakovBody(j, alpha), j.size());
+        // The body keeps N x N matrices (1/(J_i + J_j), and every state): refused here, before
+        // they are allocated, past the N that the group's states allow.
+        if (j.size() > SON::kMaxN) {
+          throwInvalid("J", "an array of " + std::to_string(j.size()) + " numbers",
+                       "must have at most " + std::to_string(SON::kMaxN) + " (N of SO(N))");
+        }
+        return std::make_shared<System>(makeManakovBody(j, realArgument("alpha", alpha)), j.size());
       },
       py::arg("J"), py::arg("alpha"),
       "The Manakov (generalised rigid) body on SO(N): M = J Omega + Omega J with J = diag(J) "
-      "(N numbers > 0), k# = alpha Id. States: real skew-symmetric N x N matrices; Casimirs: "
+      "(N numbers > 0, 2 <= N <= 4096), k# = alpha Id. States: real skew-symmetric N x N matrices; "
+      "Casimirs: "
       "the spectrum of -i M.");
 }
 

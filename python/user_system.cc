@@ -5,6 +5,7 @@
 #include <ddb/core/dissipation_metric.h>
 #include <ddb/core/lagrangian.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <utility>
@@ -20,48 +21,79 @@ namespace ddb::python {
 
 namespace {
 
+/// A non-finite result of the user's functions is a NonFiniteState (a SolveFailure) naming
+/// the function: integrate() then stops at that step and keeps the states before it, where a
+/// ValueError would lose them and a NaN passed on would make a garbage trajectory.
 template <class G>
 class PythonHamiltonian final : public Hamiltonian<G> {
  public:
-  PythonHamiltonian(py::function value, py::function gradient, py::object hessian_times,
-                    Eigen::Index n)
-      : value_(std::move(value)),
+  PythonHamiltonian(std::string system, py::object value, py::object gradient,
+                    py::object hessian_times, Eigen::Index n)
+      : system_("user_system '" + std::move(system) + "'"),
+        value_(std::move(value)),
         gradient_(std::move(gradient)),
         hessian_times_(std::move(hessian_times)),
         n_(n) {}
   ~PythonHamiltonian() override {
     // The last owner may be a C++ object destroyed without the GIL.
     py::gil_scoped_acquire gil;
-    value_ = py::function();
-    gradient_ = py::function();
+    value_ = py::object();
+    gradient_ = py::object();
     hessian_times_ = py::object();
   }
 
   double value(const Dual<G>& mu) const override {
     py::gil_scoped_acquire gil;
-    return value_(stateToArray<G>(mu)).template cast<double>();
+    const py::object result = value_(stateToArray<G>(mu));
+    double v = 0.0;
+    try {
+      v = result.cast<double>();
+    } catch (const py::cast_error&) {
+      throwInvalid("hamiltonian", "a function returning " + std::string(py::repr(result)),
+                   "must return a real number");
+    }
+    return finite("hamiltonian", v);
   }
   Dual<G> gradient(const Dual<G>& mu) const override {
     py::gil_scoped_acquire gil;
-    return stateFromArray<G>("gradient", gradient_(stateToArray<G>(mu)), n_);
+    return finite("gradient", stateOfShape<G>("gradient", gradient_(stateToArray<G>(mu)), n_));
   }
   /// The given Hessian-vector product, or the library's central difference of the gradient.
   Dual<G> hessianTimes(const Dual<G>& mu, const Dual<G>& v) const override {
     if (hessian_times_.is_none()) return Hamiltonian<G>::hessianTimes(mu, v);
     py::gil_scoped_acquire gil;
-    return stateFromArray<G>("hessian_times",
-                             hessian_times_(stateToArray<G>(mu), stateToArray<G>(v)), n_);
+    return finite("hessian_times",
+                  stateOfShape<G>("hessian_times",
+                                  hessian_times_(stateToArray<G>(mu), stateToArray<G>(v)), n_));
   }
 
  private:
-  py::function value_, gradient_;
-  py::object hessian_times_;
+  double finite(const std::string& function, double result) const {
+    if (!std::isfinite(result)) throw NonFiniteState(system_, -1, NAN, NAN, result, function);
+    return result;
+  }
+  Dual<G> finite(const std::string& function, Dual<G> result) const {
+    if (!result.allFinite()) throw NonFiniteState(system_, -1, NAN, NAN, result, function);
+    return result;
+  }
+
+  std::string system_;
+  py::object value_, gradient_, hessian_times_;
   Eigen::Index n_;
 };
 
+/// `object` if it is callable (or None where `optional`), else InvalidArgument naming `name`.
+py::object callableArgument(const std::string& name, py::object object, bool optional = false) {
+  if (PyCallable_Check(object.ptr()) == 0 && !(optional && object.is_none())) {
+    throwInvalid(name, std::string(py::repr(object)),
+                 optional ? "must be callable or None" : "must be callable");
+  }
+  return object;
+}
+
 template <class G>
-std::shared_ptr<System> userSystem(const std::string& name, py::function hamiltonian,
-                                   py::function gradient, py::object hessian_times, double alpha,
+std::shared_ptr<System> userSystem(const std::string& name, py::object hamiltonian,
+                                   py::object gradient, py::object hessian_times, double alpha,
                                    py::handle metric, Eigen::Index n) {
   if constexpr (isDynamicGroup<G>) {
     if (n < 2 || n > G::kMaxN) {
@@ -70,8 +102,10 @@ std::shared_ptr<System> userSystem(const std::string& name, py::function hamilto
   } else if (n != 0) {
     throwInvalid("N", std::to_string(n), std::string("is not used on ") + G::kName);
   }
-  auto h = std::make_shared<const PythonHamiltonian<G>>(std::move(hamiltonian), std::move(gradient),
-                                                        std::move(hessian_times), n);
+  auto h = std::make_shared<const PythonHamiltonian<G>>(
+      name, callableArgument("hamiltonian", std::move(hamiltonian)),
+      callableArgument("gradient", std::move(gradient)),
+      callableArgument("hessian_times", std::move(hessian_times), true), n);
   if (metric.is_none()) {
     return std::make_shared<System>(
         makeLiePoissonSystem(name, h, std::make_shared<const ScaledIdentityMetric<G>>(alpha)), n);
@@ -91,9 +125,13 @@ std::shared_ptr<System> userSystem(const std::string& name, py::function hamilto
 void bindUserSystem(py::module_& m) {
   m.def(
       "user_system",
-      [](const std::string& group, py::function hamiltonian, py::function gradient,
-         py::object hessian_times, double alpha, py::handle metric, Eigen::Index n,
-         const std::string& name) {
+      [](py::handle group_object, py::object hamiltonian, py::object gradient,
+         py::object hessian_times, py::handle alpha_object, py::handle metric, py::handle n_object,
+         py::handle name_object) {
+        const std::string group = textArgument("group", group_object);
+        const double alpha = realArgument("alpha", alpha_object);
+        const auto n = integerArgument<Eigen::Index>("N", n_object);
+        const std::string name = textArgument("name", name_object);
         if (group == SO3::kName) {
           return userSystem<SO3>(name, hamiltonian, gradient, hessian_times, alpha, metric, n);
         }

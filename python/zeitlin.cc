@@ -112,13 +112,19 @@ void bindZeitlin(py::module_& m) {
           py::arg("omega"), "W = sum omega_lm T_lm: the inverse of omega_lm().");
   m.def(
       "zeitlin",
-      [](Eigen::Index n, double alpha) { return std::make_shared<ZeitlinFluid>(n, alpha); },
+      [](py::handle n, py::handle alpha) {
+        return std::make_shared<ZeitlinFluid>(integerArgument<Eigen::Index>("N", n),
+                                              realArgument("alpha", alpha));
+      },
       py::arg("N"), py::arg("alpha"),
       "Zeitlin's fluid at resolution N (2 <= N <= 4096) with double-bracket coefficient "
       "alpha (any finite sign; alpha > 0 dissipates energy).");
   m.def(
       "zeitlin_vorticity",
-      [](const std::string& kind, Eigen::Index n, std::uint64_t seed) {
+      [](py::handle kind_object, py::handle n_object, py::handle seed_object) {
+        const std::string kind = textArgument("kind", kind_object);
+        const auto n = integerArgument<Eigen::Index>("N", n_object);
+        const auto seed = integerArgument<std::uint64_t>("seed", seed_object);
         if (kind == "random") return stateToArray<SUN>(randomVorticity(n, seed));
         if (kind == "l1") return stateToArray<SUN>(l1Vorticity(n, seed));
         if (kind == "zonal") return stateToArray<SUN>(zonalVorticity(n, seed));

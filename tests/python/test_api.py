@@ -158,6 +158,12 @@ def test_a_failed_step_keeps_the_states_before_it():
     (dict(mu0=[1.0, float("nan"), 0.0]), "mu0 = (1, nan, 0)"),
     (dict(mu0=[1j, 0, 0]), "mu0 = an array of dtype complex128"),
     (dict(mu0="abc"), "mu0"),
+    (dict(system=None), "system = None"),
+    (dict(method=3), "method = 3"),
+    (dict(h="0.1"), "h = '0.1'"),
+    (dict(steps=1.5), "steps = 1.5"),
+    (dict(steps=10**30), "steps = " + str(10**30)),
+    (dict(every=2.0), "every = 2.0"),
 ])
 def test_bad_arguments_name_the_parameter(kwargs, parameter):
     a = ddb.scenario("A")
@@ -176,7 +182,18 @@ def test_bad_system_arguments_name_the_parameter():
         (lambda: ddb.manakov([1, 0, 2], 0.5), "J"),
         (lambda: ddb.zeitlin(1, 0.5), "N = 1"),
         (lambda: ddb.zeitlin_vorticity("vortex", 4), "kind = vortex"),
-        (lambda: ddb.scenario("D"), "scenario = D"),
+        (lambda: ddb.scenario("D"), "name = D"),
+        (lambda: ddb.scenario(1), "name = 1"),
+        # N x N matrices from a user-given N: refused past the documented N <= 4096 before
+        # they are allocated (a MemoryError otherwise).
+        (lambda: ddb.manakov(np.ones(100_000), 0.5), "J = an array of 100000 numbers"),
+        (lambda: ddb.zeitlin(100_000, 0.5), "N = 100000"),
+        (lambda: ddb.zeitlin(8.0, 0.5), "N = 8.0"),
+        (lambda: ddb.zeitlin_vorticity("random", 100_000), "N = 100000"),
+        (lambda: ddb.zeitlin_vorticity("random", 8, -1), "seed = -1"),
+        (lambda: ddb.zeitlin_vorticity(None, 8), "kind = None"),
+        (lambda: ddb.rigid_body([1, 2, 3], "0.5"), "alpha = '0.5'"),
+        (lambda: ddb.heavy_top(mgl=[1]), "mgl = [1]"),
         (lambda: ddb.heavy_top(metric=[1, 1, 1]), "metric"),
         (lambda: ddb.integrate(ddb.heavy_top(), "sddb-paper-cay", ddb.HeavyTopSetup().mu0, 0.1,
                                1), "method = sddb-paper-cay"),
@@ -222,3 +239,31 @@ def test_integrate_releases_the_gil():
     finally:
         sys.setswitchinterval(interval)
     assert woke_during_the_run
+
+
+@pytest.mark.parametrize("method", ["ddb-cay", "sddb-exp", "rk4", "lobatto3c"])
+def test_subnormal_components_are_flushed_and_the_run_stays_on_the_axis(method):
+    # m = (0, c, 0) lies on a principal axis: the rigid body's equilibrium, with or without
+    # dissipation (Omega = I^-1 m is parallel to m). Components below 2^-1022 start it.
+    a = ddb.scenario("A")
+    tiny = np.finfo(float).tiny  # 2^-1022, the smallest normal number
+    _, m = ddb.integrate(a.system(), method, [tiny / 8, -0.5042, -tiny / 1e6], 0.1, 200)
+    assert np.all(np.isfinite(m))
+    _, axis = ddb.integrate(a.system(), method, [0.0, -0.5042, 0.0], 0.1, 200)
+    np.testing.assert_allclose(axis, np.tile([0.0, -0.5042, 0.0], (201, 1)), rtol=1e-15, atol=0)
+    np.testing.assert_array_equal(m[1:], axis[1:])
+
+
+def test_a_decay_into_the_subnormal_range_ends_on_the_axis():
+    # From a normal-range state, the off-axis components fall by about e^-0.009 a step until
+    # they pass 2^-1022 (after some 7.6e4 steps): states then keep no subnormal numbers, and
+    # the run ends at the limit point -|m0| e2 (Scenario B) with |m| kept.
+    a = ddb.scenario("A")
+    mu0 = np.array([1e-3, -0.5042, 1e-3])
+    _, m = ddb.integrate(a.system(), "ddb-cay", mu0, 0.1, 200_000, every=1000)
+    tiny = np.finfo(float).tiny
+    assert np.all(np.isfinite(m))
+    assert not np.any((m != 0) & (np.abs(m) < tiny))
+    assert np.any((m[:, 0] != 0) & (np.abs(m[:, 0]) < 1e-300))  # it did pass close by
+    np.testing.assert_array_equal(m[-1, [0, 2]], [0.0, 0.0])
+    assert m[-1, 1] == pytest.approx(-np.linalg.norm(mu0), rel=1e-15)

@@ -89,6 +89,64 @@ def test_errors_of_a_python_hamiltonian_reach_the_caller():
         ddb.user_system("SO(N)", lambda m: 0.0, lambda m: m, N=3, metric=[1, 1, 1])
 
 
+@pytest.mark.parametrize("kwargs, parameter", [
+    (dict(hamiltonian=5), "hamiltonian = 5"),
+    (dict(gradient="m / I"), "gradient = 'm / I'"),
+    (dict(hessian_times=1.0), "hessian_times = 1.0"),
+    (dict(group=3), "group = 3"),
+    (dict(alpha=None), "alpha = None"),
+    (dict(N="4"), "N = '4'"),
+    (dict(group="SO(N)", N=100_000), "N = 100000"),
+    (dict(name=7), "name = 7"),
+])
+def test_bad_user_system_arguments_name_the_parameter(kwargs, parameter):
+    args = dict(group="SO3", hamiltonian=lambda m: 0.0, gradient=lambda m: m)
+    args.update(kwargs)
+    with pytest.raises(ValueError) as caught:
+        ddb.user_system(**args)
+    assert str(caught.value).startswith(parameter), str(caught.value)
+
+
+def test_a_hamiltonian_that_returns_no_number_is_named():
+    user = ddb.user_system("SO3", lambda m: "0.5", lambda m: m / INERTIA, alpha=0.5)
+    with pytest.raises(ValueError, match="^hamiltonian = a function returning '0.5'"):
+        user.energy([0, 0.065, 0.5])
+
+
+def test_a_non_finite_gradient_fails_the_step_and_keeps_the_states_before_it():
+    # rk4 calls the gradient 4 times a step (its 4 stages): call 4 * 7 + 1 is step 7's first.
+    a = ddb.scenario("A")
+    calls = 0
+
+    def gradient(m):
+        nonlocal calls
+        calls += 1
+        return m / INERTIA if calls <= 4 * 7 else np.array([np.nan, 0.0, 0.0])
+
+    user = ddb.user_system("SO3", lambda m: 0.0, gradient, alpha=a.alpha)
+    with pytest.raises(ddb.SolveFailure) as caught:
+        ddb.integrate(user, "rk4", a.mu0, 0.1, 20)
+    e = caught.value
+    assert (e.kind, e.step, e.h) == ("NonFiniteState", 7, 0.1)
+    assert "gradient" in str(e) and "step 7 " in str(e)
+    _, expected = ddb.integrate(a.system(), "rk4", a.mu0, 0.1, 7)
+    np.testing.assert_allclose(e.states, expected, rtol=0, atol=1e-13)
+    np.testing.assert_allclose(e.times, 0.1 * np.arange(8), rtol=1e-15)
+
+
+def test_a_non_finite_hessian_or_energy_is_a_solve_failure():
+    a = ddb.scenario("A")
+    user = ddb.user_system("SO3", lambda m: float("inf"), lambda m: m / INERTIA,
+                           lambda m, v: np.full(3, np.nan), alpha=a.alpha)
+    # lobatto3c's stage equations are solved by Newton on the Hessian product from step 0.
+    with pytest.raises(ddb.SolveFailure) as caught:
+        ddb.integrate(user, "lobatto3c", a.mu0, 0.1, 5)
+    assert caught.value.kind == "NonFiniteState" and "hessian_times" in str(caught.value)
+    np.testing.assert_array_equal(caught.value.states, [a.mu0])
+    with pytest.raises(ddb.SolveFailure, match="hamiltonian = inf"):
+        user.energy(a.mu0)
+
+
 def test_a_diagonal_metric_on_se3_equals_the_heavy_top():
     setup = ddb.HeavyTopSetup()
     k = np.array([1.0, 2.0, 0.5, 1.0, 1.0, 3.0])
