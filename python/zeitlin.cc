@@ -113,7 +113,7 @@ void bindZeitlin(py::module_& m) {
   m.def(
       "zeitlin",
       [](py::handle n, py::handle alpha) {
-        return std::make_shared<ZeitlinFluid>(integerArgument<Eigen::Index>("N", n),
+        return std::make_shared<ZeitlinFluid>(integerArgument<Eigen::Index>("N", n, 2, SUN::kMaxN),
                                               realArgument("alpha", alpha));
       },
       py::arg("N"), py::arg("alpha"),
@@ -123,7 +123,7 @@ void bindZeitlin(py::module_& m) {
       "zeitlin_vorticity",
       [](py::handle kind_object, py::handle n_object, py::handle seed_object) {
         const std::string kind = textArgument("kind", kind_object);
-        const auto n = integerArgument<Eigen::Index>("N", n_object);
+        const auto n = integerArgument<Eigen::Index>("N", n_object, 2, SUN::kMaxN);
         const auto seed = integerArgument<std::uint64_t>("seed", seed_object);
         if (kind == "random") return stateToArray<SUN>(randomVorticity(n, seed));
         if (kind == "l1") return stateToArray<SUN>(l1Vorticity(n, seed));
