@@ -7,11 +7,8 @@
 // of its files stays beside the new run's.
 #pragma once
 
-#include <sys/types.h>
-
 #include <cstdint>
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <vector>
 
