@@ -519,7 +519,35 @@ TEST(FluidRelaxMpiCheckpoint, RefusesBadResumesOnEveryRankOnce) {
       EXPECT_EQ(folderBytes(folder), before) << arguments;
     }
   }
+  // --grid-rows may be given anew with --resume, as --block may (docs/file-formats.md).
+  const AppResult regrid = runMpi(2, "--quiet --steps 12 --grid-rows 1 --resume " + done.string());
+  EXPECT_EQ(regrid.status, 0) << regrid.output;
   for (const fs::path& folder : {done, corrupt, newton}) fs::remove_all(folder);
+}
+
+TEST(FluidRelaxMpiCheckpoint, AFolderAnotherProcessWritesIsRefusedOnEveryRank) {
+  // A serial run that is going (a checkpoint every step) holds the folder's lock
+  // (docs/file-formats.md, "Run folders"): fluid-relax-mpi's rank 0 is refused, once, and
+  // every rank exits 2 without touching the folder.
+  const fs::path going = freshFolder("ddb_mpi_", "going");
+  std::vector<std::string> words{
+      FLUID_RELAX_PATH, "--quiet", "--n",   "24",          "--checkpoint-every", "1",
+      "--steps",        "1000000", "--out", going.string()};
+  const pid_t child = startUntilCheckpoint(words, going);
+  for (const std::string& arguments :
+       {"--quiet --steps 2000000 --resume " + going.string(),
+        "--quiet --n 16 --steps 10 --overwrite --out " + going.string()}) {
+    const AppResult r = runMpi(2, arguments);
+    EXPECT_EQ(r.status, 2) << arguments << "\n" << r.output;
+    EXPECT_NE(r.error.find("the folder is in use by process " + std::to_string(child)),
+              std::string::npos)
+        << arguments << "\n"
+        << r.error;
+    EXPECT_EQ(messageCount(r.error), 1u) << arguments << "\n" << r.error;
+  }
+  ::kill(child, SIGKILL);
+  EXPECT_EQ(waitForExit(child), -SIGKILL);
+  fs::remove_all(going);
 }
 
 // Starts `mpiexec -n 2 fluid-relax-mpi arguments` (output discarded), waits for its first

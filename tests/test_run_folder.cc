@@ -128,6 +128,10 @@ TEST_F(RunFolder, AFailedResumeKeepsEveryFileAndResumesOnceTheCauseIsGone) {
   expectRefused(resume, (out / "fluid.hdf5").string(), out);
   put("fluid.hdf5", std::string(4096, 'x'));
   expectRefused(resume, "not an HDF5 file", out);
+  fs::remove(out / "fluid.hdf5");
+  ASSERT_EQ(::mkfifo((out / "fluid.hdf5").c_str(), 0644), 0);
+  expectRefused(resume, (out / "fluid.hdf5").string() + " is a FIFO", out);
+  fs::remove(out / "fluid.hdf5");
   put("fluid.hdf5", h5);
   put("history.csv", history.substr(0, history.size() / 2));
   expectRefused(resume, "its checkpoint recorded: it is not the history its checkpoint continues",
