@@ -130,11 +130,9 @@ void getSettings(BinaryRecordReader& in, Settings& s) {
 
 std::string readCheckpointBytes(const std::string& dir) {
   const std::filesystem::path path = std::filesystem::path(dir) / kCheckpointFile;
-  if (!std::filesystem::exists(std::filesystem::symlink_status(path))) {
-    app::usageError("--resume", dir, "no checkpoint to resume from: " + path.string());
-  }
-  // Its kind before it is opened (a FIFO would block, /dev/zero never end), and exactly the
-  // bytes it has: nothing is allocated beyond the file's length.
+  // Its existence was checked with the folder's lock (lockResumeFolder); its kind before it is
+  // opened (a FIFO would block, /dev/zero never end), and exactly the bytes it has: nothing is
+  // allocated beyond the file's length.
   const std::uint64_t size = app::requireRegularFile("--resume", dir, path);
   std::ifstream file(path, std::ios::binary);
   std::string bytes(size, '\0');

@@ -38,10 +38,10 @@ HistoryFiles::HistoryFiles(const Options& o, const Settings& s, const LiePoisson
       probe_(system),
       basis_(hamiltonian_.laplacian()) {
   if (resume != nullptr) {
-    csv_.emplace(s.out / "history.csv", resume->files.history_bytes,
+    csv_.emplace(s.out / kHistoryCsv, resume->files.history_bytes,
                  resume->files.history_digest.value());
   } else {
-    csv_.emplace(s.out / "history.csv");
+    csv_.emplace(s.out / kHistoryCsv);
   }
   if (o.h5 || o.animate) {
     h5_ = resume != nullptr

@@ -44,6 +44,9 @@ class HistoryCsv {
   app::CsvRow row_;
 };
 
+/// The name of the history's file in --out (a JournalFile: `.partial` while a run writes it).
+constexpr const char* kHistoryCsv = "history.csv";
+
 /// The name of --h5's file in --out: quflow.load opens only names ending in "hdf5".
 constexpr const char* kFluidH5 = "fluid.hdf5";
 

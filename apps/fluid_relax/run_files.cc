@@ -15,8 +15,6 @@ namespace ddb::fluid {
 
 namespace {
 
-constexpr const char* kHistory = "history.csv";
-
 /// The FNV-1a hash of the first `length` bytes of `path`, read a block at a time.
 std::uint64_t digestOfPrefix(const std::string& dir, const std::filesystem::path& path,
                              std::uint64_t length) {
@@ -37,7 +35,7 @@ std::uint64_t digestOfPrefix(const std::string& dir, const std::filesystem::path
 }  // namespace
 
 const app::RunFiles& runFiles() {
-  static const app::RunFiles files{{kHistory, app::JournalFile::partialOf(kHistory).string(),
+  static const app::RunFiles files{{kHistoryCsv, app::JournalFile::partialOf(kHistoryCsv).string(),
                                     kCheckpointFile, "W_final.csv", "omega_initial.csv",
                                     "omega_final.csv", "summary.json", kFluidH5, "fluid.mp4",
                                     // scripts/animate_fluid.py's and plot_fluid.py's
@@ -57,7 +55,7 @@ app::RunFolderLock lockResumeFolder(const std::string& dir) {
 
 void checkResumeFolder(const std::string& dir, Checkpoint& c) {
   const std::filesystem::path folder(dir);
-  const std::filesystem::path history = app::JournalFile::resumeFileOf(folder / kHistory);
+  const std::filesystem::path history = app::JournalFile::resumeFileOf(folder / kHistoryCsv);
   const std::uint64_t size = app::requireRegularFile("--resume", dir, history);
   const std::uint64_t recorded = c.files.history_bytes;
   if (size < recorded) {
