@@ -4,7 +4,7 @@
 #pragma once
 
 #include <ddb/core/errors.h>
-#include <ddb/core/parallel_passes.h>
+#include <ddb/core/matrix_backend.h>
 
 #include <string>
 
@@ -35,7 +35,7 @@ class ScaledIdentityMetric final : public DissipationMetric<G> {
   Algebra sharp(const Dual& mu) const override { return alpha_ * mu; }
   void sharpInto(const Dual& mu, Algebra& out) const override {
     if constexpr (Algebra::SizeAtCompileTime == Eigen::Dynamic) {
-      assignInParallel(out, alpha_ * mu);  // a matrix algebra: an O(N²) pass of the step
+      MatrixBackend<Dual>::scale(alpha_, mu, out);  // a matrix algebra: an O(N²) pass of the step
     } else {
       out = alpha_ * mu;
     }

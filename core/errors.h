@@ -68,6 +68,12 @@ class SolveFailure : public std::runtime_error {
 std::string formatValue(double v);
 template <class Derived>
 std::string formatValue(const Eigen::DenseBase<Derived>& v);
+/// A value already written out, e.g. by a matrix backend whose entries are not on the host
+/// or not all on this process (MatrixBackend::describe).
+struct FormattedValue {
+  std::string text;
+};
+inline std::string formatValue(const FormattedValue& v) { return v.text; }
 
 /// A state that overflowed or became NaN inside a step. It is what it says, not a
 /// solver that missed its tolerance: the message names the step, t, h and the offending

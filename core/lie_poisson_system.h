@@ -10,7 +10,6 @@
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lagrangian.h>
 #include <ddb/core/matrix_backend.h>
-#include <ddb/core/parallel_passes.h>
 
 #include <memory>
 #include <string>
@@ -41,7 +40,7 @@ struct MatrixFieldWorkspace {
 /// written against the matrix backend, so H may act on distributed matrices.
 template <class G, class H, class X>
 void matrixVelocityInto(const H& hamiltonian, const X& mu, X& argument, X& xi) {
-  assignInParallel(MatrixBackend<X>::entries(argument), MatrixBackend<X>::entries(mu));
+  MatrixBackend<X>::copy(mu, argument);
   G::projectToAlgebra(argument);
   hamiltonian.gradientInto(argument, xi);
   G::projectToAlgebra(xi);
@@ -52,7 +51,7 @@ void matrixVelocityInto(const H& hamiltonian, const X& mu, X& argument, X& xi) {
 template <class G, class H, class X>
 void matrixVelocityDerivativeInto(const H& hamiltonian, const X& argument, const X& v, X& direction,
                                   X& out) {
-  assignInParallel(MatrixBackend<X>::entries(direction), MatrixBackend<X>::entries(v));
+  MatrixBackend<X>::copy(v, direction);
   G::projectToAlgebra(direction);
   hamiltonian.hessianTimesInto(argument, direction, out);
   G::projectToAlgebra(out);

@@ -1,11 +1,11 @@
-// MatrixBackend<X>: what the matrix groups' step formulas are written against, so that one
-// formula serves a dense matrix and a matrix distributed over MPI ranks
-// (docs/distributed.md, "One step formula"). Element-wise arithmetic is done on entries(x),
-// an Eigen matrix that, for all operands of one formula, holds the same entries: all of them
-// for a dense matrix, this rank's blocks for a distributed one (same layout). Whatever
-// couples entries goes through a static function here: products, adjoints, traces, norms,
-// sampled entries and LU solves. Every reduction returns the same value on every rank,
-// so that every data-dependent branch is taken alike everywhere.
+// MatrixBackend<X>: all the arithmetic of the matrix groups' step formulas, so that one
+// formula serves a dense matrix, a matrix distributed over MPI ranks and any other storage
+// (docs/matrix-backend.md is the contract a backend implements). As in Boost.Odeint's
+// algebra and operations, a formula never touches entries: it combines matrices by the
+// element-wise operations below (copy, setZero, scale, divide, axpy, sum, addSum,
+// addCombination) and couples them by the functions after them: products, adjoints,
+// traces, norms, sampled entries and LU solves. Every reduction returns the same value on
+// every rank, so that every data-dependent branch is taken alike everywhere.
 //
 // This primary template is the dense backend (Eigen's dynamic-size matrices, real or
 // complex); distributed/distributed_backend.h specialises it for DistributedMatrix.
@@ -14,6 +14,8 @@
 #include <ddb/core/binary_record.h>
 #include <ddb/core/detail/blas_threads.h>
 #include <ddb/core/detail/dense_lu.h>
+#include <ddb/core/errors.h>
+#include <ddb/core/parallel_passes.h>
 #include <ddb/core/thread_pool.h>
 
 #include <Eigen/Core>
@@ -23,6 +25,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <string>
 #include <utility>
 
 namespace ddb {
@@ -35,8 +38,69 @@ struct MatrixBackend {
   /// false when A is singular).
   using Lu = DenseLu<X>;
 
-  static X& entries(X& x) { return x; }
-  static const X& entries(const X& x) { return x; }
+  // ---- Element-wise operations. Each entry of the result is its own expression of the
+  // operands' entries at the same place, computed as written (left to right, no fused
+  // multiply-add), so the bits do not depend on the backend's threads or storage. `out`
+  // may be one of the operands. Coefficients ±1 are taken as additions and subtractions:
+  // 1·x = x and (−1)·x = −x exactly, so that is the same result, vectorised. ----
+
+  /// out ← x (out takes x's shape).
+  static void copy(const X& x, X& out) { assignInParallel(out, x); }
+  /// x ← 0, keeping x's shape.
+  static void setZero(X& x) {
+    ThreadPool::instance().forColumnRanges(
+        x.rows(), x.cols(), [&](long first, long count) { x.middleCols(first, count).setZero(); });
+  }
+  /// out ← a·x.
+  static void scale(double a, const X& x, X& out) {
+    withTerm(a, x, [&](const auto& ax) { assignInParallel(out, ax); });
+  }
+  /// x ← x / a, real and imaginary parts divided by a (not scale(1/a, x), which rounds twice;
+  /// nor Eigen's x /= a, which on a complex x divides by the complex a + 0i, libgcc's
+  /// complex division, whose rounding differs in about half the entries).
+  static void divide(X& x, double a) { assignInParallel(x, x / a); }
+  /// y ← y + a·x.
+  static void axpy(double a, const X& x, X& y) {
+    withTerm(a, x, [&](const auto& ax) { addInParallel(y, ax); });
+  }
+  /// out ← a·x + b·y.
+  static void sum(double a, const X& x, double b, const X& y, X& out) {
+    withTerm(a, x, [&](const auto& ax) {
+      withTerm(b, y, [&](const auto& by) { assignInParallel(out, ax + by); });
+    });
+  }
+  /// out ← (a·x + b·y) + c·z.
+  static void sum(double a, const X& x, double b, const X& y, double c, const X& z, X& out) {
+    withTerm(a, x, [&](const auto& ax) {
+      withTerm(b, y, [&](const auto& by) {
+        withTerm(c, z, [&](const auto& cz) { assignInParallel(out, ax + by + cz); });
+      });
+    });
+  }
+  /// out ← out + (a·x + b·y).
+  static void addSum(double a, const X& x, double b, const X& y, X& out) {
+    withTerm(a, x, [&](const auto& ax) {
+      withTerm(b, y, [&](const auto& by) { addInParallel(out, ax + by); });
+    });
+  }
+  /// out ← (((out + c₀·term(0)) + c₁·term(1)) + …) for j < count, term(j) a const X&. Block
+  /// of columns by block, so that each block of out stays in cache while the terms are added
+  /// (one pass over out instead of count); column ranges on the library's threads.
+  template <class Coefficients, class Term>
+  static void addCombination(const Coefficients& c, const Term& term, int count, X& out) {
+    constexpr Eigen::Index kBlockColumns = 16;
+    ThreadPool::instance().forColumnRanges(
+        out.rows(), out.cols(), [&](Eigen::Index begin, Eigen::Index width) {
+          for (Eigen::Index first = begin; first < begin + width; first += kBlockColumns) {
+            const Eigen::Index cols = std::min(kBlockColumns, begin + width - first);
+            auto block = out.middleCols(first, cols);
+            for (int j = 0; j < count; ++j) block += c(j) * term(j).middleCols(first, cols);
+          }
+        });
+  }
+
+  /// x's entries as an error message shows them (errors.h, formatValue).
+  static FormattedValue describe(const X& x) { return {formatValue(x)}; }
 
   /// Whether x has like's shape (and, distributed, layout).
   static bool sameShape(const X& x, const X& like) {
@@ -191,6 +255,18 @@ struct MatrixBackend {
   }
 
  private:
+  // f(a·x) with a·x as the expression x, −x or a·x: ±1 exactly as additions (vectorised).
+  template <class F>
+  static void withTerm(double a, const X& x, F&& f) {
+    if (a == 1.0) {
+      f(x);
+    } else if (a == -1.0) {
+      f(-x);
+    } else {
+      f(a * x);
+    }
+  }
+
   // The transposing passes go tile by tile and read the transposed tile by its columns:
   // reading it along its rows strides by a column's length, which for N a multiple of 256
   // (complex) maps every access to the same cache set (docs/design.md, "Threads").

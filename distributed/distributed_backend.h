@@ -1,8 +1,8 @@
 // MatrixBackend<DistributedMatrix>: the matrix backend (core/matrix_backend.h) of a
 // block-cyclic matrix, so that the matrix groups' step formulas run unchanged on matrices
-// distributed over MPI ranks (docs/distributed.md, "One step formula"). entries(x) is this
-// rank's local array; the operands of one formula share a layout, so element-wise
-// arithmetic on local arrays is the whole matrices' arithmetic. Products are pzgemm_,
+// distributed over MPI ranks (docs/distributed.md, "One step formula"). The operands of one
+// formula share a layout, so the element-wise operations are the dense backend's on this
+// rank's local arrays. Products are pzgemm_,
 // adjoints an AdjointExchange, the 1-norm from column sums as the dense backend's, LU factors and
 // solves pzgetrf_ + pzgetrs_; sums over the ranks are ProcessGrid::sum (the same bits on every
 // rank). All functions are collective.
@@ -35,9 +35,33 @@ struct MatrixBackend<DistributedMatrix> {
   using Scalar = std::complex<double>;
   using Entries = Eigen::MatrixXcd;
   using Lu = DistributedLu;
+  using Dense = MatrixBackend<Entries>;
 
-  static Entries& entries(X& x) { return x.local(); }
-  static const Entries& entries(const X& x) { return x.local(); }
+  // The element-wise operations (core/matrix_backend.h) on the local arrays.
+  static void copy(const X& x, X& out) {
+    if (!out.sameLayout(x)) out = DistributedMatrix(x.layout());
+    Dense::copy(x.local(), out.local());
+  }
+  static void setZero(X& x) { Dense::setZero(x.local()); }
+  static void scale(double a, const X& x, X& out) { Dense::scale(a, x.local(), out.local()); }
+  static void divide(X& x, double a) { Dense::divide(x.local(), a); }
+  static void axpy(double a, const X& x, X& y) { Dense::axpy(a, x.local(), y.local()); }
+  static void sum(double a, const X& x, double b, const X& y, X& out) {
+    Dense::sum(a, x.local(), b, y.local(), out.local());
+  }
+  static void sum(double a, const X& x, double b, const X& y, double c, const X& z, X& out) {
+    Dense::sum(a, x.local(), b, y.local(), c, z.local(), out.local());
+  }
+  static void addSum(double a, const X& x, double b, const X& y, X& out) {
+    Dense::addSum(a, x.local(), b, y.local(), out.local());
+  }
+  template <class Coefficients, class Term>
+  static void addCombination(const Coefficients& c, const Term& term, int count, X& out) {
+    Dense::addCombination(
+        c, [&](int j) -> const Entries& { return term(j).local(); }, count, out.local());
+  }
+  /// This rank's entries, for an error message.
+  static FormattedValue describe(const X& x) { return Dense::describe(x.local()); }
 
   static bool sameShape(const X& x, const X& like) { return x.sameLayout(like); }
   static void zeroLike(X& x, const X& like) { x = DistributedMatrix(like.layout()); }
@@ -71,7 +95,6 @@ struct MatrixBackend<DistributedMatrix> {
   /// whose largest is broadcast, so every rank has the same bits. pzlange_ took |z| by hypot,
   /// a visible share of the step (docs/distributed.md, "The 1-norm and the factor by solves").
   static double oneNorm(const X& x) {
-    using Dense = MatrixBackend<Entries>;
     const double fast = largestColumnSum(x, false);
     return Dense::squaresWereExact(fast) ? fast : largestColumnSum(x, true);
   }

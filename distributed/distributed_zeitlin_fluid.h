@@ -40,7 +40,7 @@ class DistributedZeitlinFluid {
   /// out = hφ/2 = k♯([p, a]) from the product ap = a p; collective, no product.
   void halfStepDissipationInto(const Dual& ap, Dual& commutator, Algebra& out) const {
     SUN::commutatorFromProduct(ap, commutator);
-    B::entries(out) = alpha_ * B::entries(commutator);
+    B::scale(alpha_, commutator, out);
   }
 
   /// The stream matrix P = Δ⁻¹W of a skew-Hermitian W; collective.

@@ -14,7 +14,6 @@
 #include <ddb/core/errors.h>
 #include <ddb/core/lie_group.h>
 #include <ddb/core/matrix_backend.h>
-#include <ddb/core/parallel_passes.h>
 #include <ddb/groups/skew_hermitian_eigenbasis.h>
 
 #include <Eigen/Core>
@@ -216,7 +215,7 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
   static void cayleyFixedPointGiven(const X& W, const X& a, const X& ap, X& apa, X& out) {
     using B = MatrixBackend<X>;
     B::multiply(ap, a, apa);
-    assignInParallel(B::entries(out), B::entries(W) - B::entries(ap) + B::entries(apa));
+    B::sum(1.0, W, -1.0, ap, 1.0, apa, out);
     B::addAdjoint(1.0, ap, out);
   }
 
@@ -224,7 +223,7 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
   template <class X>
   static void commutatorFromProduct(const X& ap, X& out) {
     using B = MatrixBackend<X>;
-    assignInParallel(B::entries(out), -B::entries(ap));
+    B::scale(-1.0, ap, out);
     B::addAdjoint(1.0, ap, out);
   }
 
@@ -237,11 +236,11 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
     using B = MatrixBackend<X>;
     B::multiply(a, delta, t1);
     B::multiply(t1, a, t2);
-    assignInParallel(B::entries(out), B::entries(delta) + B::entries(t1) - B::entries(t2));
+    B::sum(1.0, delta, 1.0, t1, -1.0, t2, out);
     B::addAdjoint(-1.0, t1, out);
     B::multiply(delta_a, p, t1);
     B::multiply(t1, a, t2);
-    addInParallel(B::entries(out), B::entries(t1) - B::entries(t2));
+    B::addSum(1.0, t1, -1.0, t2, out);
     B::addAdjoint(-1.0, t1, out);
     B::addAdjoint(1.0, t2, out);
   }

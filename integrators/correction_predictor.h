@@ -18,8 +18,6 @@
 
 #include <ddb/core/binary_record.h>
 #include <ddb/core/matrix_backend.h>
-#include <ddb/core/parallel_passes.h>
-#include <ddb/core/thread_pool.h>
 
 #include <Eigen/Core>
 #include <Eigen/QR>
@@ -48,7 +46,7 @@ class CorrectionPredictor {
   /// largest remembered one (on the sketch) means the state does not continue the
   /// remembered ones (a caller that skipped reset()): then the newest correction alone.
   void predict(const Matrix& near, Matrix& out) const {
-    assignInParallel(B::entries(out), B::entries(near));
+    B::copy(near, out);
     if (count_ == 0) return;
     const int m = order_;
     predicted_.setZero();
@@ -57,23 +55,12 @@ class CorrectionPredictor {
       predicted_ += coefficients_(j) * sketches_.col(sketchSlot(j));
       largest = std::max(largest, sketches_.col(sketchSlot(j)).norm());
     }
-    auto& entries = B::entries(out);
     if (!(predicted_.norm() <= 2.0 * largest)) {
-      entries += B::entries(correction(0));
+      B::axpy(1.0, correction(0), out);
       return;
     }
-    // Column block by column block, so that each block of out stays in cache while the m
-    // corrections are added (one pass over memory instead of m); column ranges on the
-    // library's threads.
-    ThreadPool::instance().forColumnRanges(
-        entries.rows(), entries.cols(), [&](Eigen::Index begin, Eigen::Index count) {
-          for (Eigen::Index first = begin; first < begin + count; first += kBlockColumns) {
-            const Eigen::Index width = std::min(kBlockColumns, begin + count - first);
-            auto block = entries.middleCols(first, width);
-            for (int j = 0; j < m; ++j)
-              block += coefficients_(j) * B::entries(correction(j)).middleCols(first, width);
-          }
-        });
+    B::addCombination(
+        coefficients_, [&](int j) -> const Matrix& { return correction(j); }, m, out);
   }
 
   /// The remembered corrections, their sketches and the fitted coefficients
@@ -116,7 +103,7 @@ class CorrectionPredictor {
     allocate(near);
     ++count_;
     Matrix& c = corrections_[static_cast<std::size_t>((count_ - 1) % kOrder)];
-    assignInParallel(B::entries(c), B::entries(solution) - B::entries(near));
+    B::sum(1.0, solution, -1.0, near, c);
     auto sketch = sketches_.col(sketchSlot(0));
     B::sampleEntries(c, sample_, sketch);
     fit();
@@ -128,7 +115,6 @@ class CorrectionPredictor {
   static constexpr int kRelations = 3;  // recurrences fitted at once (fit())
   static constexpr int kSketches = kOrder + kRelations;
   static constexpr Eigen::Index kMaxSample = 512;  // entries: ≫ kOrder equations per relation
-  static constexpr Eigen::Index kBlockColumns = 16;
   /// Pivots of the fit below this fraction of the largest count as zero.
   static constexpr double kRankThreshold = 1e-10;
 

@@ -18,7 +18,7 @@
 
 #include <ddb/core/errors.h>
 #include <ddb/core/lie_poisson_system.h>
-#include <ddb/core/parallel_passes.h>
+#include <ddb/core/matrix_backend.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/integrators/matrix_conjugation.h>
 
@@ -44,12 +44,12 @@ class MatrixCayleyTransport {
     if (frozen != nullptr) {
       conjugation_.applyWithSolution(a, *frozen, mu);
     } else {
-      assignInParallel(B::entries(product_), 2.0 * B::entries(a));  // hξ
+      B::scale(2.0, a, product_);  // hξ
       conjugation_.prepare(product_);
       conjugation_.apply(mu);
     }
     if (!B::isZero(half_)) {
-      assignInParallel(B::entries(commutator_), 2.0 * B::entries(half_));  // hφ
+      B::scale(2.0, half_, commutator_);  // hφ
       conjugation_.prepare(commutator_);
       conjugation_.apply(mu);
     }

@@ -15,7 +15,6 @@
 
 #include <ddb/core/errors.h>
 #include <ddb/core/matrix_backend.h>
-#include <ddb/core/parallel_passes.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/exponential.h>
 #include <ddb/groups/skew_hermitian_eigenbasis.h>
@@ -42,11 +41,11 @@ class MatrixConjugation<R, Dual, false> {
   /// For τ(x) = cay(x): b = x/2 and the LU factors of I + b.
   void prepare(const Dual& x) {
     allocate(x);
-    assignInParallel(B::entries(half_), 0.5 * B::entries(x));
-    assignInParallel(B::entries(resolvent_), B::entries(half_));
+    B::scale(0.5, x, half_);
+    B::copy(half_, resolvent_);
     B::addToDiagonal(resolvent_, 1.0);
     if (!lu_.factor(resolvent_)) {
-      throw NonFiniteState("Cayley conjugation", -1, NAN, NAN, B::entries(x),
+      throw NonFiniteState("Cayley conjugation", -1, NAN, NAN, B::describe(x),
                            "Cayley argument (I + x/2 singular)");
     }
   }
@@ -56,9 +55,9 @@ class MatrixConjugation<R, Dual, false> {
   /// factors of I + b, cheaper than forming the inverse and multiplying by it twice
   /// (docs/design.md, "The Cayley conjugation by solves").
   void apply(Dual& mu) {
-    assignInParallel(B::entries(product_), B::entries(mu));
+    B::copy(mu, product_);
     lu_.solve(resolvent_, product_);  // (I + b)⁻¹ μ
-    B::entries(q_).setZero();
+    B::setZero(q_);
     B::addAdjoint(-1.0, product_, q_);
     lu_.solve(resolvent_, q_);
     applyWithSolution(half_, q_, mu);
@@ -75,7 +74,7 @@ class MatrixConjugation<R, Dual, false> {
     // and μ − 2bq + 2(bq)ᴴ in two passes rounds μ − 2bq to full size, with the same rounding
     // at every step of a steady flow (a linear drift of the spectrum, docs/long-run.md).
     G::commutatorFromProduct(product_, commutator_);  // (bq)ᴴ − bq = −[b, q]
-    addInParallel(B::entries(mu), 2.0 * B::entries(commutator_));
+    B::axpy(2.0, commutator_, mu);
   }
 
  private:

@@ -37,7 +37,7 @@
 #include <ddb/core/errors.h>
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
-#include <ddb/core/parallel_passes.h>
+#include <ddb/core/matrix_backend.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/exponential.h>
 #include <ddb/groups/skew_hermitian_eigenbasis.h>
@@ -274,7 +274,7 @@ class MatrixLegendreSolver {
     }
     if (!converged && !std::isfinite(stats_.residual)) {
       // Overflow (e.g. |α| or h near the double range) is not a missed tolerance.
-      throw NonFiniteState("discrete Legendre equation (matrix-free)", -1, t, h, B::entries(p_),
+      throw NonFiniteState("discrete Legendre equation (matrix-free)", -1, t, h, B::describe(p_),
                            "iterate");
     }
     if (!converged) {
@@ -382,7 +382,7 @@ class MatrixLegendreSolver {
         4.0 * norm_a * (2.0 * norm_a * lambda + norm_a * norm_a) / (1.0 - lambda);
     if (refined * update > rounding) return false;
     B::multiply(a_, next_, t1_);  // frozen_ = M − [a, next] + a p a
-    assignInParallel(B::entries(frozen_), B::entries(M) - B::entries(t1_) + B::entries(apa_));
+    B::sum(1.0, M, -1.0, t1_, 1.0, apa_, frozen_);
     B::addAdjoint(1.0, t1_, frozen_);
     ++stats_.refinements;
     return frozen_exact_ = true;
@@ -435,13 +435,13 @@ class MatrixLegendreSolver {
   // algebra: LiePoissonSystem::velocityInto), a = hξ/2.
   void updateVelocity(double h) {
     system_.velocityInto(p_, argument_, xi_);
-    assignInParallel(B::entries(a_), (0.5 * h) * B::entries(xi_));
+    B::scale(0.5 * h, xi_, a_);
   }
 
   // δa = (h/2) Dξ(p)[v] at the p of the last updateVelocity.
   void halfStepDerivative(const Dual& v, double h, Dual& out) {
     system_.velocityDerivativeInto(argument_, v, direction_, out);
-    assignInParallel(B::entries(out), (0.5 * h) * B::entries(out));
+    B::scale(0.5 * h, out, out);
   }
 
   // Newton on r(p) = (I + a)p(I − a) − W with GMRES on J δ = −r.
@@ -450,12 +450,12 @@ class MatrixLegendreSolver {
     for (int k = 0; k < kMaxNewton; ++k) {
       updateVelocity(h);
       G::cayleyFixedPoint(W, a_, p_, ap_, apa_, next_);
-      assignInParallel(B::entries(residual_), B::entries(next_) - B::entries(p_));  // −r(p)
+      B::sum(1.0, next_, -1.0, p_, residual_);  // −r(p)
       stats_.residual = B::frobeniusNorm(residual_);
       if (!std::isfinite(stats_.residual)) return false;
       if (stats_.residual <= tolerance) return true;
       ++stats_.newton;
-      B::entries(delta_).setZero();
+      B::setZero(delta_);
       const auto jacobian = [&](const Dual& v, Dual& out) {
         halfStepDerivative(v, h, delta_a_);
         G::cayleyLinearised(a_, p_, v, delta_a_, t1_, t2_, out);
@@ -465,7 +465,7 @@ class MatrixLegendreSolver {
       const double forcing = std::max(0.1 * tolerance, 1e-4 * stats_.residual);
       const auto krylov = gmres_.solve(jacobian, residual_, delta_, forcing, kMaxKrylov);
       stats_.krylov += krylov.iterations;
-      addInParallel(B::entries(p_), B::entries(delta_));
+      B::axpy(1.0, delta_, p_);
     }
     updateVelocity(h);
     G::cayleyFixedPoint(W, a_, p_, ap_, apa_, next_);

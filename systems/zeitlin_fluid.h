@@ -10,7 +10,7 @@
 
 #include <ddb/core/dissipation_metric.h>
 #include <ddb/core/lie_poisson_system.h>
-#include <ddb/core/parallel_passes.h>
+#include <ddb/core/matrix_backend.h>
 #include <ddb/groups/sun.h>
 #include <ddb/systems/hoppe_yau_laplacian.h>
 
@@ -27,8 +27,7 @@ inline double zeitlinHbar(Eigen::Index n) { return 2.0 / std::sqrt(double(n * n 
 template <class Laplacian, class X>
 void zeitlinVelocityInto(Laplacian& laplacian, double hbar, const X& W, X& out) {
   laplacian.solve(W, out);
-  auto& entries = MatrixBackend<X>::entries(out);
-  assignInParallel(entries, (-1.0 / hbar) * entries);
+  MatrixBackend<X>::scale(-1.0 / hbar, out, out);
 }
 
 /// H(W) = Re tr(W Δ⁻¹W)/(2ħ); its gradient and Hessian are Poisson solves (O(N²)).

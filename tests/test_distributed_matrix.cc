@@ -1,6 +1,7 @@
 // The distributed matrix layer (docs/distributed.md) on 1–4 ranks: the process grid's
 // shape, scatter and gather against the block-cyclic layout of ScaLAPACK's users' guide,
-// pzgemm_'s product and pzlange_'s Frobenius norm against Eigen's, and a record held by
+// pzgemm_'s product and pzlange_'s Frobenius norm against Eigen's, the element-wise
+// operations against the dense backend's bits, and a record held by
 // rank 0 read on every rank (RankZeroRecordReader).
 #include <ddb/core/binary_record.h>
 #include <ddb/core/errors.h>
@@ -12,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstring>
 #include <map>
 #include <string>
 #include <tuple>
@@ -161,6 +163,58 @@ TEST_P(DistributedMatrixTest, SkewHermitianPartEqualsTheDenseBackendsBitForBit) 
     EXPECT_TRUE(result == Eigen::MatrixXcd(-result.adjoint()));
     EXPECT_LT(relativeDistance(result, 0.5 * (a - a.adjoint())), 1e-15);
   }
+}
+
+// The element-wise operations are the dense backend's on the local arrays: gathered, the
+// same bits as the dense backend's on the whole matrices.
+TEST_P(DistributedMatrixTest, ElementwiseOperationsEqualTheDenseBackendsBitForBit) {
+  using Dense = MatrixBackend<Eigen::MatrixXcd>;
+  using Distributed = MatrixBackend<DistributedMatrix>;
+  const Eigen::MatrixXcd x = randomComplexMatrix(n(), 45), y = randomComplexMatrix(n(), 46),
+                         z = randomComplexMatrix(n(), 47);
+  DistributedMatrix dx(grid_, n(), block()), dy(grid_, n(), block()), dz(grid_, n(), block());
+  dx.scatterFrom(x);
+  dy.scatterFrom(y);
+  dz.scatterFrom(z);
+  const auto expectDense = [&](const DistributedMatrix& distributed, const Eigen::MatrixXcd& dense,
+                               const char* operation) {
+    const Eigen::MatrixXcd result = distributed.gather();
+    if (grid_.rank() == 0) {
+      EXPECT_TRUE(result.size() == dense.size() &&
+                  std::memcmp(result.data(), dense.data(), sizeof(dense(0)) * dense.size()) == 0)
+          << operation;
+    }
+  };
+  DistributedMatrix out;
+  Eigen::MatrixXcd dense;
+  Distributed::copy(dx, out);
+  expectDense(out, x, "copy");
+  Distributed::sum(0.3, dx, -1.0, dy, 2.5, dz, out);
+  Dense::sum(0.3, x, -1.0, y, 2.5, z, dense);
+  expectDense(out, dense, "sum of three");
+  Distributed::sum(1.0, dx, -1.0, out, out);
+  Dense::sum(1.0, x, -1.0, dense, dense);
+  expectDense(out, dense, "sum of two");
+  Distributed::addSum(1.0, dy, -1.0, dz, out);
+  Dense::addSum(1.0, y, -1.0, z, dense);
+  expectDense(out, dense, "addSum");
+  Distributed::axpy(-0.7, dx, out);
+  Dense::axpy(-0.7, x, dense);
+  expectDense(out, dense, "axpy");
+  Distributed::scale(3.0, out, out);
+  Dense::scale(3.0, dense, dense);
+  expectDense(out, dense, "scale");
+  Distributed::divide(out, 7.0);
+  Dense::divide(dense, 7.0);
+  expectDense(out, dense, "divide");
+  const Eigen::Vector2d c(0.25, -1.5);
+  Distributed::addCombination(
+      c, [&](int j) -> const DistributedMatrix& { return j == 0 ? dy : dz; }, 2, out);
+  Dense::addCombination(
+      c, [&](int j) -> const Eigen::MatrixXcd& { return j == 0 ? y : z; }, 2, dense);
+  expectDense(out, dense, "addCombination");
+  Distributed::setZero(out);
+  expectDense(out, Eigen::MatrixXcd::Zero(n(), n()), "setZero");
 }
 
 // ‖x‖₁ (the certificate's bound on ‖a‖₂) against Eigen's largest column sum, on every rank:

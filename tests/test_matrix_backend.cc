@@ -1,11 +1,15 @@
-// The dense matrix backend's reductions (core/matrix_backend.h) against loops over the
-// entries with std::abs and std::norm, at ordinary scales and where squares of entries
-// under- or overflow.
+// The dense matrix backend (core/matrix_backend.h): its element-wise operations against
+// their formulas evaluated entry by entry with std::complex's operators, bit for bit (signs
+// of zeros included); its reductions against loops over the entries with std::abs and
+// std::norm, at ordinary scales and where squares of entries under- or overflow.
 #include <ddb/core/matrix_backend.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <complex>
+#include <cstring>
+#include <vector>
 
 #include "test_support.h"
 
@@ -14,6 +18,102 @@ namespace {
 
 using Matrix = Eigen::MatrixXcd;
 using B = MatrixBackend<Matrix>;
+
+// The same bits, the signs of zeros included.
+template <class X>
+bool sameBits(const X& a, const X& b) {
+  return a.rows() == b.rows() && a.cols() == b.cols() &&
+         std::memcmp(a.data(), b.data(), sizeof(typename X::Scalar) * a.size()) == 0;
+}
+
+// A random matrix with signed zeros, tiny and large entries among ordinary ones, so that a
+// shortcut that changed a sign or a rounding would show.
+template <class X>
+X operand(unsigned seed) {
+  std::srand(seed);
+  X x = X::Random(37, 29);
+  x(0, 0) = typename X::Scalar(-0.0);
+  x(1, 0) = typename X::Scalar(0.0);
+  x(2, 3) *= 1e-300;
+  x(3, 2) *= 1e300;
+  return x;
+}
+
+// entry(i, j) for every entry: the reference result.
+template <class X, class Entry>
+X entryByEntry(const X& like, const Entry& entry) {
+  X out(like.rows(), like.cols());
+  for (Eigen::Index j = 0; j < out.cols(); ++j) {
+    for (Eigen::Index i = 0; i < out.rows(); ++i) out(i, j) = entry(i, j);
+  }
+  return out;
+}
+
+template <class X>
+void checkElementwiseOperations() {
+  using Dense = MatrixBackend<X>;
+  const X x = operand<X>(11), y = operand<X>(12), z = operand<X>(13), w = operand<X>(14);
+  const std::array<double, 4> coefficients{1.0, -1.0, 0.3, -2.5};
+  X out;
+  Dense::copy(x, out);
+  EXPECT_TRUE(sameBits(out, x));
+  Dense::setZero(out);
+  EXPECT_TRUE(sameBits(out, X(X::Zero(x.rows(), x.cols()))));
+  for (const double a : coefficients) {
+    Dense::scale(a, x, out);
+    EXPECT_TRUE(sameBits(out, entryByEntry(x, [&](auto i, auto j) { return a * x(i, j); })))
+        << "scale " << a;
+    out = y;
+    Dense::axpy(a, x, out);
+    EXPECT_TRUE(
+        sameBits(out, entryByEntry(x, [&](auto i, auto j) { return y(i, j) + a * x(i, j); })))
+        << "axpy " << a;
+    out = x;
+    Dense::divide(out, a);
+    EXPECT_TRUE(sameBits(out, entryByEntry(x, [&](auto i, auto j) { return x(i, j) / a; })))
+        << "divide " << a;
+    for (const double b : coefficients) {
+      Dense::sum(a, x, b, y, out);
+      EXPECT_TRUE(
+          sameBits(out, entryByEntry(x, [&](auto i, auto j) { return a * x(i, j) + b * y(i, j); })))
+          << "sum " << a << ", " << b;
+      out = w;
+      Dense::addSum(a, x, b, y, out);
+      EXPECT_TRUE(sameBits(
+          out,
+          entryByEntry(x, [&](auto i, auto j) { return w(i, j) + (a * x(i, j) + b * y(i, j)); })))
+          << "addSum " << a << ", " << b;
+      for (const double c : coefficients) {
+        Dense::sum(a, x, b, y, c, z, out);
+        EXPECT_TRUE(sameBits(
+            out, entryByEntry(
+                     x, [&](auto i, auto j) { return a * x(i, j) + b * y(i, j) + c * z(i, j); })))
+            << "sum " << a << ", " << b << ", " << c;
+      }
+    }
+  }
+  // Operands that are the result, as GMRES writes r ← b − r and the groups x ← a·x.
+  out = y;
+  Dense::sum(1.0, x, -1.0, out, out);
+  EXPECT_TRUE(sameBits(out, entryByEntry(x, [&](auto i, auto j) { return x(i, j) - y(i, j); })));
+  out = y;
+  Dense::scale(0.3, out, out);
+  EXPECT_TRUE(sameBits(out, entryByEntry(x, [&](auto i, auto j) { return 0.3 * y(i, j); })));
+  // The predictor's combination, added term by term in order.
+  const std::vector<const X*> terms{&x, &y, &z};
+  const Eigen::Vector3d c(0.7, -1.0, 1e-3);
+  out = w;
+  Dense::addCombination(
+      c, [&](int j) -> const X& { return *terms[std::size_t(j)]; }, 3, out);
+  EXPECT_TRUE(sameBits(out, entryByEntry(x, [&](auto i, auto j) {
+                         return ((w(i, j) + c(0) * x(i, j)) + c(1) * y(i, j)) + c(2) * z(i, j);
+                       })));
+}
+
+TEST(MatrixBackend, ElementwiseOperationsAreTheirFormulasEntryByEntryBitForBit) {
+  checkElementwiseOperations<Eigen::MatrixXcd>();
+  checkElementwiseOperations<Eigen::MatrixXd>();
+}
 
 TEST(MatrixBackend, OneNormIsTheLargestColumnSumOfModuliAtEveryScale) {
   std::srand(7);

@@ -178,6 +178,24 @@ TEST(ParallelPasses, AssignmentsAreEigensBitForBit) {
   EXPECT_TRUE(added == Matrix(y + 0.3 * x));
 }
 
+TEST(ParallelPasses, TheBackendsElementwiseOperationsAreTheSameBitsOnEveryThreadCount) {
+  std::srand(6);
+  const Matrix x = Matrix::Random(150, 171), y = Matrix::Random(150, 171),
+               z = Matrix::Random(150, 171);
+  sameOnEveryThreadCount([&] {
+    Matrix out;
+    B::sum(0.3, x, -1.0, y, 2.5, z, out);
+    return out;
+  });
+  sameOnEveryThreadCount([&] {
+    Matrix out = z;
+    const Eigen::Vector2d c(0.3, -0.7);
+    B::addCombination(
+        c, [&](int j) -> const Matrix& { return j == 0 ? x : y; }, 2, out);
+    return out;
+  });
+}
+
 // The reductions split by columns: the 1-norm against a loop with std::abs, the zero test.
 TEST(ParallelPasses, OneNormAndZeroTestAgreeWithLoopsOnEveryThreadCount) {
   std::srand(8);

@@ -265,7 +265,7 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
     // The step from a copy, so that a failed or rejected step keeps the state before it. Its
     // decisions use values reduced alike on every rank, so every rank decides alike.
     const double h = std::min(control.h(), s.relax.t_end - at.t);
-    B::entries(trial) = B::entries(W);
+    B::copy(W, trial);
     const StepAttempt attempt = attemptStep(
         control, adaptive, at.k, at.t, h, rate, at.energy,
         [&] {

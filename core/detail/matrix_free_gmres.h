@@ -48,11 +48,11 @@ class MatrixFreeGmres {
       X& r = basis_[0];
       apply(x, r);
       ++result.iterations;
-      B::entries(r) = B::entries(b) - B::entries(r);
+      B::sum(1.0, b, -1.0, r, r);
       const double beta = B::frobeniusNorm(r);
       result.residual = beta;
       if (beta <= tolerance || beta == 0.0 || result.iterations >= max_iterations) return result;
-      B::entries(r) /= beta;
+      B::divide(r, beta);
       g_.setZero();
       g_(0) = beta;
       int k = 0;
@@ -64,11 +64,11 @@ class MatrixFreeGmres {
           const X& v = basis_[static_cast<std::size_t>(i)];
           const double hik = B::innerProduct(v, w);
           hessenberg_(i, k) = hik;
-          B::entries(w) -= hik * B::entries(v);
+          B::axpy(-hik, v, w);
         }
         const double norm = B::frobeniusNorm(w);
         hessenberg_(k + 1, k) = norm;
-        if (norm > 0.0) B::entries(w) /= norm;
+        if (norm > 0.0) B::divide(w, norm);
         for (int i = 0; i < k; ++i) rotate(i, hessenberg_(i, k), hessenberg_(i + 1, k));
         const double a = hessenberg_(k, k), c = hessenberg_(k + 1, k);
         const double rho = std::hypot(a, c);
@@ -90,8 +90,7 @@ class MatrixFreeGmres {
         for (int j = i + 1; j < k; ++j) s -= hessenberg_(i, j) * y_(j);
         y_(i) = s / hessenberg_(i, i);
       }
-      for (int i = 0; i < k; ++i)
-        B::entries(x) += y_(i) * B::entries(basis_[static_cast<std::size_t>(i)]);
+      for (int i = 0; i < k; ++i) B::axpy(y_(i), basis_[static_cast<std::size_t>(i)], x);
       if (result.residual <= tolerance || result.iterations >= max_iterations) return result;
     }
   }
