@@ -110,7 +110,7 @@ class CorrectionPredictor {
   }
 
  private:
-  using Scalar = typename Matrix::Scalar;
+  using Scalar = typename B::Scalar;
   static constexpr bool kComplex = Eigen::NumTraits<Scalar>::IsComplex;
   static constexpr int kRelations = 3;  // recurrences fitted at once (fit())
   static constexpr int kSketches = kOrder + kRelations;

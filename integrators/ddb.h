@@ -7,16 +7,25 @@
 
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
-#include <ddb/groups/cayley.h>
 #include <ddb/integrators/legendre_method.h>
-#include <ddb/integrators/matrix_cayley_transport.h>
-#include <ddb/integrators/matrix_exponential_transport.h>
+#include <ddb/integrators/matrix_retraction.h>
 
 #include <memory>
 #include <string>
-#include <type_traits>
 
 namespace ddb {
+
+/// The DDB update of R on matrix groups (MatrixRetraction<R>::Transport), and an empty type on
+/// the other groups, whose retractions need no matrix step.
+template <class R, bool kMatrix = isDynamicGroup<typename R::Group>>
+struct MatrixTransportOf {
+  struct type {};
+};
+template <class R>
+struct MatrixTransportOf<R, true> {
+  using type =
+      typename MatrixRetraction<R>::template Transport<LiePoissonSystem<typename R::Group>>;
+};
 
 /// Matrix groups: DDB's step (i) and (ii) in place, with the solver's certified frozen
 /// solution and the preallocated transport (no allocation once the size is known). Any
@@ -64,10 +73,7 @@ class Ddb : public LegendreMethod<R> {
   }
 
  private:
-  struct NoTransport {};
-  using MatrixTransport = std::conditional_t<std::is_same_v<R, Cayley<G>>, MatrixCayleyTransport<G>,
-                                             MatrixExponentialTransport<R>>;
-  std::conditional_t<isDynamicGroup<G>, MatrixTransport, NoTransport> transport_;
+  typename MatrixTransportOf<R>::type transport_;
 };
 
 }  // namespace ddb

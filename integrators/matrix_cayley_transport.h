@@ -62,7 +62,7 @@ class MatrixCayleyTransport {
   }
 
   Dual product_, commutator_, half_;
-  MatrixConjugation<Cayley<G>, Dual> conjugation_;
+  MatrixCayleyConjugation<G, Dual> conjugation_;
 };
 
 }  // namespace ddb

@@ -1,4 +1,4 @@
-// MatrixConjugation<R>: μ ← Ad*_{τ(x)} μ = τ(x)ᴴ μ τ(x) on a matrix group (SO(N), SU(N)),
+// The conjugations μ ← Ad*_{τ(x)} μ = τ(x)ᴴ μ τ(x) on a matrix group (SO(N), SU(N)),
 // in place and as an increment of μ (docs/conventions.md §2, "Matrix algebras"):
 // prepare(x) once, then apply(μ) to any number of momenta. Conjugating by a formed τ(x)
 // puts the same rounding of τ(x) into every step of a steady flow and the spectrum drifts
@@ -10,34 +10,25 @@
 //     μ + V [(e^{−iδ} − 1) ∘ Vᴴ μ V] Vᴴ                      (a decomposition, four products).
 // Workspaces are allocated when a size first appears, then reused. The Cayley conjugation
 // is written against the matrix backend (core/matrix_backend.h): Dual may be a distributed
-// matrix.
+// matrix. Which one a retraction uses is MatrixRetraction<R>::Conjugation
+// (matrix_retraction.h).
 #pragma once
 
 #include <ddb/core/errors.h>
 #include <ddb/core/matrix_backend.h>
-#include <ddb/groups/cayley.h>
-#include <ddb/groups/exponential.h>
 #include <ddb/groups/skew_hermitian_eigenbasis.h>
 
 #include <Eigen/Core>
 #include <cmath>
-#include <type_traits>
 
 namespace ddb {
 
-template <class R, class Dual = typename R::Group::template Dual<double>,
-          bool kExponential = std::is_base_of_v<Exponential<typename R::Group>, R>>
-class MatrixConjugation;
-
 /// The Cayley map.
-template <class R, class Dual>
-class MatrixConjugation<R, Dual, false> {
+template <class G, class Dual = typename G::template Dual<double>>
+class MatrixCayleyConjugation {
   using B = MatrixBackend<Dual>;
 
  public:
-  using G = typename R::Group;
-  static_assert(std::is_same_v<R, Cayley<G>>, "a matrix conjugation for Cayley or exp");
-
   /// For τ(x) = cay(x): b = x/2 and the LU factors of I + b.
   void prepare(const Dual& x) {
     allocate(x);
@@ -87,13 +78,11 @@ class MatrixConjugation<R, Dual, false> {
   typename B::Lu lu_;
 };
 
-/// The exponential (closed form or truncated dexp⁻¹ alike: τ is exp).
-template <class R, class Dual>
-class MatrixConjugation<R, Dual, true> {
+/// The exponential (closed form or truncated dexp⁻¹ alike: τ is exp), on dense matrices.
+template <class G>
+class MatrixExponentialConjugation {
  public:
-  using G = typename R::Group;
-  static_assert(std::is_same_v<Dual, typename G::template Dual<double>>,
-                "the exponential conjugates dense matrices");
+  using Dual = typename G::template Dual<double>;
 
   /// x's eigenbasis.
   void prepare(const Dual& x) {

@@ -32,7 +32,7 @@ class MatrixExponentialTransport {
 
  private:
   Dual product_, commutator_, phi_;
-  MatrixConjugation<R> conjugation_;
+  MatrixExponentialConjugation<G> conjugation_;
 };
 
 }  // namespace ddb

@@ -14,12 +14,11 @@
 // The solver is written against the matrix backend (core/matrix_backend.h) and takes the
 // system as a type: a LiePoissonSystem on dense matrices, or a system on distributed ones
 // (distributed/distributed_zeitlin_fluid.h), which runs this same algorithm over MPI ranks
-// (docs/distributed.md, "One step formula"). Ceres and the exponential are dense only.
+// (docs/distributed.md, "One step formula"). The exponential is dense only.
 //
-// Ceres (ceres::Problem, dense QR, the Jacobian assembled from the same exact
-// Jacobian–vector products, one per coordinate) solves the same equation in real
-// coordinates of u(N) when asked, for small N only (at most kMaxCeresDimension unknowns):
-// an independent check of the matrix-free iterations.
+// A solver from outside (setExternalSolver) may solve DDB's Cayley equation instead, through
+// residualInto and jacobianTimes: Ceres does, as an independent check of the matrix-free
+// iterations (matrix_legendre_ceres.h, which this header does not include).
 //
 // Convergence: an error bound of the accepted fixed-point iterate below
 // relative_tolerance·‖target‖, with ρ the measured rate and the update equal to the
@@ -29,7 +28,6 @@
 // keeps every state before it.
 #pragma once
 
-#include <ceres/ceres.h>
 #include <ddb/core/binary_record.h>
 #include <ddb/core/detail/bernoulli.h>
 #include <ddb/core/detail/matrix_free_gmres.h>
@@ -46,10 +44,12 @@
 #include <ddb/integrators/injectivity_guard.h>
 #include <ddb/integrators/legendre_equation.h>
 #include <ddb/integrators/legendre_stats.h>
+#include <ddb/integrators/matrix_retraction.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 #include <type_traits>
@@ -58,8 +58,9 @@
 namespace ddb {
 
 /// How the matrix-free solver proceeds: kAuto is the fixed point with Newton–Krylov as
-/// the fallback; the others force one path (for tests and comparisons).
-enum class MatrixLegendreStrategy { kAuto, kFixedPoint, kNewtonKrylov, kCeres };
+/// the fallback; the others force one path (for tests and comparisons). kExternal is set by
+/// setExternalSolver.
+enum class MatrixLegendreStrategy { kAuto, kFixedPoint, kNewtonKrylov, kExternal };
 
 template <class R, class System = LiePoissonSystem<typename R::Group>>
 class MatrixLegendreSolver {
@@ -69,15 +70,16 @@ class MatrixLegendreSolver {
   using Dual = typename System::Dual;
   using B = MatrixBackend<Dual>;
   static_assert(isDynamicGroup<G>, "MatrixLegendreSolver is the solver of matrix groups");
-  static constexpr bool kCayley = std::is_same_v<R, Cayley<G>>;
-  static constexpr bool kExactExponential = std::is_same_v<R, Exponential<G>>;
-  static constexpr bool kTruncatedExponential = std::is_same_v<R, TruncatedExponential<G>>;
-  static_assert(
-      kCayley || kExactExponential || kTruncatedExponential,
-      "the matrix-free Legendre solver implements the Cayley and exponential retractions");
-  /// Dense matrices (Ceres and the exponential need them).
+  /// How the retraction's fixed point is swept (matrix_retraction.h): in product form, with
+  /// a certified frozen solution and Newton–Krylov (Cayley); in ξ's eigenbasis (exp); or by
+  /// the truncated series.
+  static constexpr MatrixSweep kSweep = MatrixRetraction<R>::kSweep;
+  static constexpr bool kProductForm = kSweep == MatrixSweep::kProductForm;
+  static constexpr bool kEigenbasisSweep = kSweep == MatrixSweep::kEigenbasis;
+  /// Dense matrices (the eigendecompositions need them).
   static constexpr bool kDense = std::is_same_v<Dual, typename G::template Dual<double>>;
-  static_assert(kDense || kCayley, "distributed matrices are solved with the Cayley map");
+  static_assert(kDense || MatrixRetraction<R>::kAnyBackend,
+                "this retraction's matrix step needs dense matrices");
 
   /// A fixed-point sweep that shrinks the update by less than this hands over to Newton.
   static constexpr double kSlowContraction = 0.5;
@@ -87,7 +89,6 @@ class MatrixLegendreSolver {
   static constexpr int kMaxForcedFixedPoint = 2000;
   /// Mixed sweeps of a moving target without a new smallest update that end the solve.
   static constexpr int kStallSweeps = 10;
-  static constexpr Eigen::Index kMaxCeresDimension = 64;
 
   MatrixLegendreSolver(const System& system, const R& retraction, LegendreForm form,
                        SolverOptions options)
@@ -131,10 +132,35 @@ class MatrixLegendreSolver {
   /// another size is corrupt.
   void loadWarmStart(BinaryRecordReader& in, const Dual& like) { readWarmStart(in, &like); }
   void setStrategy(MatrixLegendreStrategy strategy) {
-    if (!kDense && strategy == MatrixLegendreStrategy::kCeres) {
-      throw InvalidArgument("strategy = ceres is invalid: Ceres solves dense matrices only");
+    if (strategy == MatrixLegendreStrategy::kExternal && !external_) {
+      throw InvalidArgument("strategy = external is invalid: set a solver by setExternalSolver");
     }
     strategy_ = strategy;
+  }
+
+  /// A solver of DDB's Cayley equation r(p) = (I + a(p)) p (I − a(p)) − W = 0 from outside the
+  /// matrix-free iterations, for cross-checks (Ceres: matrix_legendre_ceres.h). Called with
+  /// this solver, W and h, it starts from iterate(), may call residualInto and jacobianTimes,
+  /// leaves its solution in iterate() and returns the iterations it took; the solve then
+  /// checks the residual as Newton's. Sets the strategy kExternal.
+  using ExternalSolver = std::function<int(MatrixLegendreSolver& solver, const Dual& W, double h)>;
+  void setExternalSolver(ExternalSolver solver) {
+    external_ = std::move(solver);
+    strategy_ = MatrixLegendreStrategy::kExternal;
+  }
+  /// The iterate p of the solve in progress (an external solver's unknown).
+  Dual& iterate() { return p_; }
+  /// out = r(p) = (I + a) p (I − a) − W at p = iterate(), a = a(p) (Cayley).
+  void residualInto(const Dual& W, double h, Dual& out) {
+    static_assert(kProductForm, "the external solvers solve the Cayley equation");
+    updateVelocity(h);
+    G::cayleyFixedPoint(W, a_, p_, ap_, apa_, next_);
+    B::sum(1.0, p_, -1.0, next_, out);
+  }
+  /// out = Dr(p)[v] at the p of the last residualInto (v and out are the caller's).
+  void jacobianTimes(const Dual& v, double h, Dual& out) {
+    halfStepDerivative(v, h, delta_a_);
+    G::cayleyLinearised(a_, p_, v, delta_a_, t1_, t2_, out);
   }
 
   /// Solves (I + hξ(p)/2) p (I − hξ(p)/2) = target(ξ, p); returns ξ and sets p.
@@ -182,14 +208,14 @@ class MatrixLegendreSolver {
     const bool forced = strategy_ == MatrixLegendreStrategy::kFixedPoint;
     const bool fixed_point = strategy_ == MatrixLegendreStrategy::kAuto || forced;
     // Without a Newton fallback (the exponential) the sweeps go on while they contract.
-    const int budget = (forced || !kFixed || !kCayley) ? kMaxForcedFixedPoint : kMaxFixedPoint;
+    const int budget = (forced || !kFixed || !kProductForm) ? kMaxForcedFixedPoint : kMaxFixedPoint;
     int extra = 0;  // sweeps past the tolerance, for a certified frozen solution
     anderson_.reset();
     double smallest = INFINITY;  // the smallest update of a moving target's sweeps, and when
     int smallest_at = 0;
     for (int k = 0; fixed_point && k < budget; ++k) {
       updateVelocity(h);
-      if constexpr (kCayley) B::multiply(a_, p_, ap_);  // before the target, which may use it
+      if constexpr (kProductForm) B::multiply(a_, p_, ap_);  // before the target, which may use it
       const Dual& W = targetValue();
       sweep(W, h);
       const double update = B::frobeniusDistance(next_, p_);
@@ -214,12 +240,14 @@ class MatrixLegendreSolver {
         // whose first check accepts a residual within the tolerance; the exponential, which
         // has no Newton step, applies that check here (its error is then the update, p's
         // residual).
-        if ((contracting || !kCayley) && error <= tolerance) {
+        if ((contracting || !kProductForm) && error <= tolerance) {
           converged = true;
-          if (!kCayley || certifyFrozenSolution(W, update, scale) || extra++ == kMaxExtraSweeps) {
+          if (!kProductForm || certifyFrozenSolution(W, update, scale) ||
+              extra++ == kMaxExtraSweeps) {
             break;
           }
-        } else if (!forced && k >= 2 && update > (kCayley ? kSlowContraction : 1.0) * previous) {
+        } else if (!forced && k >= 2 &&
+                   update > (kProductForm ? kSlowContraction : 1.0) * previous) {
           break;  // contracting too slowly: Newton–Krylov takes over (exp: not contracting)
         }
       } else {
@@ -231,7 +259,7 @@ class MatrixLegendreSolver {
         stats_.residual = update;
         if (update <= tolerance) {
           converged = true;
-          if constexpr (kCayley) certifyFrozenSolution(target_, update, scale);
+          if constexpr (kProductForm) certifyFrozenSolution(target_, update, scale);
           break;
         }
         // Mixed residuals need not fall every sweep, but kStallSweeps without a new smallest
@@ -251,7 +279,7 @@ class MatrixLegendreSolver {
       previous = update;
       p_.swap(next_);
     }
-    if constexpr (!kCayley) {
+    if constexpr (!kProductForm) {
       if (strategy_ != MatrixLegendreStrategy::kAuto && !forced) {
         throw InvalidArgument(std::string("strategy is invalid: the ") + R::kName +
                               " retraction is solved by the fixed point only");
@@ -259,13 +287,11 @@ class MatrixLegendreSolver {
     } else if constexpr (kFixed) {
       const bool newton = strategy_ == MatrixLegendreStrategy::kNewtonKrylov ||
                           (strategy_ == MatrixLegendreStrategy::kAuto && !converged);
-      const bool ceres = strategy_ == MatrixLegendreStrategy::kCeres;
+      const bool external = strategy_ == MatrixLegendreStrategy::kExternal;
       if (newton) converged = newtonKrylov(target.momentum, h, tolerance);
-      if constexpr (kDense) {
-        if (ceres) converged = ceresSolve(target.momentum, h, tolerance);
-      }
+      if (external) converged = externalSolve(target.momentum, h, tolerance);
       // Both end on a sweep at their solution p: a, a p and the next iterate are at hand.
-      if (converged && (newton || ceres)) {
+      if (converged && (newton || external)) {
         certifyFrozenSolution(target.momentum, B::frobeniusDistance(next_, p_), scale);
       }
     } else if (strategy_ != MatrixLegendreStrategy::kAuto && !forced) {
@@ -282,7 +308,7 @@ class MatrixLegendreSolver {
                              (stats_.newton > 0 ? "Newton" : "fixed point") + ")",
                          -1, t, h, stats_.residual, tolerance);
     }
-    if constexpr (!kCayley) checkInjectivity(t, h, kExactExponential);
+    if constexpr (!kProductForm) checkInjectivity(t, h, kEigenbasisSweep);
     // The most accurate solution at hand: p̃ when certified (it solves the frozen-a equation
     // to rounding), else the next iterate.
     predictor.remember(!kFixed ? p_ : frozen_exact_ ? frozen_ : next_, near);
@@ -397,9 +423,9 @@ class MatrixLegendreSolver {
   //   exp, series cut after ad^order (the paper's ddb-exp): F(p) = p − r(p) with
   //     r(p) = Σ_{j≤order} B_j/j! (ad*_{hξ})^j p − W, ad*_x μ = [μ, x] = μx − (μx)ᴴ.
   void sweep(const Dual& W, double h) {
-    if constexpr (kCayley) {
+    if constexpr (kProductForm) {
       G::cayleyFixedPointGiven(W, a_, ap_, apa_, next_);
-    } else if constexpr (kExactExponential) {
+    } else if constexpr (kEigenbasisSweep) {
       if (!eigenbasis_.compute(xi_)) {
         next_.setConstant(NAN);  // ξ not finite: the update shows it
         return;
@@ -473,112 +499,11 @@ class MatrixLegendreSolver {
     return stats_.residual <= tolerance;
   }
 
-  // Real coordinates of u(N) (so(N)): the imaginary diagonal and the upper triangle.
-  static constexpr bool kComplex = Eigen::NumTraits<typename Dual::Scalar>::IsComplex;
-  static Eigen::Index coordinateCount(Eigen::Index n) { return kComplex ? n * n : n * (n - 1) / 2; }
-  static void toCoordinates(const Dual& x, double* v) {
-    for (Eigen::Index j = 0; j < x.cols(); ++j) {
-      for (Eigen::Index i = 0; i <= j; ++i) {
-        if constexpr (kComplex) {
-          if (i == j) {
-            *v++ = x(i, i).imag();
-          } else {
-            *v++ = x(i, j).real();
-            *v++ = x(i, j).imag();
-          }
-        } else if (i < j) {
-          *v++ = x(i, j);
-        }
-      }
-    }
-  }
-  static void fromCoordinates(const double* v, Dual& x) {
-    for (Eigen::Index j = 0; j < x.cols(); ++j) {
-      for (Eigen::Index i = 0; i <= j; ++i) {
-        if constexpr (kComplex) {
-          if (i == j) {
-            x(i, i) = typename Dual::Scalar(0.0, *v++);
-          } else {
-            const double re = *v++;
-            x(i, j) = typename Dual::Scalar(re, *v++);
-            x(j, i) = -std::conj(x(i, j));
-          }
-        } else if (i < j) {
-          x(i, j) = *v++;
-          x(j, i) = -x(i, j);
-        } else {
-          x(i, i) = 0.0;
-        }
-      }
-    }
-  }
-
-  // r(p) = (I + a)p(I − a) − W in coordinates, with the Jacobian column by column.
-  class CeresResidual : public ceres::CostFunction {
-   public:
-    CeresResidual(MatrixLegendreSolver& solver, const Dual& W, double h, int n)
-        : solver_(solver), W_(W), h_(h) {
-      set_num_residuals(n);
-      mutable_parameter_block_sizes()->push_back(n);
-    }
-    bool Evaluate(double const* const* parameters, double* residuals,
-                  double** jacobians) const override {
-      MatrixLegendreSolver& s = solver_;
-      const int n = num_residuals();
-      fromCoordinates(parameters[0], s.p_);
-      s.updateVelocity(h_);
-      G::cayleyFixedPoint(W_, s.a_, s.p_, s.ap_, s.apa_, s.next_);
-      s.residual_ = s.p_ - s.next_;
-      toCoordinates(s.residual_, residuals);
-      if (jacobians != nullptr && jacobians[0] != nullptr) {
-        std::vector<double> unit(static_cast<std::size_t>(n), 0.0), column(unit);
-        for (int k = 0; k < n; ++k) {
-          unit[static_cast<std::size_t>(k)] = 1.0;
-          fromCoordinates(unit.data(), s.delta_);
-          unit[static_cast<std::size_t>(k)] = 0.0;
-          s.halfStepDerivative(s.delta_, h_, s.delta_a_);
-          G::cayleyLinearised(s.a_, s.p_, s.delta_, s.delta_a_, s.t1_, s.t2_, s.next_);
-          toCoordinates(s.next_, column.data());
-          for (int i = 0; i < n; ++i) jacobians[0][i * n + k] = column[static_cast<std::size_t>(i)];
-        }
-      }
-      return true;
-    }
-
-   private:
-    MatrixLegendreSolver& solver_;
-    const Dual& W_;
-    double h_;
-  };
-
-  bool ceresSolve(const Dual& W, double h, double tolerance) {
-    const Eigen::Index n = coordinateCount(W.rows());
-    if (n > kMaxCeresDimension) {
-      throwInvalid("strategy", "ceres",
-                   "solves at most " + std::to_string(kMaxCeresDimension) + " unknowns, not " +
-                       std::to_string(n));
-    }
-    std::vector<double> x(static_cast<std::size_t>(n));
-    toCoordinates(p_, x.data());
-    ceres::Problem::Options problem_options;
-    problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-    ceres::Problem problem(problem_options);
-    CeresResidual residual(*this, W, h, static_cast<int>(n));
-    problem.AddResidualBlock(&residual, nullptr, x.data());
-    ceres::Solver::Options options;
-    options.linear_solver_type = ceres::DENSE_QR;
-    options.max_num_iterations = 50;
-    options.function_tolerance = 0.0;
-    options.gradient_tolerance = 0.0;
-    options.parameter_tolerance = 1e-16;
-    options.logging_type = ceres::SILENT;
-    ceres::Solver::Summary summary;
-    ceres::Solve(options, &problem, &summary);
-    stats_.newton += static_cast<int>(summary.iterations.size());
-    fromCoordinates(x.data(), p_);
+  bool externalSolve(const Dual& W, double h, double tolerance) {
+    stats_.newton += external_(*this, W, h);
     updateVelocity(h);
     G::cayleyFixedPoint(W, a_, p_, ap_, apa_, next_);
-    stats_.residual = (p_ - next_).norm();
+    stats_.residual = B::frobeniusDistance(p_, next_);
     return stats_.residual <= tolerance;
   }
 
@@ -595,6 +520,7 @@ class MatrixLegendreSolver {
   double rate_ = NAN;  // the contraction rate last measured
   bool frozen_exact_ = false;
   MatrixLegendreStrategy strategy_ = MatrixLegendreStrategy::kAuto;
+  ExternalSolver external_;
   LegendreStats stats_;
   Dual p_, next_, xi_, a_, ap_, apa_, frozen_, residual_, delta_, delta_a_, t1_, t2_, target_;
   Dual argument_, direction_;  // the algebra parts of p and of a Newton direction

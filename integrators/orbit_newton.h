@@ -346,7 +346,7 @@ class OrbitNewton {
   Dual product_, moved_, dxi_, added_;  // matrix groups' workspaces
   struct Unused {};
   std::conditional_t<isDynamicGroup<G>, OrbitPreconditioner<Dual>, Unused> preconditioner_;
-  std::conditional_t<isDynamicGroup<G>, MatrixConjugation<Cayley<G>>, Unused> conjugation_;
+  std::conditional_t<isDynamicGroup<G>, MatrixCayleyConjugation<G>, Unused> conjugation_;
 };
 
 }  // namespace ddb

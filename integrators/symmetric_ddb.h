@@ -21,7 +21,7 @@
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/integrators/legendre_method.h>
-#include <ddb/integrators/matrix_conjugation.h>
+#include <ddb/integrators/matrix_retraction.h>
 
 #include <memory>
 #include <string>
@@ -88,15 +88,7 @@ class SymmetricDdb : public LegendreMethod<R> {
       auto& solver = this->legendre_;
       solver.solveInPlace(MatrixTarget{*this, mu, h}, mu, t, h);
       mu = solver.target();
-      if constexpr (std::is_same_v<R, Cayley<G>>) {
-        if (const Dual* frozen = solver.frozenSolution()) {
-          matrix_.flow.applyWithSolution(solver.halfStep(), *frozen, mu);
-        } else {
-          applyFlow(solver.velocity(), h, mu);
-        }
-      } else if constexpr (std::is_same_v<R, Exponential<G>>) {
-        matrix_.flow.applyWith(solver.eigenbasis(), h, mu);
-      } else {
+      if (!MatrixRetraction<R>::applySolvedFlow(solver, h, matrix_.flow, mu)) {
         applyFlow(solver.velocity(), h, mu);
       }
       matrix_.kick.apply(mu);
@@ -121,7 +113,8 @@ class SymmetricDdb : public LegendreMethod<R> {
     double h;
     void evaluateInto(const Dual& xi, const Dual& p, Dual& out) const {
       MatrixWorkspace& w = method.matrix_;
-      if constexpr (std::is_same_v<R, Cayley<G>>) {  // the solver's a p of this p: no product
+      if constexpr (MatrixRetraction<R>::kSweep == MatrixSweep::kProductForm) {
+        // The solver's a p of this p: no product.
         method.system_->halfStepDissipationInto(method.legendre_.halfStepTimesSolution(),
                                                 w.commutator, w.half);
       } else {

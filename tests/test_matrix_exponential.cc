@@ -5,7 +5,7 @@
 // methods on the Manakov body at N = 3 against the rigid body on SO(3), whose closed forms
 // are Rodrigues' (groups/so3.h); the injectivity limit.
 #include <ddb/groups/skew_hermitian_eigenbasis.h>
-#include <ddb/integrators/matrix_conjugation.h>
+#include <ddb/integrators/matrix_retraction.h>
 #include <ddb/integrators/method_table.h>
 #include <ddb/systems/manakov_body.h>
 #include <ddb/systems/rigid_body.h>
