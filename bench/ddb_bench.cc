@@ -6,7 +6,7 @@
 // step (tools/malloc_counter.h). The fluid's benchmarks are in zeitlin_bench.cc. Compare methods by
 // ratios of times within one run (scripts/bench_ratios.py).
 #include <benchmark/benchmark.h>
-#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/heavy_top.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>

@@ -5,7 +5,7 @@
 //
 // Usage: ddb-python-peer rigid-body|zeitlin METHOD STEPS H REPEATS [N]
 // The rigid body is Scenario A's, the fluid zeitlin(N, 0.5) from zeitlinVorticity random seed 1.
-#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>

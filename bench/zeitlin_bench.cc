@@ -13,9 +13,9 @@
 #include "zeitlin_bench.h"
 
 #include <benchmark/benchmark.h>
-#include <ddb/integrators/ddb.h>
-#include <ddb/integrators/method_table.h>
-#include <ddb/integrators/symmetric_ddb.h>
+#include <ddb/integrators/methods/ddb.h>
+#include <ddb/integrators/methods/method_table.h>
+#include <ddb/integrators/methods/symmetric_ddb.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <ddb/systems/zeitlin_step_size.h>

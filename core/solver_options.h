@@ -9,9 +9,9 @@ struct SolverOptions {
   /// Relative residual tolerance (1e-14: round-off level for O(1) data).
   double relative_tolerance = 1e-14;
   int max_iterations = 30;
-  /// Fixed-point sweeps at most before Newton in a small Legendre solve (integrators/legendre.h);
-  /// 0: Newton from the extrapolated guess at once (always so when ∂H/∂μ is itself a solve,
-  /// Hamiltonian::gradientIsASolve). Negative counts as 0.
+  /// Fixed-point sweeps at most before Newton in a small Legendre solve
+  /// (integrators/solvers/legendre.h); 0: Newton from the extrapolated guess at once (always so
+  /// when ∂H/∂μ is itself a solve, Hamiltonian::gradientIsASolve). Negative counts as 0.
   int max_sweeps = 10;
 };
 

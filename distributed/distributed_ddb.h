@@ -1,4 +1,4 @@
-// DistributedDdb: the DDB Cayley step (integrators/ddb.h, paper Section 4.1) of Zeitlin's
+// DistributedDdb: the DDB Cayley step (integrators/methods/ddb.h, paper Section 4.1) of Zeitlin's
 // fluid on matrices distributed over MPI ranks. It holds the same solver
 // (MatrixLegendreSolver) and update (MatrixCayleyTransport) as the dense step, instantiated
 // with DistributedZeitlinFluid, and advances by the same function, advanceMatrixDdb: one
@@ -6,7 +6,7 @@
 #pragma once
 
 #include <ddb/distributed/distributed_zeitlin_fluid.h>
-#include <ddb/integrators/ddb.h>
+#include <ddb/integrators/methods/ddb.h>
 
 namespace ddb {
 

@@ -162,7 +162,7 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
     return out;
   }
   /// The spectral radius of ad_x, max_ab |θ_a − θ_b|: exp is one-to-one on ad-radii below
-  /// π, and dexp⁻¹_x has its poles at 2π (integrators/injectivity_guard.h).
+  /// π, and dexp⁻¹_x has its poles at 2π (integrators/solvers/injectivity_guard.h).
   template <class X>
   static double adRadius(const X& x) {
     return eigenbasisOf(x).adRadius();

@@ -2,8 +2,8 @@
 // C++ loop; every `every`-th state (and the last) written straight into the NumPy result.
 // Between steps the loop lets Python's signal handlers run (Ctrl-C ends it), and a Python
 // exception that ends it carries the states kept so far, as a SolveFailure does.
-#include <ddb/integrators/method_table.h>
-#include <ddb/integrators/run.h>
+#include <ddb/integrators/drivers/run.h>
+#include <ddb/integrators/methods/method_table.h>
 
 #include <chrono>
 #include <optional>

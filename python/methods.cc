@@ -1,5 +1,5 @@
-// ddb.methods(): the one method table (integrators/method_table.h) as Python dicts.
-#include <ddb/integrators/method_table.h>
+// ddb.methods(): the one method table (integrators/methods/method_table.h) as Python dicts.
+#include <ddb/integrators/methods/method_table.h>
 #include <pybind11/stl.h>
 
 #include <string>

@@ -2,7 +2,7 @@
 // the table that apply.
 #include "system.h"
 
-#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <pybind11/stl.h>
 
 #include <vector>

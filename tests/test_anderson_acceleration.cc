@@ -1,9 +1,9 @@
-// AndersonAcceleration (integrators/anderson_acceleration.h) on affine fixed points
+// AndersonAcceleration (integrators/solvers/anderson_acceleration.h) on affine fixed points
 // p = A p + c, whose solution (I − A)⁻¹c Eigen's LU gives independently. On an affine map
 // Anderson mixing of depth ≥ n is GMRES on I − A (Walker and Ni 2011), so it ends in at most
 // n + 1 mixed iterations on an n-dimensional space, where the plain iteration contracts at
 // A's spectral radius.
-#include <ddb/integrators/anderson_acceleration.h>
+#include <ddb/integrators/solvers/anderson_acceleration.h>
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>

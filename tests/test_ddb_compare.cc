@@ -3,8 +3,8 @@
 // against the library called directly, bad input (exit status 2, a message naming the
 // flag, nothing written), --help, --version, "custom" scenarios, --every, FAILED runs,
 // I/O errors (exit status 1 naming the file) and constant memory on long runs.
-#include <ddb/integrators/method_table.h>
-#include <ddb/integrators/relax.h>
+#include <ddb/integrators/drivers/relax.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/heavy_top.h>
 #include <ddb/systems/manakov_body.h>
 #include <ddb/systems/rigid_body.h>

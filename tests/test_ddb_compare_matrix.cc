@@ -4,8 +4,8 @@
 // library's makeMethod<SON/SUN> run directly here on the same problem; err_final and the
 // spectrum drift are recomputed here with Eigen's Hermitian eigensolver; bad inputs exit
 // 2 and write nothing.
-#include <ddb/integrators/method_table.h>
-#include <ddb/integrators/one_step_method.h>
+#include <ddb/integrators/methods/method_table.h>
+#include <ddb/integrators/methods/one_step_method.h>
 #include <ddb/systems/manakov_body.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>

@@ -10,8 +10,8 @@
 #include <ddb/distributed/distributed_ddb.h>
 #include <ddb/distributed/process_grid.h>
 #include <ddb/groups/sun.h>
-#include <ddb/integrators/ddb.h>
-#include <ddb/integrators/steady_state_probe.h>
+#include <ddb/integrators/drivers/steady_state_probe.h>
+#include <ddb/integrators/methods/ddb.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <gtest/gtest.h>

@@ -4,9 +4,9 @@
 // InvalidArgument from inside a step, or a run without bound.
 #include <ddb/core/errors.h>
 #include <ddb/groups/se3.h>
-#include <ddb/integrators/injectivity_guard.h>
-#include <ddb/integrators/method_table.h>
-#include <ddb/integrators/run.h>
+#include <ddb/integrators/drivers/run.h>
+#include <ddb/integrators/methods/method_table.h>
+#include <ddb/integrators/solvers/injectivity_guard.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>

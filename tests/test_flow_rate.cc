@@ -1,7 +1,7 @@
-// flowRate (integrators/flow_rate.h) against the same norm of a Jacobian taken by central
+// flowRate (integrators/drivers/flow_rate.h) against the same norm of a Jacobian taken by central
 // differences of the double vector field, which involves no Jets: the rigid body and the
 // heavy top at their defaults and at other points, and infinity where f is not finite.
-#include <ddb/integrators/flow_rate.h>
+#include <ddb/integrators/drivers/flow_rate.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // library called directly, the spectrum kept to round-off, the energy monotone in the
 // direction of alpha's sign, the --init-file round trip, and every bad input (exit
 // status 2, a message naming the flag, nothing written).
-#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>

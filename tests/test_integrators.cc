@@ -1,8 +1,8 @@
 // Integrators on the rigid body of Scenario A (docs/conventions.md §3): orders fitted against
 // the reference solver, exact Casimir preservation of DDB, agreement of its two
 // forms, the reference against itself, and a failed solve keeping the prefix.
-#include <ddb/integrators/method_table.h>
-#include <ddb/integrators/run.h>
+#include <ddb/integrators/drivers/run.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>
 #include <gmock/gmock.h>
@@ -57,7 +57,7 @@ TEST_P(OrderTest, FittedSlopeMatchesTheoreticalOrder) {
   }
   const OrderFit fit = fitOrder(c.hs, errors);
   ASSERT_GE(fit.points, 4) << "too few step sizes above the round-off plateau";
-  // The order the method table claims (integrators/method_table.h).
+  // The order the method table claims (integrators/methods/method_table.h).
   const MethodInfo& info = *findMethod(c.method);
   const double expected = c.alpha == 0.0 ? info.order_without_dissipation : info.order;
   EXPECT_NEAR(fit.slope, expected, 0.25) << c.method << " alpha " << c.alpha;

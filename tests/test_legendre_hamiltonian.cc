@@ -3,7 +3,7 @@
 // identities ∂l/∂ξ(∂H/∂μ(μ)) = μ and central differences of H and ∂H/∂μ.
 #include <ddb/core/autodiff.h>
 #include <ddb/core/legendre_hamiltonian.h>
-#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>
 #include <gmock/gmock.h>

@@ -1,4 +1,4 @@
-// The analytic Jacobian of the small Legendre equation (integrators/legendre_equation.h)
+// The analytic Jacobian of the small Legendre equation (integrators/solvers/legendre_equation.h)
 // and its parts, each against central differences and against Jets through the
 // scalar-generic formula it differentiates:
 //   ∂_x[(dτ^{-1}_x)* mu] of every fixed-size retraction, the SO(3) and SE(3) closed forms
@@ -7,8 +7,8 @@
 //   heavy top, the Kirchhoff body and a user system given by its Lagrangian alone.
 #include <ddb/core/autodiff.h>
 #include <ddb/core/legendre_hamiltonian.h>
-#include <ddb/integrators/legendre_equation.h>
-#include <ddb/integrators/symmetric_ddb.h>
+#include <ddb/integrators/methods/symmetric_ddb.h>
+#include <ddb/integrators/solvers/legendre_equation.h>
 #include <ddb/systems/paper_scenarios.h>
 
 #include "test_support.h"

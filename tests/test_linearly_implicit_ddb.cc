@@ -1,4 +1,4 @@
-// LinearlyImplicitDdb (integrators/linearly_implicit_ddb.h, docs/steady-states.md, "A
+// LinearlyImplicitDdb (integrators/methods/linearly_implicit_ddb.h, docs/steady-states.md, "A
 // dissipative factor that lowers the energy at any h"): the DDB step whose dissipative
 // factor is one line-searched Newton step of the minimizing movement. Independent of the
 // code: the energy from the closed forms (E = Re tr(WP)/(2N) with P = Δ⁻¹W by the fluid's
@@ -7,7 +7,7 @@
 // flow, to which it must agree to O(h²) per step (the global order is fitted against the
 // reference solver with every row of the method table, test_matrix_orders.cc and
 // test_integrators.cc).
-#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/heavy_top.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/zeitlin_fluid.h>

@@ -1,6 +1,6 @@
 // SO(N) and SU(N) against the SO3 group through explicit isomorphisms, and the SO(N)
 // generalised rigid body against the SO3 rigid body (docs/conventions.md §2).
-#include <ddb/integrators/ddb.h>
+#include <ddb/integrators/methods/ddb.h>
 #include <ddb/systems/manakov_body.h>
 #include <ddb/systems/rigid_body.h>
 #include <gtest/gtest.h>

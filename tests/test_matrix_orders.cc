@@ -3,7 +3,7 @@
 // t = 1 against the adaptive reference; least-squares log–log slope over five to eight step sizes,
 // the round-off plateau dropped (order_fit.h). The expected order is the table's own row:
 // `order` with dissipation, `order_without_dissipation` without.
-#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/manakov_body.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>

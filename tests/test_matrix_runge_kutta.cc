@@ -1,9 +1,9 @@
 // Lobatto IIIC on the matrix groups, its stage equations solved matrix-free
-// (integrators/matrix_free_runge_kutta.h, docs/conventions.md §2 and §4): fitted order 4
+// (integrators/methods/matrix_free_runge_kutta.h, docs/conventions.md §2 and §4): fitted order 4
 // against the adaptive reference on the Manakov body and on Zeitlin's fluid, the fixed-size
 // Lobatto IIIC through so(3) ≅ R³, Newton–Krylov's Jacobian against central differences, and
 // a failed solve reported like the others.
-#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/manakov_body.h>
 #include <ddb/systems/rigid_body.h>
 #include <ddb/systems/zeitlin_fluid.h>

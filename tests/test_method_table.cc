@@ -1,10 +1,10 @@
-// The method table (integrators/method_table.h) against what its methods do: a row builds
+// The method table (integrators/methods/method_table.h) against what its methods do: a row builds
 // and runs on every group of the families it names, a row said to keep the Casimirs keeps
 // them to round-off there and a fixed-step row said not to drifts off the orbit,
 // compositions compose a symmetric method, and the descriptions say what the fields say.
 // The orders the table claims are fitted in test_integrators.cc and test_symmetric.cc.
-#include <ddb/integrators/method_table.h>
-#include <ddb/integrators/run.h>
+#include <ddb/integrators/drivers/run.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/manakov_body.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/zeitlin_fluid.h>

@@ -7,7 +7,7 @@
 // dense step's bits, for Zeitlin's fluid whose Poisson solve is the test's kernel.
 #include <ddb/core/matrix_backend.h>
 #include <ddb/groups/sun.h>
-#include <ddb/integrators/ddb.h>
+#include <ddb/integrators/methods/ddb.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <gtest/gtest.h>

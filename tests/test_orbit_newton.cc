@@ -5,7 +5,7 @@
 // spectra by Eigen's eigensolver; Newton's superlinear convergence (a wrong Hessian product
 // converges linearly); every accepted state's energy moved the flow's way.
 #include <ddb/core/legendre_hamiltonian.h>
-#include <ddb/integrators/relax.h>
+#include <ddb/integrators/drivers/relax.h>
 #include <ddb/systems/manakov_body.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>

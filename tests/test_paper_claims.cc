@@ -2,7 +2,7 @@
 // A: DDB keeps the Casimir to round-off while RK4 and Lobatto IIIC drift;
 // B: DDB ends closer to the limit point and to the reference than RK4;
 // C: DDB ends on the sphere |M| = |M0| to round-off and converges to the great circle.
-#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>
 

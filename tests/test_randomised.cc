@@ -5,7 +5,7 @@
 // subclasses); never a NaN, an abort or an untyped exception. The outcome counts are
 // printed (and recorded as test properties) so that their distribution can be reported.
 #include <ddb/core/errors.h>
-#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/heavy_top.h>
 #include <ddb/systems/kirchhoff.h>
 #include <ddb/systems/manakov_body.h>

@@ -1,10 +1,10 @@
-// relax() and its step control (integrators/relax.h, docs/steady-states.md): the reason a
+// relax() and its step control (integrators/drivers/relax.h, docs/steady-states.md): the reason a
 // run stops, the energy and Casimirs of every accepted state, the steady state reached.
 // Independent of the code: the residual from the closed forms (Ω = 𝕀⁻¹M on the rigid body,
 // P = Δ⁻¹W on the fluid), |M|² and the spectrum by Eigen's eigensolver (G::casimirs) as
 // the Casimirs, the limit point ±|M₀| e₂ of Scenario B in closed form.
-#include <ddb/integrators/method_table.h>
-#include <ddb/integrators/relax.h>
+#include <ddb/integrators/drivers/relax.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>

@@ -1,7 +1,7 @@
 // The heavy top and the Kirchhoff body on se(3)*: vector fields against the
 // textbook equations, the double-bracket energy rate and Casimirs by central
 // differences, and DDB (Hamiltonian form for the heavy top) against the reference.
-#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/heavy_top.h>
 #include <ddb/systems/kirchhoff.h>
 #include <ddb/systems/paper_scenarios.h>

@@ -5,7 +5,7 @@
 // N = 16). Applied as the increment M − 2[b, q] (docs/conventions.md §2) the drift stays at
 // random-walk size, about √K·ε; these bounds sit well above that and well below the linear
 // drift. Independent of the code: the spectrum by Eigen's eigensolver (G::casimirs).
-#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/manakov_body.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>

@@ -9,7 +9,7 @@
 #include <ddb/core/matrix_backend.h>
 #include <ddb/core/parallel_passes.h>
 #include <ddb/core/thread_pool.h>
-#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/hoppe_yau_laplacian.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>

@@ -3,8 +3,8 @@
 // the Hamiltonian an element of the algebra and projects the ξ it returns, so how a user
 // writes H off the algebra does not change a trajectory, and the default hessianTimes
 // serves Newton–Krylov.
-#include <ddb/integrators/ddb.h>
-#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/methods/ddb.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <gtest/gtest.h>
 

@@ -5,8 +5,8 @@
 // that is not loaded must not (so the check can fail: the warm start changes the rounding
 // of a Legendre solve). A corrupted or truncated record is refused.
 #include <ddb/core/binary_record.h>
-#include <ddb/integrators/method_table.h>
-#include <ddb/integrators/relax.h>
+#include <ddb/integrators/drivers/relax.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>

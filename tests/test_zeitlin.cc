@@ -3,10 +3,10 @@
 // defining orthonormality of T_lm, central differences along the flow, the isospectral
 // midpoint rule written here from its own formula, the adaptive reference solver.
 #include <ddb/core/detail/dense_lu.h>
-#include <ddb/integrators/correction_predictor.h>
-#include <ddb/integrators/ddb.h>
-#include <ddb/integrators/matrix_legendre_ceres.h>
-#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/methods/ddb.h>
+#include <ddb/integrators/methods/method_table.h>
+#include <ddb/integrators/solvers/correction_predictor.h>
+#include <ddb/integrators/solvers/matrix_legendre_ceres.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>

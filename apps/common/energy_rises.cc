@@ -1,6 +1,6 @@
 #include "common/energy_rises.h"
 
-#include <ddb/integrators/energy_step_control.h>
+#include <ddb/integrators/drivers/energy_step_control.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>

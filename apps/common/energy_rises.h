@@ -13,10 +13,10 @@ namespace ddb::app {
 class EnergyRises {
  public:
   // A rise E_k − E_{k−1} counts if it exceeds energyRoundOff(E_{k−1}, E_k)
-  // (integrators/energy_step_control.h), the rounding the step control allows too.
+  // (integrators/drivers/energy_step_control.h), the rounding the step control allows too.
 
   /// Whether rises are counted: a method of the DDB family (MethodInfo::keeps_casimirs,
-  /// integrators/method_table.h) with α > 0. Other methods, and α ≤ 0, promise no
+  /// integrators/methods/method_table.h) with α > 0. Other methods, and α ≤ 0, promise no
   /// monotone energy.
   static bool applies(bool keeps_casimirs, double alpha);
 

@@ -3,7 +3,7 @@
 // checks of docs/bad-inputs.md. What --adaptive applies to and the caps are the app's.
 #pragma once
 
-#include <ddb/integrators/relax.h>
+#include <ddb/integrators/drivers/relax.h>
 
 #include <CLI/CLI.hpp>
 #include <string>

@@ -1,11 +1,11 @@
 #include "ddb_compare/comparison.h"
 
 #include <ddb/core/group_traits.h>
-#include <ddb/integrators/method_table.h>
-#include <ddb/integrators/reference.h>
-#include <ddb/integrators/relax.h>
-#include <ddb/integrators/run.h>
-#include <ddb/integrators/steady_state_probe.h>
+#include <ddb/integrators/drivers/relax.h>
+#include <ddb/integrators/drivers/run.h>
+#include <ddb/integrators/drivers/steady_state_probe.h>
+#include <ddb/integrators/methods/method_table.h>
+#include <ddb/integrators/methods/reference.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>

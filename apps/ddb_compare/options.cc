@@ -1,6 +1,6 @@
 #include "ddb_compare/options.h"
 
-#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <spdlog/spdlog.h>
 

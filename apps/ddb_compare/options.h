@@ -3,7 +3,7 @@
 // validated (bad input is a UsageError naming the flag, docs/bad-inputs.md).
 #pragma once
 
-#include <ddb/integrators/relax.h>
+#include <ddb/integrators/drivers/relax.h>
 
 #include <CLI/CLI.hpp>
 #include <Eigen/Core>

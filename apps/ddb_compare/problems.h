@@ -8,7 +8,7 @@
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/groups/se3.h>
 #include <ddb/groups/so3.h>
-#include <ddb/integrators/flow_rate.h>
+#include <ddb/integrators/drivers/flow_rate.h>
 #include <spdlog/spdlog.h>
 
 #include <memory>

@@ -4,8 +4,8 @@
 #pragma once
 
 #include <ddb/core/lie_poisson_system.h>
-#include <ddb/integrators/relax.h>
-#include <ddb/integrators/steady_state_probe.h>
+#include <ddb/integrators/drivers/relax.h>
+#include <ddb/integrators/drivers/steady_state_probe.h>
 
 #include <Eigen/Core>
 #include <complex>

@@ -11,7 +11,7 @@
 
 #include <ddb/core/binary_record.h>
 #include <ddb/groups/sun.h>
-#include <ddb/integrators/relax.h>
+#include <ddb/integrators/drivers/relax.h>
 
 #include <cstdint>
 #include <filesystem>

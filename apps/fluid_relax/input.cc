@@ -1,7 +1,7 @@
 #include "fluid_relax/input.h"
 
 #include <ddb/groups/sun.h>
-#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_step_size.h>
 #include <spdlog/spdlog.h>

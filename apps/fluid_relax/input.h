@@ -3,7 +3,7 @@
 // the flag (docs/bad-inputs.md).
 #pragma once
 
-#include <ddb/integrators/relax.h>
+#include <ddb/integrators/drivers/relax.h>
 
 #include <CLI/CLI.hpp>
 #include <Eigen/Core>

@@ -4,9 +4,9 @@
 // bad input, checked in full before anything is written; 1 if a step failed (history.csv
 // keeps every state before it) or a file could not be written; 130/143 if SIGINT/SIGTERM
 // stopped it (after its step, with outputs and a checkpoint: "Checkpoints" there).
-#include <ddb/integrators/method_table.h>
-#include <ddb/integrators/relax.h>
-#include <ddb/integrators/run.h>
+#include <ddb/integrators/drivers/relax.h>
+#include <ddb/integrators/drivers/run.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <spdlog/fmt/chrono.h>
 #include <spdlog/spdlog.h>

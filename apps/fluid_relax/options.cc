@@ -1,6 +1,6 @@
 #include "fluid_relax/options.h"
 
-#include <ddb/integrators/method_table.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/zeitlin_step_size.h>
 
 #include "common/cli.h"

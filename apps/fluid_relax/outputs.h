@@ -3,7 +3,7 @@
 // layout of --init-file, omega_initial.csv and omega_final.csv.
 #pragma once
 
-#include <ddb/integrators/steady_state_probe.h>
+#include <ddb/integrators/drivers/steady_state_probe.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
 

@@ -3,7 +3,7 @@
 #pragma once
 
 #include <ddb/groups/sun.h>
-#include <ddb/integrators/relax.h>
+#include <ddb/integrators/drivers/relax.h>
 #include <ddb/systems/zeitlin_fluid.h>
 
 #include <string>

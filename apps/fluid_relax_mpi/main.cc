@@ -15,8 +15,8 @@
 #include <ddb/distributed/distributed_ddb.h>
 #include <ddb/distributed/process_grid.h>
 #include <ddb/distributed/rank_zero_record_reader.h>
-#include <ddb/integrators/relax.h>
-#include <ddb/integrators/run.h>
+#include <ddb/integrators/drivers/relax.h>
+#include <ddb/integrators/drivers/run.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <mpi.h>
 #include <spdlog/spdlog.h>

@@ -8,7 +8,7 @@
 #include <ddb/distributed/distributed_ddb.h>
 #include <ddb/distributed/process_grid.h>
 #include <ddb/groups/sun.h>
-#include <ddb/integrators/ddb.h>
+#include <ddb/integrators/methods/ddb.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <ddb/systems/zeitlin_step_size.h>

@@ -13,13 +13,13 @@
 // the fixed-size ImplicitRungeKutta; otherwise a SolveFailure with the last residual.
 #pragma once
 
-#include <ddb/core/detail/matrix_free_gmres.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/core/solver_options.h>
-#include <ddb/integrators/butcher_tableau.h>
-#include <ddb/integrators/one_step_method.h>
+#include <ddb/integrators/methods/butcher_tableau.h>
+#include <ddb/integrators/methods/one_step_method.h>
+#include <ddb/integrators/solvers/matrix_free_gmres.h>
 
 #include <algorithm>
 #include <array>

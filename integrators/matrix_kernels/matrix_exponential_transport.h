@@ -8,7 +8,7 @@
 #pragma once
 
 #include <ddb/core/lie_poisson_system.h>
-#include <ddb/integrators/matrix_conjugation.h>
+#include <ddb/integrators/matrix_kernels/matrix_conjugation.h>
 
 #include <Eigen/Core>
 

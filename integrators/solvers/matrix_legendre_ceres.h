@@ -11,7 +11,7 @@
 
 #include <ceres/ceres.h>
 #include <ddb/core/errors.h>
-#include <ddb/integrators/matrix_legendre.h>
+#include <ddb/integrators/solvers/matrix_legendre.h>
 
 #include <Eigen/Core>
 #include <complex>

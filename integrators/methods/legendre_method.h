@@ -5,9 +5,9 @@
 
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
-#include <ddb/integrators/legendre.h>
-#include <ddb/integrators/matrix_legendre.h>
-#include <ddb/integrators/one_step_method.h>
+#include <ddb/integrators/methods/one_step_method.h>
+#include <ddb/integrators/solvers/legendre.h>
+#include <ddb/integrators/solvers/matrix_legendre.h>
 
 #include <memory>
 #include <string>

@@ -17,9 +17,9 @@
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/exponential.h>
-#include <ddb/integrators/matrix_cayley_transport.h>
-#include <ddb/integrators/matrix_conjugation.h>
-#include <ddb/integrators/matrix_exponential_transport.h>
+#include <ddb/integrators/matrix_kernels/matrix_cayley_transport.h>
+#include <ddb/integrators/matrix_kernels/matrix_conjugation.h>
+#include <ddb/integrators/matrix_kernels/matrix_exponential_transport.h>
 
 namespace ddb {
 

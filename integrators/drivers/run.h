@@ -7,7 +7,7 @@
 
 #include <ddb/core/errors.h>
 #include <ddb/core/lie_poisson_system.h>
-#include <ddb/integrators/one_step_method.h>
+#include <ddb/integrators/methods/one_step_method.h>
 
 #include <algorithm>
 #include <chrono>

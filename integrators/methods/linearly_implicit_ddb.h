@@ -20,8 +20,8 @@
 
 #include <ddb/core/dissipation_metric.h>
 #include <ddb/core/errors.h>
-#include <ddb/integrators/ddb.h>
-#include <ddb/integrators/orbit_newton.h>
+#include <ddb/integrators/methods/ddb.h>
+#include <ddb/integrators/solvers/orbit_newton.h>
 
 #include <cmath>
 #include <memory>

@@ -21,9 +21,9 @@
 #include <ddb/core/binary_record.h>
 #include <ddb/core/detail/tiny_solver.h>
 #include <ddb/core/lie_poisson_system.h>
-#include <ddb/integrators/injectivity_guard.h>
-#include <ddb/integrators/legendre_equation.h>
-#include <ddb/integrators/legendre_stats.h>
+#include <ddb/integrators/solvers/injectivity_guard.h>
+#include <ddb/integrators/solvers/legendre_equation.h>
+#include <ddb/integrators/solvers/legendre_stats.h>
 
 #include <Eigen/Core>
 #include <cmath>

@@ -20,7 +20,7 @@
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/core/matrix_backend.h>
 #include <ddb/groups/cayley.h>
-#include <ddb/integrators/matrix_conjugation.h>
+#include <ddb/integrators/matrix_kernels/matrix_conjugation.h>
 
 #include <Eigen/Core>
 #include <cmath>

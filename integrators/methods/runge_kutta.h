@@ -8,8 +8,8 @@
 #include <ddb/core/errors.h>
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
-#include <ddb/integrators/butcher_tableau.h>
-#include <ddb/integrators/one_step_method.h>
+#include <ddb/integrators/methods/butcher_tableau.h>
+#include <ddb/integrators/methods/one_step_method.h>
 
 #include <array>
 #include <memory>

@@ -12,10 +12,10 @@
 #include <ddb/core/errors.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/core/matrix_backend.h>
-#include <ddb/integrators/energy_step_control.h>
-#include <ddb/integrators/one_step_method.h>
-#include <ddb/integrators/orbit_newton.h>
-#include <ddb/integrators/steady_state_probe.h>
+#include <ddb/integrators/drivers/energy_step_control.h>
+#include <ddb/integrators/drivers/steady_state_probe.h>
+#include <ddb/integrators/methods/one_step_method.h>
+#include <ddb/integrators/solvers/orbit_newton.h>
 
 #include <chrono>
 #include <cmath>

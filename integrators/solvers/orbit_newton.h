@@ -28,9 +28,9 @@
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/groups/cayley.h>
-#include <ddb/integrators/energy_step_control.h>
-#include <ddb/integrators/matrix_conjugation.h>
-#include <ddb/integrators/orbit_preconditioner.h>
+#include <ddb/integrators/drivers/energy_step_control.h>
+#include <ddb/integrators/matrix_kernels/matrix_conjugation.h>
+#include <ddb/integrators/solvers/orbit_preconditioner.h>
 
 #include <algorithm>
 #include <cmath>

@@ -14,11 +14,11 @@
 //       dissipation. Skipped when h|dH/dt| is below rounding: there ΔH measures nothing.
 // A rejected step is retried at h/2. After kGrowAfter accepted steps in a row with
 // e ≤ tolerance/2, h doubles: powers of two of the first h, and h held over
-// several steps, so that the Legendre solver's predictors (integrators/correction_predictor.h),
-// one history per step size with four kept, have corrections at the h in use.
-// Where the slow modes dominate (late relaxation), e ∝ λ_slow h permits large h; a fast
-// mode that a large h makes unstable (the dissipative part of a DDB step is explicit)
-// grows until (b) or (c) sees it and halves h again.
+// several steps, so that the Legendre solver's predictors
+// (integrators/solvers/correction_predictor.h), one history per step size with four kept, have
+// corrections at the h in use. Where the slow modes dominate (late relaxation), e ∝ λ_slow h
+// permits large h; a fast mode that a large h makes unstable (the dissipative part of a DDB step is
+// explicit) grows until (b) or (c) sees it and halves h again.
 #pragma once
 
 #include <ddb/core/binary_record.h>

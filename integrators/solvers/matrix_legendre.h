@@ -30,7 +30,6 @@
 
 #include <ddb/core/binary_record.h>
 #include <ddb/core/detail/bernoulli.h>
-#include <ddb/core/detail/matrix_free_gmres.h>
 #include <ddb/core/detail/tiny_solver.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/group_traits.h>
@@ -39,12 +38,13 @@
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/exponential.h>
 #include <ddb/groups/skew_hermitian_eigenbasis.h>
-#include <ddb/integrators/anderson_acceleration.h>
-#include <ddb/integrators/correction_predictor.h>
-#include <ddb/integrators/injectivity_guard.h>
-#include <ddb/integrators/legendre_equation.h>
-#include <ddb/integrators/legendre_stats.h>
-#include <ddb/integrators/matrix_retraction.h>
+#include <ddb/integrators/matrix_kernels/matrix_retraction.h>
+#include <ddb/integrators/solvers/anderson_acceleration.h>
+#include <ddb/integrators/solvers/correction_predictor.h>
+#include <ddb/integrators/solvers/injectivity_guard.h>
+#include <ddb/integrators/solvers/legendre_equation.h>
+#include <ddb/integrators/solvers/legendre_stats.h>
+#include <ddb/integrators/solvers/matrix_free_gmres.h>
 
 #include <algorithm>
 #include <array>
@@ -442,7 +442,7 @@ class MatrixLegendreSolver {
     }
   }
 
-  // The exponential's injectivity limit (integrators/injectivity_guard.h): a solution with
+  // The exponential's injectivity limit (integrators/solvers/injectivity_guard.h): a solution with
   // h·adRadius(ξ) ≥ π lies on another branch; refused as on SO(3). The eigenbasis of ξ is
   // current after a DDB solve with the closed form, recomputed otherwise.
   void checkInjectivity(double t, double h, bool basis_current) {

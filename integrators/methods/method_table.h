@@ -10,13 +10,13 @@
 #include <ddb/core/group_traits.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/exponential.h>
-#include <ddb/integrators/composition.h>
-#include <ddb/integrators/ddb.h>
-#include <ddb/integrators/linearly_implicit_ddb.h>
-#include <ddb/integrators/matrix_free_runge_kutta.h>
-#include <ddb/integrators/reference.h>
-#include <ddb/integrators/runge_kutta.h>
-#include <ddb/integrators/symmetric_ddb.h>
+#include <ddb/integrators/methods/composition.h>
+#include <ddb/integrators/methods/ddb.h>
+#include <ddb/integrators/methods/linearly_implicit_ddb.h>
+#include <ddb/integrators/methods/matrix_free_runge_kutta.h>
+#include <ddb/integrators/methods/reference.h>
+#include <ddb/integrators/methods/runge_kutta.h>
+#include <ddb/integrators/methods/symmetric_ddb.h>
 
 #include <array>
 #include <memory>

@@ -20,8 +20,8 @@
 #include <ddb/core/detail/jet_jacobian.h>
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
-#include <ddb/integrators/legendre_method.h>
-#include <ddb/integrators/matrix_retraction.h>
+#include <ddb/integrators/matrix_kernels/matrix_retraction.h>
+#include <ddb/integrators/methods/legendre_method.h>
 
 #include <memory>
 #include <string>

@@ -4,7 +4,7 @@
 // of a DDB method is a coadjoint action, the composition stays on the orbit.
 #pragma once
 
-#include <ddb/integrators/one_step_method.h>
+#include <ddb/integrators/methods/one_step_method.h>
 
 #include <cmath>
 #include <memory>
@@ -14,7 +14,7 @@
 namespace ddb {
 
 /// The step fractions γ_1..γ_s of a symmetric composition (their order is the method
-/// table's, integrators/method_table.h).
+/// table's, integrators/methods/method_table.h).
 struct CompositionScheme {
   std::vector<double> coefficients;
 };
