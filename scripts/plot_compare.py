@@ -35,6 +35,8 @@ STYLE = {
     "ddb-cay": dict(color="tab:blue", ls="-", marker="o"),
     "ddb-exp": dict(color="tab:orange", ls="--", marker="s"),
     "ddb-exp-exact": dict(color="tab:brown", ls=":", marker="^"),
+    "ddb-cay-implicit": dict(color="tab:green", ls="-.", marker="p"),
+    "ddb-exp-implicit": dict(color="teal", ls=(0, (3, 1, 1, 1)), marker="8"),
     "sddb-paper-cay": dict(color="hotpink", ls="-.", marker="v"),
     "sddb-paper-exp": dict(color="goldenrod", ls=(0, (5, 1, 1, 1, 1, 1)), marker="<"),
     "sddb-cay": dict(color="tab:cyan", ls="-", marker="D"),
@@ -48,6 +50,7 @@ STYLE = {
 }
 GROUPS = [
     ("DDB, order 1", ["ddb-cay", "ddb-exp", "ddb-exp-exact"]),
+    ("linearly implicit DDB, order 1", ["ddb-cay-implicit", "ddb-exp-implicit"]),
     ("paper's symmetric DDB, order 1", ["sddb-paper-cay", "sddb-paper-exp"]),
     ("symmetric DDB, order 2", ["sddb-cay", "sddb-exp"]),
     ("compositions, order 4 / 6", ["ddb4-cay", "ddb4-exp", "ddb6-exp"]),
