@@ -4,11 +4,13 @@
 // not compile. The DDB Cayley step, which is written against the backend (the Legendre
 // solver with its predictor, certified frozen solution and Newton–Krylov fallback, the
 // transport and the conjugations: advanceMatrixDdb), compiles and runs on it and takes the
-// dense step's bits, for Zeitlin's fluid whose Poisson solve is the test's kernel.
+// dense step's bits, for Zeitlin's fluid on this backend (ZeitlinFluidOnBackend) whose
+// Poisson solve is the test's kernel.
 #include <ddb/core/matrix_backend.h>
 #include <ddb/groups/sun.h>
 #include <ddb/integrators/methods/ddb.h>
 #include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_fluid_on_backend.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <gtest/gtest.h>
 
@@ -126,44 +128,8 @@ struct OpaqueKernels {
 
 namespace {
 
-// Zeitlin's fluid on opaque matrices, with the functions the DDB step asks of a system (as
-// distributed/distributed_zeitlin_fluid.h has them): ξ = −Δ⁻¹W/ħ projected, and
-// hφ/2 = α[p, a] from the product a p.
-class OpaqueZeitlinFluid {
- public:
-  using Dual = OpaqueMatrix;
-  using Algebra = OpaqueMatrix;
-  using B = MatrixBackend<OpaqueMatrix>;
-
-  OpaqueZeitlinFluid(Eigen::Index n, double alpha) : hamiltonian_(n), alpha_(alpha) {}
-
-  void velocityInto(const Dual& p, Dual& argument, Algebra& xi) const {
-    matrixVelocityInto<SUN>(hamiltonian_, p, argument, xi);
-  }
-  void velocityDerivativeInto(const Dual& argument, const Dual& v, Dual& direction,
-                              Algebra& out) const {
-    matrixVelocityDerivativeInto<SUN>(hamiltonian_, argument, v, direction, out);
-  }
-  void halfStepDissipationInto(const Dual& ap, Dual& commutator, Algebra& out) const {
-    SUN::commutatorFromProduct(ap, commutator);
-    B::scale(alpha_, commutator, out);
-  }
-
- private:
-  struct Hamiltonian {
-    explicit Hamiltonian(Eigen::Index n) : laplacian(n), hbar(zeitlinHbar(n)) {}
-    void gradientInto(const Dual& W, Dual& out) const {
-      zeitlinVelocityInto(laplacian, hbar, W, out);
-    }
-    void hessianTimesInto(const Dual&, const Dual& V, Dual& out) const {
-      zeitlinVelocityInto(laplacian, hbar, V, out);
-    }
-    OpaqueKernels::Laplacian laplacian;
-    double hbar;
-  };
-  Hamiltonian hamiltonian_;
-  double alpha_;
-};
+// Zeitlin's fluid on opaque matrices, with the test's Poisson solve.
+using OpaqueZeitlinFluid = ZeitlinFluidOnBackend<OpaqueMatrix, OpaqueKernels::Laplacian>;
 
 bool sameBits(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b) {
   return a.rows() == b.rows() && a.cols() == b.cols() &&
@@ -176,7 +142,7 @@ void expectTheDenseStepsBits(Eigen::Index n, double alpha, double h, int steps,
   const Eigen::MatrixXcd W0 = randomVorticity(n, 9);
   Ddb<Cayley<SUN>> dense(makeZeitlinFluid(n, alpha), Cayley<SUN>(), LegendreForm::kHamiltonian);
   dense.legendreSolver().setStrategy(strategy);
-  const OpaqueZeitlinFluid system(n, alpha);
+  const OpaqueZeitlinFluid system(OpaqueKernels::Laplacian(n), n, alpha);
   const Cayley<SUN> retraction;
   MatrixLegendreSolver<Cayley<SUN>, OpaqueZeitlinFluid> legendre(
       system, retraction, LegendreForm::kHamiltonian, SolverOptions{});
