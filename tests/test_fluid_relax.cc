@@ -141,6 +141,51 @@ TEST(FluidRelax, WritesContractFilesMatchingTheLibrary) {
   }
 }
 
+// iterations_mean and iterations_max are those of every method that solves, as the library's
+// methods count them (OneStepMethod::lastStepIterations, checked against the solvers' own
+// counts in test_method_table.cc): the exp methods and the compositions too, where they were
+// 0; null for rk4 and a Newton search, which solve no equation of a step.
+TEST(FluidRelax, IterationsPerStepAreThoseOfEveryMethodThatSolves) {
+  const int n = 8;
+  const long steps = 6;
+  const double h = 0.05, alpha = 0.5;
+  const Matrix W0 = ddb::randomVorticity(n, 3);
+  for (const std::string method : {"ddb-exp", "ddb-exp-exact", "sddb-exp", "ddb4-cay", "ddb6-exp",
+                                   "ddb-cay-implicit", "lobatto3c", "rk4"}) {
+    const fs::path out = freshFolder("iterations");
+    const std::string args = "--quiet --n 8 --alpha 0.5 --h 0.05 --steps 6 --seed 3 --method " +
+                             method + " --out " + out.string();
+    const AppResult r = run(args);
+    ASSERT_EQ(r.status, 0) << args << "\n" << r.output;
+    const auto summary = readJson(out / "summary.json");
+
+    auto integrator = ddb::makeMethod<ddb::SUN>(method, ddb::makeZeitlinFluid(n, alpha));
+    long total = 0, most = 0;
+    ddb::integrate(*integrator, W0, 0.0, h, steps, [&](long k, double, const Matrix&) {
+      if (k == 0) return;
+      total += integrator->lastStepIterations();
+      most = std::max(most, integrator->lastStepIterations());
+    });
+    if (!integrator->solvesEquations()) {
+      EXPECT_TRUE(summary["iterations_mean"].is_null()) << method;
+      EXPECT_TRUE(summary["iterations_max"].is_null()) << method;
+      continue;
+    }
+    EXPECT_GE(most, 1) << method;
+    EXPECT_EQ(jsonNumber(summary, "iterations_mean"), static_cast<double>(total) / steps) << method;
+    EXPECT_EQ(jsonNumber(summary, "iterations_max"), most) << method;
+  }
+  const fs::path out = freshFolder("iterations-newton");
+  const AppResult r =
+      run("--quiet --n 8 --alpha 0.5 --seed 3 --newton --until-steady 1e-8 "
+          "--steps 50 --out " +
+          out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto summary = readJson(out / "summary.json");
+  EXPECT_TRUE(summary["iterations_mean"].is_null());
+  EXPECT_TRUE(summary["iterations_max"].is_null());
+}
+
 TEST(FluidRelax, UntilSteadyStopsAtTheResidualWithAdaptiveOrFixedSteps) {
   // N = 4 relaxes to r = 1e-9 with ddb-exp-exact in 6477 steps of h = 0.1, or about a
   // thousand adaptive ones; r of W_final.csv from its own stream matrix, the residual column

@@ -126,5 +126,102 @@ TEST(MethodTable, NamesNotInTheTableAreRefusedByName) {
   EXPECT_FALSE(methodApplies("ddb-cayley", *a.system()));
 }
 
+/// The Legendre solver's own count of its last solve (fixed-point sweeps plus Newton steps) if
+/// `method` is of the DDB family with retraction R, else `found`.
+template <class R, class G>
+long legendreSolveIterations(const OneStepMethod<G>& method, long found) {
+  const auto* legendre = dynamic_cast<const LegendreMethod<R>*>(&method);
+  if (legendre == nullptr) return found;
+  const LegendreStats& stats = legendre->legendreSolver().stats();
+  return stats.fixed_point + stats.newton;
+}
+/// That count for any retraction of the table; -1 if `method` is not of the DDB family.
+template <class G>
+long legendreSolveIterations(const OneStepMethod<G>& method) {
+  long found = legendreSolveIterations<Cayley<G>>(method, -1);
+  found = legendreSolveIterations<Exponential<G>>(method, found);
+  return legendreSolveIterations<TruncatedExponential<G>>(method, found);
+}
+
+/// Every row's lastStepIterations() after each of a few steps, against the counts its solvers
+/// keep themselves: the Legendre solve's (one per DDB step; the restart's too for the paper's
+/// two-step recurrence; plus the dissipative factor's one Newton step for ddb-*-implicit),
+/// the base method's solves summed over a composition's substeps (taken by a separate
+/// instance of the base), the matrix-free stage solver's sweeps and Newton steps; explicit
+/// rows solve nothing. What fluid-relax's iterations_mean and iterations_max add up.
+template <class G>
+void checkIterationCounts(std::shared_ptr<const LiePoissonSystem<G>> system,
+                          const typename G::template Dual<double>& mu0, double h) {
+  using Dual = typename G::template Dual<double>;
+  for (const MethodInfo& m : kMethods) {
+    if (!methodApplies(m, *system)) continue;
+    auto method = makeMethod<G>(m, system);
+    const bool composed = m.kind == MethodKind::kComposition;
+    auto base = composed ? makeMethod<G>(m.base, system) : nullptr;
+    const bool solves = m.kind != MethodKind::kExplicitRk4 && m.kind != MethodKind::kReference;
+    EXPECT_EQ(method->solvesEquations(), solves) << m.name << " on " << G::kName;
+    Dual mu = mu0, substepped = mu0;
+    for (int k = 0; k < 3; ++k) {
+      const double t = k * h;
+      method->advance(mu, t, h);
+      const long reported = method->lastStepIterations();
+      const long legendre = legendreSolveIterations(*method);
+      const std::string where =
+          std::string(m.name) + " on " + G::kName + ", step " + std::to_string(k);
+      switch (m.kind) {
+        case MethodKind::kExplicitRk4:
+        case MethodKind::kReference:
+          EXPECT_EQ(reported, 0) << where;
+          break;
+        case MethodKind::kDdb:
+        case MethodKind::kSymmetricDdb:
+          EXPECT_EQ(reported, legendre) << where;
+          break;
+        case MethodKind::kPaperSymmetricDdb:
+          // The first step starts the recurrence with a solve of its own.
+          if (k == 0) {
+            EXPECT_GT(reported, legendre) << where;
+          } else {
+            EXPECT_EQ(reported, legendre) << where;
+          }
+          break;
+        case MethodKind::kLinearlyImplicitDdb:
+          EXPECT_EQ(reported, legendre + 1) << where;  // α = 0.5, not at rest
+          break;
+        case MethodKind::kComposition: {
+          long substeps = 0;
+          double s = t;
+          for (double gamma : detail::schemeOf(m.scheme).coefficients) {
+            base->advance(substepped, s, gamma * h);
+            substeps += legendreSolveIterations(*base);
+            s += gamma * h;
+          }
+          EXPECT_EQ(substepped, mu) << where << ": the separate base took other steps";
+          EXPECT_EQ(reported, substeps) << where;
+          break;
+        }
+        case MethodKind::kLobattoIIIC:
+          if constexpr (isDynamicGroup<G>) {
+            const auto& rk = dynamic_cast<const MatrixFreeImplicitRungeKutta<G, 3>&>(*method);
+            EXPECT_EQ(reported, rk.fixedPointSweeps() + rk.newtonSteps()) << where;
+          }
+          break;
+      }
+      if (solves) {
+        EXPECT_GE(reported, 1) << where << ": a solve takes an iteration at least";
+      }
+    }
+  }
+}
+
+TEST(MethodTable, StepIterationsAreTheSolversOwnCountsOnSO3) {
+  const RigidBodyScenario& a = rigidBodyScenario("A");
+  checkIterationCounts<SO3>(a.system(), a.mu0(), 0.2);
+}
+
+TEST(MethodTable, StepIterationsAreTheSolversOwnCountsOnSUN) {
+  checkIterationCounts<SUN>(makeZeitlinFluid(6, 0.5), randomVorticity(6, 3), 0.05);
+}
+
 }  // namespace
 }  // namespace ddb::test

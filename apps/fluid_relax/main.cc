@@ -48,9 +48,8 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   const bool newton = s.relax.newton;
   const std::string method_name = newton ? "newton" : o.method;
   const auto method = makeMethod<SUN>(o.method, system);  // not used by a Newton search
-  // The DDB methods' Legendre solver reports its iterations; rk4 and Newton have none.
-  const auto* legendre =
-      newton ? nullptr : dynamic_cast<const LegendreMethod<Cayley<SUN>>*>(method.get());
+  // Every method that solves equations reports its iterations; rk4 and a Newton search none.
+  const bool counts_iterations = !newton && method->solvesEquations();
   Relaxation<SUN> run = newton ? Relaxation<SUN>(*system, s.W0, s.relax)
                                : Relaxation<SUN>(*method, *system, s.W0, s.h, s.relax);
   Tally tally;
@@ -99,9 +98,8 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   std::string checkpoint_time = "none yet";
   long checkpointed_at = -1;  // the step of the last checkpoint
   const auto observe = [&](const RelaxState& at, const Matrix& W) {
-    if (at.k > 0 && legendre != nullptr) {
-      const auto& stats = legendre->legendreSolver().stats();
-      const long iterations = stats.fixed_point + stats.newton;
+    if (at.k > 0 && counts_iterations) {
+      const long iterations = method->lastStepIterations();
       tally.iterations_total += iterations;
       tally.iterations_max = std::max(tally.iterations_max, iterations);
     }
@@ -159,7 +157,8 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   const RelaxResult<SUN>& result = run.result();
   const double runtime_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const app::Json summary = runSummary(o, s, result, tally, method_name, watch_energy, runtime_s);
+  const app::Json summary = runSummary(o, s, *system, result, tally, method_name, counts_iterations,
+                                       watch_energy, runtime_s);
   const bool interrupted = result.stop == RelaxStop::kInterrupted;
   if (!result.ok()) {
     // A failed run writes no final state: W_final.csv and omega_final.csv would claim a

@@ -4,13 +4,13 @@
 
 namespace ddb::fluid {
 
-app::Json runSummary(const Options& o, const Settings& s, const RelaxResult<SUN>& result,
-                     const Tally& tally, const std::string& method_name, bool watch_energy,
+app::Json runSummary(const Options& o, const Settings& s, const LiePoissonSystem<SUN>& system,
+                     const RelaxResult<SUN>& result, const Tally& tally,
+                     const std::string& method_name, bool counts_iterations, bool watch_energy,
                      double runtime_s) {
   const Eigen::Index n = s.W0.rows();
-  const auto system = makeZeitlinFluid(n, s.alpha);
   const ZeitlinDiagnostics diagnostics(
-      dynamic_cast<const ZeitlinHamiltonian&>(system->hamiltonian()));
+      dynamic_cast<const ZeitlinHamiltonian&>(system.hamiltonian()));
   const bool newton = s.relax.newton;
   const bool interrupted = result.stop == RelaxStop::kInterrupted;
   app::Json summary;
@@ -26,7 +26,7 @@ app::Json runSummary(const Options& o, const Settings& s, const RelaxResult<SUN>
   summary["stop"] = relaxStopName(result.stop);
   summary["steady"] = result.steady();
   summary["until_steady"] = s.relax.tolerance > 0 ? app::Json(s.relax.tolerance) : app::Json();
-  summary["residual_final"] = steadyStateResidual(*system, result.final);
+  summary["residual_final"] = steadyStateResidual(system, result.final);
   summary["adaptive"] = s.relax.control.adaptive;
   summary["newton"] = newton;
   summary["adaptive_tol"] =
@@ -46,9 +46,14 @@ app::Json runSummary(const Options& o, const Settings& s, const RelaxResult<SUN>
   summary["commutator_initial"] = diagnostics.commutatorNorm(s.W0);
   summary["commutator_final"] = diagnostics.commutatorNorm(result.final);
   summary["runtime_s"] = runtime_s;
-  summary["iterations_mean"] =
-      result.last.k > 0 ? static_cast<double>(tally.iterations_total) / result.last.k : 0.0;
-  summary["iterations_max"] = tally.iterations_max;
+  if (counts_iterations) {
+    summary["iterations_mean"] =
+        result.last.k > 0 ? static_cast<double>(tally.iterations_total) / result.last.k : 0.0;
+    summary["iterations_max"] = tally.iterations_max;
+  } else {  // no equation solved: not applicable
+    summary["iterations_mean"] = app::Json();
+    summary["iterations_max"] = app::Json();
+  }
   if (watch_energy) summary["energy_rises"] = tally.rises.count();
   if (!result.ok()) {
     summary["failed_step"] = result.failed_step;

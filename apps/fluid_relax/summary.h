@@ -15,11 +15,14 @@
 
 namespace ddb::fluid {
 
-/// summary.json of the run of `o`, `s` that ended in `result` (its final state whole),
-/// with the accumulated `tally`, its method's name and its wall time. `watch_energy`:
-/// whether energy rises were counted (app::EnergyRises::applies).
-app::Json runSummary(const Options& o, const Settings& s, const RelaxResult<SUN>& result,
-                     const Tally& tally, const std::string& method_name, bool watch_energy,
+/// summary.json of the run of `o`, `s` on the fluid `system` that ended in `result` (its
+/// final state whole), with the accumulated `tally`, its method's name and its wall time.
+/// `counts_iterations`: whether the method solves equations (OneStepMethod::solvesEquations;
+/// otherwise the iterations are null, not applicable); `watch_energy`: whether energy rises
+/// were counted (app::EnergyRises::applies).
+app::Json runSummary(const Options& o, const Settings& s, const LiePoissonSystem<SUN>& system,
+                     const RelaxResult<SUN>& result, const Tally& tally,
+                     const std::string& method_name, bool counts_iterations, bool watch_energy,
                      double runtime_s);
 
 }  // namespace ddb::fluid

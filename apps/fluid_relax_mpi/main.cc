@@ -66,6 +66,7 @@ class RankZeroOutputs {
     files_.write(k, t, h, W, drift);
     return drift;
   }
+  const LiePoissonSystem<SUN>& system() const { return *system_; }
   HistoryFiles::Lengths sync() { return files_.sync(); }
   void commit() { files_.commit(); }
   void writeFinalState(const Settings& s, const Matrix& W) {
@@ -327,7 +328,8 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   onRoot([&] {
     tally.rises.warnIfAny("ddb-cay");
-    app::Json summary = runSummary(o, s, result, tally, "ddb-cay", watch_energy, runtime_s);
+    app::Json summary = runSummary(o, s, outputs->system(), result, tally, "ddb-cay",
+                                   /*counts_iterations=*/true, watch_energy, runtime_s);
     summary["mpi_ranks"] = grid.size();
     summary["process_grid"] = {grid.rows(), grid.cols()};
     summary["block_size"] = run.block;

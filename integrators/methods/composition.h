@@ -55,16 +55,22 @@ class Composition : public OneStepMethod<G> {
 
   Dual step(const Dual& mu, double t, double h) override { return this->stepInPlace(mu, t, h); }
   void advance(Dual& mu, double t, double h) override {
+    iterations_ = 0;
     for (double gamma : scheme_.coefficients) {
       base_->advance(mu, t, gamma * h);
+      iterations_ += base_->lastStepIterations();
       t += gamma * h;
     }
   }
+  bool solvesEquations() const override { return base_->solvesEquations(); }
+  /// The base method's iterations summed over the substeps.
+  long lastStepIterations() const override { return iterations_; }
 
  private:
   std::string name_;
   std::unique_ptr<OneStepMethod<G>> base_;
   CompositionScheme scheme_;
+  long iterations_ = 0;
 };
 
 }  // namespace ddb

@@ -39,6 +39,13 @@ class LegendreMethod : public OneStepMethod<typename R::Group> {
   void reset() override { legendre_.reset(); }
   void saveWarmStart(BinaryRecordWriter& out) const override { legendre_.saveWarmStart(out); }
   void loadWarmStart(BinaryRecordReader& in) override { legendre_.loadWarmStart(in); }
+  bool solvesEquations() const override { return true; }
+  /// The last Legendre solve's fixed-point sweeps and Newton steps: the one solve of a step
+  /// (subclasses that solve more add theirs).
+  long lastStepIterations() const override {
+    const LegendreStats& stats = legendre_.stats();
+    return stats.fixed_point + stats.newton;
+  }
   /// The Legendre solver, for its statistics (iterations of the last solve).
   const LegendreSolverFor<R>& legendreSolver() const { return legendre_; }
   LegendreSolverFor<R>& legendreSolver() { return legendre_; }

@@ -54,6 +54,7 @@ class LinearlyImplicitDdb : public Ddb<R> {
     } else {
       mu = Ddb<R>::step(mu, t, h);
     }
+    factor_steps_ = 0;
     if (alpha_ == 0.0) return;  // no dissipative factor: the step is Ddb's
     double energy = with_dissipation_->energy(mu);
     typename OrbitNewton<G>::Report report;
@@ -61,7 +62,12 @@ class LinearlyImplicitDdb : public Ddb<R> {
       throw SolveFailure("linearly implicit dissipative factor (no step length lowered the energy)",
                          -1, t, h, dissipative_factor_.residual(), 0.0);
     }
+    factor_steps_ = report.length > 0 ? 1 : 0;
   }
+
+  /// The Legendre solve's iterations and the dissipative factor's Newton step (one, unless
+  /// the state was at rest).
+  long lastStepIterations() const override { return Ddb<R>::lastStepIterations() + factor_steps_; }
 
  private:
   static double scalarMetricOf(const LiePoissonSystem<G>& system) {
@@ -76,6 +82,7 @@ class LinearlyImplicitDdb : public Ddb<R> {
   std::shared_ptr<const LiePoissonSystem<G>> with_dissipation_;  // Ddb's system has none
   double alpha_;
   OrbitNewton<G> dissipative_factor_;
+  long factor_steps_ = 0;  // the dissipative factor's Newton steps in the last step
 };
 
 }  // namespace ddb

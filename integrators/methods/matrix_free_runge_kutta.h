@@ -53,6 +53,8 @@ class MatrixFreeImplicitRungeKutta : public OneStepMethod<G> {
   /// Fixed-point sweeps and Newton steps of the last step.
   int fixedPointSweeps() const { return sweeps_; }
   int newtonSteps() const { return newton_; }
+  bool solvesEquations() const override { return true; }
+  long lastStepIterations() const override { return sweeps_ + newton_; }
 
   Dual step(const Dual& mu, double t, double h) override { return this->stepInPlace(mu, t, h); }
 

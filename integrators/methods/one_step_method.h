@@ -56,6 +56,15 @@ class OneStepMethod {
   /// method of the table does (tests/test_allocations.cc checks each).
   virtual void advance(Dual& mu, double t, double h) { mu = step(mu, t, h); }
 
+  /// Whether the method solves equations in its steps (an implicit method: the DDB family,
+  /// Lobatto IIIC); false for an explicit one, whose lastStepIterations() is always 0.
+  virtual bool solvesEquations() const { return false; }
+  /// The iterations the last step's solves took: fixed-point sweeps plus Newton steps, summed
+  /// over every equation the step solved (a composition's substeps, the dissipative factor of
+  /// a linearly implicit step). Inner linear iterations (GMRES, CG) are not counted. What the
+  /// apps report as iterations per step (docs/file-formats.md, "fluid-relax").
+  virtual long lastStepIterations() const { return 0; }
+
  protected:
   /// step() of a method whose advance() is the in-place step.
   Dual stepInPlace(const Dual& mu, double t, double h) {

@@ -97,6 +97,9 @@ class ImplicitRungeKutta : public OneStepMethod<G> {
                      const ButcherTableau<S>& tableau, SolverOptions options = {})
       : system_(std::move(system)), tableau_(tableau), options_(options) {}
   std::string name() const override { return tableau_.name; }
+  bool solvesEquations() const override { return true; }
+  /// The stage solve's Newton (Levenberg–Marquardt) iterations.
+  long lastStepIterations() const override { return iterations_; }
 
   Dual step(const Dual& mu, double t, double h) override {
     const Dual f0 = system_->vectorField(mu);
@@ -104,8 +107,9 @@ class ImplicitRungeKutta : public OneStepMethod<G> {
     for (int i = 0; i < S; ++i) K.template segment<kDim>(i * kDim) = f0;  // warm start
     const StageEquations equations{*system_, tableau_, mu, h};
     // Scale: the stage slopes and the state (so that equilibria, K = 0, are handled).
-    solveTiny<kUnknowns>(equations, K, f0.norm() * std::sqrt(double(S)) + mu.norm(), options_,
-                         "Runge-Kutta stage equations", t, h);
+    iterations_ = solveTiny<kUnknowns>(equations, K, f0.norm() * std::sqrt(double(S)) + mu.norm(),
+                                       options_, "Runge-Kutta stage equations", t, h)
+                      .iterations;
     Dual next = mu;
     for (int i = 0; i < S; ++i) next += (h * tableau_.b[i]) * K.template segment<kDim>(i * kDim);
     return next;
@@ -135,6 +139,7 @@ class ImplicitRungeKutta : public OneStepMethod<G> {
   std::shared_ptr<const LiePoissonSystem<G>> system_;
   ButcherTableau<S> tableau_;
   SolverOptions options_;
+  long iterations_ = 0;  // of the last step's stage solve
 };
 
 }  // namespace ddb

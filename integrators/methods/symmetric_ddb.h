@@ -184,6 +184,7 @@ class PaperSymmetricDdb : public LegendreMethod<R> {
 
   Dual step(const Dual& mu, double t, double h) override {
     // A two-step recurrence in ξ: (re)start whenever the caller's state or h is not ours.
+    start_iterations_ = 0;
     if (!started_ || h != h_ || mu != output_) start(mu, t, h);
     const Algebra hxi = h * xi_;
     const Dual pushed = G::AdDual(retraction_.tau(hxi), momentum_);  // (dτ^{-1}_{-hξ_k})* p_k
@@ -195,6 +196,10 @@ class PaperSymmetricDdb : public LegendreMethod<R> {
     p_ = p;
     output_ = readOut(h);
     return output_;
+  }
+  /// The step's solve, and the restart's when the step (re)started the recurrence.
+  long lastStepIterations() const override {
+    return LegendreMethod<R>::lastStepIterations() + start_iterations_;
   }
 
  private:
@@ -239,6 +244,7 @@ class PaperSymmetricDdb : public LegendreMethod<R> {
     }
     started_ = true;
     h_ = h;
+    start_iterations_ = LegendreMethod<R>::lastStepIterations();
   }
 
   Dual readOut(double h) const {
@@ -250,6 +256,7 @@ class PaperSymmetricDdb : public LegendreMethod<R> {
   using LegendreMethod<R>::system_;
   using LegendreMethod<R>::retraction_;
   using LegendreMethod<R>::legendre_;
+  long start_iterations_ = 0;  // the restart's solve in the last step, if it restarted
   Force force_;
   ReadOut read_out_;
   bool started_ = false;
