@@ -1,6 +1,6 @@
 // SkewHermitianEigenbasis: the spectral calculus of a skew-Hermitian (real: skew-symmetric)
 // matrix x, on which the exponential retraction of SO(N) and SU(N) rests
-// (docs/conventions.md §2, "Matrix algebras"). x = V diag(iθ) Vᴴ, θ real ascending, from
+// (docs/conventions.md §1, "Matrix algebras"). x = V diag(iθ) Vᴴ, θ real ascending, from
 // the Hermitian −ix; in x's eigenbasis (Â = Vᴴ A V) ad_x multiplies entry (a, b) by
 // i(θ_a − θ_b). So every function of ad_x with real Taylor coefficients (dexp, dexp⁻¹, their
 // duals under the trace pairing, where ad_x is skew-adjoint, and Ad*_{exp x}) acts as

@@ -134,7 +134,7 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
   static X AdDual(const X& g, const X& mu) {
     return g.adjoint() * mu * g;
   }
-  // The exponential's tangent maps in closed form (docs/conventions.md §2, "Matrix
+  // The exponential's tangent maps in closed form (docs/conventions.md §1, "Matrix
   // algebras"): ad_x multiplies entry (a, b) of x's eigenbasis by iδ, δ = θ_a − θ_b, and is
   // skew-adjoint under the trace pairing, so with f(iη) = (e^{iη} − 1)/(iη)
   //   dexp_x = f(ad_x),  dexp⁻¹_x = 1/f(ad_x),  (dexp⁻¹_x)* = 1/f(−ad_x).

@@ -1,4 +1,4 @@
-// The exponential retraction on SO(N) and SU(N) (docs/conventions.md §2, "Matrix algebras"),
+// The exponential retraction on SO(N) and SU(N) (docs/conventions.md §1, "Matrix algebras"),
 // each piece against something it did not use: the closed forms in x's eigenbasis against
 // LieGroupBase's Bernoulli series summed to round-off and Eigen's MatrixFunctions
 // exponential; the in-place conjugations against Uᴴ μ U with U formed by Eigen; the DDB

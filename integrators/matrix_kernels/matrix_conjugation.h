@@ -1,5 +1,5 @@
 // The conjugations μ ← Ad*_{τ(x)} μ = τ(x)ᴴ μ τ(x) on a matrix group (SO(N), SU(N)),
-// in place and as an increment of μ (docs/conventions.md §2, "Matrix algebras"):
+// in place and as an increment of μ (docs/conventions.md §1, "Matrix algebras"):
 // prepare(x) once, then apply(μ) to any number of momenta. Conjugating by a formed τ(x)
 // puts the same rounding of τ(x) into every step of a steady flow and the spectrum drifts
 // linearly; the increment's rounding is relative to the change, which vanishes at a steady
