@@ -26,6 +26,7 @@
 #include <sstream>
 
 #include "app_test_support.h"
+#include "ddb_compare/system_table.h"
 
 namespace {
 
@@ -216,6 +217,67 @@ TEST(DdbCompare, UnknownNamesListTheValidOnes) {
   EXPECT_EQ(r.status, 2);
   EXPECT_THAT(r.output, ::testing::HasSubstr("rigid-body, heavy-top, kirchhoff"));
   EXPECT_FALSE(fs::exists(out));
+}
+
+/// A value of each system flag that its systems accept as text (a file need not exist).
+std::string sampleValue(std::string_view flag) {
+  static const std::map<std::string_view, std::string> values{{"--scenario", "A"},
+                                                              {"--inertia", "1,2,3"},
+                                                              {"--omega0", "0,0,1"},
+                                                              {"--mu0", "1,2,3,4,5,6"},
+                                                              {"--mgl", "2"},
+                                                              {"--chi", "0,0,1"},
+                                                              {"--metric", "1,1,1,1,1,1"},
+                                                              {"--mass", "1,2,3"},
+                                                              {"--n", "4"},
+                                                              {"--j", "1,2,3,4"},
+                                                              {"--mu0-file", "none.csv"},
+                                                              {"--seed", "3"},
+                                                              {"--init", "zonal"},
+                                                              {"--init-file", "none.csv"}};
+  return values.at(flag);
+}
+
+// The system table (apps/ddb_compare/system_table.h) against the app: every system refuses
+// each system flag its row does not name, as bad input naming the flag and the system, with
+// nothing written; takes each flag its row names (no such refusal); and --help names, for
+// each system flag, exactly the systems that take it, and every system under --system.
+TEST(DdbCompare, EverySystemTakesTheFlagsOfItsRowAndRefusesTheOthers) {
+  using ddb::compare::kSystemFlags;
+  using ddb::compare::systemTable;
+  const AppResult help = run("--help");
+  for (const auto& row : systemTable()) {
+    const std::string system(row.name);
+    EXPECT_THAT(help.output, ::testing::HasSubstr("  " + system + "  ")) << system;
+    for (const auto& flag : kSystemFlags) {
+      const std::string name(flag.name);
+      const fs::path out = freshFolder("table");
+      const std::string arguments =
+          "--system " + system + " " + name + " " + sampleValue(flag.name) +
+          " --t-end 0.05 --method ddb-cay --repeat 1 --out " + out.string();
+      const AppResult r = run("--quiet " + arguments);
+      if (row.takes(flag.name)) {
+        EXPECT_THAT(r.output, ::testing::Not(::testing::HasSubstr("does not apply"))) << arguments;
+        continue;
+      }
+      EXPECT_EQ(r.status, 2) << arguments;
+      EXPECT_THAT(r.output, ::testing::HasSubstr(name + " = " + sampleValue(flag.name) +
+                                                 ": does not apply to --system " + system))
+          << arguments;
+      EXPECT_FALSE(fs::exists(out)) << arguments;
+    }
+  }
+  for (const auto& flag : kSystemFlags) {
+    std::string takers;
+    for (const auto& row : systemTable()) {
+      if (row.takes(flag.name)) takers += (takers.empty() ? "" : ", ") + std::string(row.name);
+    }
+    ASSERT_FALSE(takers.empty()) << flag.name << " is taken by no system";
+    // CLI11 prints "  --flag TEXT  <help>": the help starts with the systems taking it.
+    EXPECT_TRUE(std::regex_search(
+        help.output, std::regex("\n  " + std::string(flag.name) + " [^ ]+ +" + takers + ": ")))
+        << flag.name << " should say " << takers;
+  }
 }
 
 TEST(DdbCompare, FlagsThatDoNotApplyAreBadInputNamingTheFlag) {

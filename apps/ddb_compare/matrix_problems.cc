@@ -25,14 +25,6 @@ std::string whyMaxN() {
          std::to_string(kMaxMatrixN);
 }
 
-/// The flags of the other systems, refused on a matrix system.
-void rejectOtherSystemsFlags(const CLI::App& cli, const std::string& context) {
-  for (const char* flag :
-       {"--scenario", "--inertia", "--omega0", "--mgl", "--chi", "--mu0", "--metric", "--mass"}) {
-    app::rejectIfGiven(cli, flag, context);
-  }
-}
-
 /// --n if given, else the system's default.
 long givenOr(const CLI::App& cli, const Options& o, long fallback) {
   return cli.count("--n") > 0 ? o.n : fallback;
@@ -89,9 +81,6 @@ Eigen::MatrixXd seededManakovMomentum(Eigen::Index n, std::uint64_t seed) {
 }
 
 Problem<SON> manakovProblem(const CLI::App& cli, const Options& o) {
-  const std::string context = "--system manakov";
-  rejectOtherSystemsFlags(cli, context);
-  for (const char* flag : {"--init", "--init-file"}) app::rejectIfGiven(cli, flag, context);
   Problem<SON> p;
   Eigen::MatrixXd M0;
   if (!o.mu0_file.empty()) {
@@ -123,9 +112,6 @@ Problem<SON> manakovProblem(const CLI::App& cli, const Options& o) {
 }
 
 Problem<SUN> zeitlinProblem(const CLI::App& cli, const Options& o) {
-  const std::string context = "--system zeitlin";
-  rejectOtherSystemsFlags(cli, context);
-  for (const char* flag : {"--j", "--mu0-file"}) app::rejectIfGiven(cli, flag, context);
   app::InitialVorticity initial =
       app::initialVorticity(cli, {givenOr(cli, o, kZeitlinDefaultN), o.seed, o.init, o.init_file},
                             {kMaxMatrixN, whyMaxN()});

@@ -10,6 +10,7 @@
 #include "common/format.h"
 #include "common/initial_vorticity.h"
 #include "ddb_compare/matrix_problems.h"
+#include "ddb_compare/system_table.h"
 
 namespace ddb::compare {
 
@@ -25,6 +26,20 @@ std::string shortList(const Eigen::DenseBase<Derived>& v) {
   return s;
 }
 std::string shortList(double v) { return shortList(Eigen::Matrix<double, 1, 1>(v)); }
+
+/// A system flag's help: the systems that take it (the system table), then `text`.
+std::string forSystems(std::string_view flag, const std::string& text) {
+  return systemsTaking(flag) + ": " + text;
+}
+
+/// --system's help: the table's names.
+std::string systemHelp() {
+  std::string names;
+  for (const SystemRow& row : systemTable()) {
+    names += (names.empty() ? "" : " | ") + std::string(row.name);
+  }
+  return names + " (listed below)";
+}
 
 std::string helpFooter() {
   const RigidBodyScenario& a = rigidBodyScenarios().front();
@@ -72,22 +87,10 @@ std::string helpFooter() {
 
 }  // namespace
 
-const std::vector<std::pair<std::string, std::string>>& systemDescriptions() {
-  static const std::vector<std::pair<std::string, std::string>> systems{
-      {"rigid-body", "free rigid body on so(3)*, K = alpha I (paper, Section 5)"},
-      {"heavy-top", "heavy top on se(3)*, Hamiltonian-form DDB, K = alpha diag(metric)"},
-      {"kirchhoff", "rigid body in ideal fluid on se(3)*, K = alpha diag(metric)"},
-      {"manakov", "SO(N) generalised rigid body (Manakov) on so(N)*, K = alpha I"},
-      {"zeitlin", "Zeitlin's SU(N) fluid on the sphere, K = alpha I"}};
-  return systems;
-}
-
 void addOptions(CLI::App& cli, Options& o) {
   const RigidBodyScenario& a = rigidBodyScenarios().front();
-  cli.add_option("--system", o.system,
-                 "rigid-body | heavy-top | kirchhoff | manakov | zeitlin (listed below)")
-      ->capture_default_str();
-  cli.add_option("--scenario", o.scenario, "A | B | C, rigid body only (listed below)")
+  cli.add_option("--system", o.system, systemHelp())->capture_default_str();
+  cli.add_option("--scenario", o.scenario, forSystems("--scenario", "A | B | C (listed below)"))
       ->capture_default_str();
   cli.add_option("--method", o.methods,
                  "comma-separated methods (default: every one that applies)");
@@ -112,45 +115,50 @@ void addOptions(CLI::App& cli, Options& o) {
                  "timed runs per method for the median runtime, for runs shorter than 1 s")
       ->capture_default_str()
       ->check(app::fitsIn<decltype(o.repeat)>());
-  cli.add_option("--inertia", o.inertia,
-                 "principal moments a,b,c (default: scenario A/B " + shortList(a.inertia) + ", C " +
-                     shortList(rigidBodyScenarios().back().inertia) + ", other systems " +
-                     shortList(HeavyTopSetup().inertia) + ")");
+  cli.add_option(
+      "--inertia", o.inertia,
+      forSystems("--inertia", "principal moments a,b,c (default: scenario A/B " +
+                                  shortList(a.inertia) + ", C " +
+                                  shortList(rigidBodyScenarios().back().inertia) +
+                                  ", other systems " + shortList(HeavyTopSetup().inertia) + ")"));
   cli.add_option(
       "--alpha", o.alpha,
       "dissipation scale, K = alpha I or alpha diag(metric) (default " + shortList(a.alpha) + ")");
-  cli.add_option(
-      "--omega0", o.omega0,
-      "rigid body: initial angular velocity x,y,z (default " + shortList(a.omega0) + ")");
+  cli.add_option("--omega0", o.omega0,
+                 forSystems("--omega0", "initial angular velocity x,y,z (default " +
+                                            shortList(a.omega0) + ")"));
   cli.add_option("--mgl", o.mgl,
-                 "heavy top: m g l (default " + shortList(HeavyTopSetup().mgl) + ")");
-  cli.add_option(
-      "--chi", o.chi,
-      "heavy top: centre-of-mass direction x,y,z (default " + shortList(HeavyTopSetup().chi) + ")");
-  cli.add_option("--mu0", o.mu0, "heavy top, Kirchhoff: initial momentum, 6 numbers (below)");
+                 forSystems("--mgl", "m g l (default " + shortList(HeavyTopSetup().mgl) + ")"));
+  cli.add_option("--chi", o.chi,
+                 forSystems("--chi", "centre-of-mass direction x,y,z (default " +
+                                         shortList(HeavyTopSetup().chi) + ")"));
+  cli.add_option("--mu0", o.mu0, forSystems("--mu0", "initial momentum, 6 numbers (below)"));
   cli.add_option("--metric", o.metric,
-                 "heavy top, Kirchhoff: k1,...,k6, K = alpha diag(k) (default " +
-                     shortList(HeavyTopSetup().metric) + ")");
-  cli.add_option(
-      "--mass", o.mass,
-      "Kirchhoff: added masses m1,m2,m3 (default " + shortList(KirchhoffSetup().mass) + ")");
+                 forSystems("--metric", "k1,...,k6, K = alpha diag(k) (default " +
+                                            shortList(HeavyTopSetup().metric) + ")"));
+  cli.add_option("--mass", o.mass,
+                 forSystems("--mass", "added masses m1,m2,m3 (default " +
+                                          shortList(KirchhoffSetup().mass) + ")"));
   cli.add_option("--n", o.n,
-                 "manakov, zeitlin: N of SO(N) or SU(N), 2 <= N <= " + std::to_string(kMaxMatrixN) +
-                     " (default manakov " + std::to_string(kManakovDefaultN) + ", zeitlin " +
-                     std::to_string(kZeitlinDefaultN) + ")")
+                 forSystems("--n", "N of SO(N) or SU(N), 2 <= N <= " + std::to_string(kMaxMatrixN) +
+                                       " (default manakov " + std::to_string(kManakovDefaultN) +
+                                       ", zeitlin " + std::to_string(kZeitlinDefaultN) + ")"))
       ->check(app::fitsIn<decltype(o.n)>());
   cli.add_option("--j", o.j,
-                 "manakov: J1,...,JN > 0, inertia operator J Omega + Omega J (default "
-                 "J_i = 1 + (i-1)/(N-1))");
+                 forSystems("--j",
+                            "J1,...,JN > 0, inertia operator J Omega + Omega J (default "
+                            "J_i = 1 + (i-1)/(N-1))"));
   cli.add_option("--mu0-file", o.mu0_file,
-                 "manakov: initial momentum M0 from a CSV of N rows x N columns, real "
-                 "skew-symmetric (default: seeded by --seed)");
-  app::addSeedOption(cli, o.seed, "manakov, zeitlin: seed of the initial state");
-  cli.add_option("--init", o.init, "zeitlin: initial vorticity (listed below)")
+                 forSystems("--mu0-file",
+                            "initial momentum M0 from a CSV of N rows x N columns, real "
+                            "skew-symmetric (default: seeded by --seed)"));
+  app::addSeedOption(cli, o.seed, forSystems("--seed", "seed of the initial state"));
+  cli.add_option("--init", o.init, forSystems("--init", "initial vorticity (listed below)"))
       ->capture_default_str();
   cli.add_option("--init-file", o.init_file,
-                 "zeitlin: W0 from a CSV of N rows x 2N columns (row j: Re W[j,:] then "
-                 "Im W[j,:]), fluid-relax's layout");
+                 forSystems("--init-file",
+                            "W0 from a CSV of N rows x 2N columns (row j: Re W[j,:] then "
+                            "Im W[j,:]), fluid-relax's layout"));
   app::addLogFlags(cli, o.log);
   app::addVersionFlag(cli, kApp);
   cli.footer(helpFooter());

@@ -43,9 +43,6 @@ struct Options {
   app::LogFlags log;
 };
 
-/// --system's choices, with their descriptions for --help.
-const std::vector<std::pair<std::string, std::string>>& systemDescriptions();
-
 /// Adds every option of Options, --version and the --help footer.
 void addOptions(CLI::App& cli, Options& o);
 

@@ -17,20 +17,9 @@ void requirePositiveEntries(const std::string& flag, const std::string& text,
   if ((v.array() <= 0).any()) app::usageError(flag, text, "entries must be > 0");
 }
 
-/// The flags of the matrix systems, refused on the others.
-void rejectMatrixSystemsFlags(const CLI::App& cli, const std::string& context) {
-  for (const char* flag : {"--n", "--j", "--mu0-file", "--seed", "--init", "--init-file"}) {
-    app::rejectIfGiven(cli, flag, context);
-  }
-}
-
 }  // namespace
 
-Problem<SO3> rigidBodyProblem(const CLI::App& cli, const Options& o) {
-  for (const char* flag : {"--mgl", "--chi", "--mu0", "--metric", "--mass"}) {
-    app::rejectIfGiven(cli, flag, "--system rigid-body");
-  }
-  rejectMatrixSystemsFlags(cli, "--system rigid-body");
+Problem<SO3> rigidBodyProblem(const CLI::App&, const Options& o) {
   app::requireChoice("--scenario", o.scenario, scenarioNames());
   const RigidBodyScenario& base = rigidBodyScenario(o.scenario);
   RigidBodyScenario used = base;
@@ -49,55 +38,56 @@ Problem<SO3> rigidBodyProblem(const CLI::App& cli, const Options& o) {
   return p;
 }
 
-Problem<SE3> se3Problem(const CLI::App& cli, const Options& o) {
-  const std::string context = "--system " + o.system;
-  for (const char* flag : {"--scenario", "--omega0"}) app::rejectIfGiven(cli, flag, context);
-  rejectMatrixSystemsFlags(cli, context);
-  const bool top = o.system == "heavy-top";
-  for (const char* flag :
-       top ? std::vector<const char*>{"--mass"} : std::vector<const char*>{"--mgl", "--chi"}) {
-    app::rejectIfGiven(cli, flag, context);
+namespace {
+
+/// The parameters the SE(3) systems share, parsed over `setup`'s defaults into p and
+/// recorded; returns the setup with them.
+template <class Setup>
+Setup se3Parameters(const Options& o, Setup setup, Problem<SE3>& p) {
+  const Setup defaults = setup;
+  setup.inertia = optionalVector<3>("--inertia", o.inertia, defaults.inertia);
+  requirePositiveEntries("--inertia", o.inertia, setup.inertia);
+  setup.alpha = optionalNumber("--alpha", o.alpha, defaults.alpha);
+  setup.mu0 = optionalVector<6>("--mu0", o.mu0, defaults.mu0);
+  setup.metric = optionalVector<6>("--metric", o.metric, defaults.metric);
+  if ((setup.metric.array() < 0).any()) {
+    app::usageError("--metric", o.metric, "entries must be >= 0");
   }
+  p.mu0 = setup.mu0;
+  p.t_end = setup.t_end;
+  p.alpha = setup.alpha;
+  p.parameters["inertia"] = app::jsonArray(setup.inertia);
+  p.parameters["alpha"] = setup.alpha;
+  p.parameters["metric"] = app::jsonArray(setup.metric);
+  p.parameters["mu0"] = app::jsonArray(setup.mu0);
+  return setup;
+}
+
+/// These systems have no paper scenario: "none" with the defaults, else "custom".
+const char* se3Scenario(bool custom) { return custom ? "custom" : "none"; }
+
+}  // namespace
+
+Problem<SE3> heavyTopProblem(const CLI::App&, const Options& o) {
   Problem<SE3> p;
-  // The parameters both systems share, parsed over `setup`'s defaults and recorded.
-  const auto shared = [&](auto setup) {
-    const auto defaults = setup;
-    setup.inertia = optionalVector<3>("--inertia", o.inertia, defaults.inertia);
-    requirePositiveEntries("--inertia", o.inertia, setup.inertia);
-    setup.alpha = optionalNumber("--alpha", o.alpha, defaults.alpha);
-    setup.mu0 = optionalVector<6>("--mu0", o.mu0, defaults.mu0);
-    setup.metric = optionalVector<6>("--metric", o.metric, defaults.metric);
-    if ((setup.metric.array() < 0).any()) {
-      app::usageError("--metric", o.metric, "entries must be >= 0");
-    }
-    p.mu0 = setup.mu0;
-    p.t_end = setup.t_end;
-    p.alpha = setup.alpha;
-    p.parameters["inertia"] = app::jsonArray(setup.inertia);
-    p.parameters["alpha"] = setup.alpha;
-    p.parameters["metric"] = app::jsonArray(setup.metric);
-    p.parameters["mu0"] = app::jsonArray(setup.mu0);
-    return setup;
-  };
-  bool custom = false;
-  if (top) {
-    HeavyTopSetup s = shared(HeavyTopSetup());
-    s.mgl = optionalNumber("--mgl", o.mgl, s.mgl);
-    s.chi = optionalVector<3>("--chi", o.chi, s.chi);
-    custom = !s.sameParameters(HeavyTopSetup());
-    p.system = s.system();
-    p.parameters["mgl"] = s.mgl;
-    p.parameters["chi"] = app::jsonArray(s.chi);
-  } else {
-    KirchhoffSetup s = shared(KirchhoffSetup());
-    s.mass = optionalVector<3>("--mass", o.mass, s.mass);
-    requirePositiveEntries("--mass", o.mass, s.mass);
-    custom = !s.sameParameters(KirchhoffSetup());
-    p.system = s.system();
-    p.parameters["mass"] = app::jsonArray(s.mass);
-  }
-  // These systems have no paper scenario: "none" with the defaults, else "custom".
-  p.scenario = custom ? "custom" : "none";
+  HeavyTopSetup s = se3Parameters(o, HeavyTopSetup(), p);
+  s.mgl = optionalNumber("--mgl", o.mgl, s.mgl);
+  s.chi = optionalVector<3>("--chi", o.chi, s.chi);
+  p.system = s.system();
+  p.parameters["mgl"] = s.mgl;
+  p.parameters["chi"] = app::jsonArray(s.chi);
+  p.scenario = se3Scenario(!s.sameParameters(HeavyTopSetup()));
+  return p;
+}
+
+Problem<SE3> kirchhoffProblem(const CLI::App&, const Options& o) {
+  Problem<SE3> p;
+  KirchhoffSetup s = se3Parameters(o, KirchhoffSetup(), p);
+  s.mass = optionalVector<3>("--mass", o.mass, s.mass);
+  requirePositiveEntries("--mass", o.mass, s.mass);
+  p.system = s.system();
+  p.parameters["mass"] = app::jsonArray(s.mass);
+  p.scenario = se3Scenario(!s.sameParameters(KirchhoffSetup()));
   return p;
 }
 

@@ -23,6 +23,7 @@
 #include "common/json.h"
 #include "ddb_compare/matrix_flow_rate.h"
 #include "ddb_compare/options.h"
+#include "ddb_compare/system_table.h"
 
 namespace ddb::compare {
 
@@ -38,11 +39,17 @@ struct Problem {
   app::Json parameters = app::Json::object();  // summary.json's "parameters"
 };
 
+// The problems of the system table (system_table.h), which has refused the flags a system
+// does not take before it calls them.
+
 /// The rigid body of --scenario with --inertia, --alpha, --omega0 over its values.
 Problem<SO3> rigidBodyProblem(const CLI::App& cli, const Options& o);
 
-/// The heavy top or Kirchhoff body (--system) with the given parameters over the defaults.
-Problem<SE3> se3Problem(const CLI::App& cli, const Options& o);
+/// The heavy top with the given parameters over the defaults (HeavyTopSetup).
+Problem<SE3> heavyTopProblem(const CLI::App& cli, const Options& o);
+
+/// The Kirchhoff body with the given parameters over the defaults (KirchhoffSetup).
+Problem<SE3> kirchhoffProblem(const CLI::App& cli, const Options& o);
 
 /// Why the reference cannot follow the flow from μ₀ to t_end in at most kMaxSteps of
 /// its time scale 1/rate, or "" if it can. An overflowing or extremely stiff problem
@@ -75,20 +82,14 @@ void requireResolvable(const Options& o, const Problem<G>& problem, const MakePr
   };
   const std::string why = unresolvable(problem, horizon(o, problem.t_end));
   if (why.empty()) return;
-  const std::vector<std::pair<const char*, std::string Options::*>> flags{
-      {"--alpha", &Options::alpha},
-      {"--inertia", &Options::inertia},
-      {"--omega0", &Options::omega0},
-      {"--mu0", &Options::mu0},
-      {"--mgl", &Options::mgl},
-      {"--chi", &Options::chi},
-      {"--metric", &Options::metric},
-      {"--mass", &Options::mass},
-      {"--j", &Options::j},
-      {"--mu0-file", &Options::mu0_file},
-      {"--init-file", &Options::init_file},
-      {"--t-end", &Options::t_end}};
-  const std::pair<const char*, std::string Options::*>* blamed = nullptr;
+  // --alpha, the system flags whose absence means a default (the system table's order), and
+  // --t-end. A flag the system does not take was refused before.
+  std::vector<std::pair<std::string, std::string Options::*>> flags{{"--alpha", &Options::alpha}};
+  for (const SystemFlag& flag : kSystemFlags) {
+    if (flag.text != nullptr) flags.emplace_back(std::string(flag.name), flag.text);
+  }
+  flags.emplace_back("--t-end", &Options::t_end);
+  const std::pair<std::string, std::string Options::*>* blamed = nullptr;
   for (const auto& flag : flags) {
     if ((o.*flag.second).empty()) continue;
     Options reverted = o;
