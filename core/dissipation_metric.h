@@ -5,6 +5,7 @@
 
 #include <ddb/core/errors.h>
 #include <ddb/core/matrix_backend.h>
+#include <ddb/core/matrix_traits.h>
 
 #include <string>
 
@@ -32,12 +33,20 @@ class ScaledIdentityMetric final : public DissipationMetric<G> {
   using typename DissipationMetric<G>::Dual;
 
   explicit ScaledIdentityMetric(double alpha) : alpha_(requireFinite("alpha", alpha)) {}
-  Algebra sharp(const Dual& mu) const override { return alpha_ * mu; }
+  Algebra sharp(const Dual& mu) const override {
+    if constexpr (isEigenMatrix<Dual>) {
+      return alpha_ * mu;
+    } else {  // a backend's matrix
+      Algebra out = mu;
+      MatrixBackend<Dual>::scale(alpha_, mu, out);
+      return out;
+    }
+  }
   void sharpInto(const Dual& mu, Algebra& out) const override {
-    if constexpr (Algebra::SizeAtCompileTime == Eigen::Dynamic) {
-      MatrixBackend<Dual>::scale(alpha_, mu, out);  // a matrix algebra: an O(N²) pass of the step
-    } else {
+    if constexpr (hasFixedSize<Algebra>) {
       out = alpha_ * mu;
+    } else {
+      MatrixBackend<Dual>::scale(alpha_, mu, out);  // a matrix algebra: an O(N²) pass of the step
     }
   }
   double alpha() const { return alpha_; }

@@ -26,11 +26,13 @@ struct MatrixFieldWorkspace {
   // At μ: P μ, ξ, the commutator [Pμ, ξ], φ, ξ + φ. Along v: P v, δξ, δ[Pμ, ξ], δφ, δ(ξ + φ).
   Matrix argument, xi, commutator, phi, forced, direction, dxi, dcommutator, dphi, dforced;
 
-  void resize(Eigen::Index n) {
-    if (argument.rows() == n) return;
+  /// Every workspace of like's shape (and layout), zero; nothing if they have it already.
+  void resize(const Matrix& like) {
+    using B = MatrixBackend<Matrix>;
+    if (B::sameShape(argument, like)) return;
     for (Matrix* m : {&argument, &xi, &commutator, &phi, &forced, &direction, &dxi, &dcommutator,
                       &dphi, &dforced}) {
-      m->setZero(n, n);
+      B::zeroLike(*m, like);
     }
   }
 };
@@ -70,6 +72,8 @@ class LiePoissonSystem {
   using Algebra = AlgebraT<double>;
   using Dual = DualT<double>;
   using Casimirs = typename G::template Casimirs<double>;
+  /// The matrix groups' arithmetic (docs/matrix-backend.md).
+  using B = MatrixBackend<Dual>;
 
   LiePoissonSystem(std::string name, std::shared_ptr<const Hamiltonian<G>> hamiltonian,
                    std::shared_ptr<const DissipationMetric<G>> metric,
@@ -140,10 +144,11 @@ class LiePoissonSystem {
   /// `commutator` are workspaces of p's size).
   void dissipationInto(const Dual& p, const Algebra& xi, double scale, Dual& product,
                        Dual& commutator, Algebra& out) const {
-    product.noalias() = p * xi;
-    commutator = product - product.adjoint();
+    B::multiply(p, xi, product);
+    B::copy(product, commutator);
+    B::addAdjoint(-1.0, product, commutator);
     metric_->sharpInto(commutator, out);
-    out *= scale;
+    B::scale(scale, out, out);
   }
   /// The same at ξ = (2/h)a given the product ap = a p: out = hφ/2 = k♯([p, a]) with
   /// [p, a] = (ap)ᴴ − ap. No product.
@@ -166,7 +171,7 @@ class LiePoissonSystem {
 
   /// Matrix groups, in place: μ̇ = P ad*_{ξ+φ}(P μ), the vector field on the algebra (the
   /// argument projected like the Hamiltonian's, the result too, so that explicit and implicit
-  /// Runge–Kutta states stay on it). `w` is sized by w.resize(N) and keeps what the
+  /// Runge–Kutta states stay on it). `w` is sized by w.resize(mu) and keeps what the
   /// derivative at this μ needs.
   void vectorFieldInto(const Dual& mu, MatrixFieldWorkspace<G>& w, Dual& out) const {
     fieldInto(*hamiltonian_, *metric_, mu, w, out);
@@ -180,7 +185,7 @@ class LiePoissonSystem {
     bracketInto(w.direction, w.xi, w.dcommutator);
     addBracket(w.argument, w.dxi, w.dcommutator);
     metric_->sharpInto(w.dcommutator, w.dphi);
-    w.dforced = w.dxi + w.dphi;
+    B::sum(1.0, w.dxi, 1.0, w.dphi, w.dforced);
     bracketInto(w.direction, w.forced, out);
     addBracket(w.argument, w.dforced, out);
     G::projectToAlgebra(out);
@@ -189,7 +194,9 @@ class LiePoissonSystem {
  protected:
   /// μ̇ at a double μ. TypedLiePoissonSystem overrides it to call its Hamiltonian and metric
   /// through their concrete types.
-  virtual Dual fieldAt(const Dual& mu) const { return vectorFieldOf(*hamiltonian_, *metric_, mu); }
+  virtual Dual fieldAt(const Dual& mu) const {
+    return vectorFieldOf<Hamiltonian<G>, DissipationMetric<G>, double>(*hamiltonian_, *metric_, mu);
+  }
 
   // Eq. (3.4) for any Hamiltonian type H and metric type K: the base classes here, the
   // concrete ones in TypedLiePoissonSystem.
@@ -197,8 +204,10 @@ class LiePoissonSystem {
   static AlgebraT<T> velocityOf(const H& hamiltonian, const DualT<T>& mu) {
     if constexpr (isDynamicGroup<G>) {
       static_assert(std::is_same_v<T, double>, "matrix groups are evaluated in double");
-      Dual argument(mu.rows(), mu.cols());
-      Algebra xi(mu.rows(), mu.cols());
+      Dual argument;
+      Algebra xi;
+      B::zeroLike(argument, mu);
+      B::zeroLike(xi, mu);
       velocityAt(hamiltonian, mu, argument, xi);
       return xi;
     } else {
@@ -214,8 +223,9 @@ class LiePoissonSystem {
   static DualT<T> vectorFieldOf(const H& hamiltonian, const K& metric, const DualT<T>& mu) {
     if constexpr (isDynamicGroup<G>) {
       MatrixFieldWorkspace<G> w;
-      w.resize(mu.rows());
-      Dual out(mu.rows(), mu.cols());
+      w.resize(mu);
+      Dual out;
+      B::zeroLike(out, mu);
       fieldInto(hamiltonian, metric, mu, w, out);
       return out;
     } else {
@@ -238,19 +248,19 @@ class LiePoissonSystem {
     velocityAt(hamiltonian, mu, w.argument, w.xi);
     bracketInto(w.argument, w.xi, w.commutator);
     metric.sharpInto(w.commutator, w.phi);
-    w.forced = w.xi + w.phi;
+    B::sum(1.0, w.xi, 1.0, w.phi, w.forced);
     bracketInto(w.argument, w.forced, out);
     G::projectToAlgebra(out);
   }
 
   // out = [a, b] = ab − ba, and out += [a, b], without temporaries.
   static void bracketInto(const Dual& a, const Dual& b, Dual& out) {
-    out.noalias() = a * b;
-    out.noalias() -= b * a;
+    B::multiply(a, b, out);
+    B::multiplyAdd(-1.0, b, a, out);
   }
   static void addBracket(const Dual& a, const Dual& b, Dual& out) {
-    out.noalias() += a * b;
-    out.noalias() -= b * a;
+    B::multiplyAdd(1.0, a, b, out);
+    B::multiplyAdd(-1.0, b, a, out);
   }
 
  private:
@@ -283,8 +293,8 @@ class TypedLiePoissonSystem final : public LiePoissonSystem<G> {
  protected:
   // The base holds exactly these objects (it has no assignment), so the casts are exact.
   Dual fieldAt(const Dual& mu) const override {
-    return this->vectorFieldOf(static_cast<const H&>(this->hamiltonian()),
-                               static_cast<const K&>(this->metric()), mu);
+    return this->template vectorFieldOf<H, K, double>(static_cast<const H&>(this->hamiltonian()),
+                                                      static_cast<const K&>(this->metric()), mu);
   }
 };
 

@@ -15,6 +15,7 @@
 #include <ddb/core/detail/blas_threads.h>
 #include <ddb/core/detail/dense_lu.h>
 #include <ddb/core/errors.h>
+#include <ddb/core/matrix_traits.h>
 #include <ddb/core/parallel_passes.h>
 #include <ddb/core/thread_pool.h>
 
@@ -121,6 +122,17 @@ struct MatrixBackend {
       out.middleCols(first, count).noalias() = a * b.middleCols(first, count);
     });
   }
+  /// out += a·x y (out aliases neither): one product accumulated into out, Eigen's
+  /// out.noalias() += a·x·y (one GEMM with β = 1; a = ±1 as +=, −=).
+  static void multiplyAdd(double a, const X& x, const X& y, X& out) {
+    if (a == 1.0) {
+      out.noalias() += x * y;
+    } else if (a == -1.0) {
+      out.noalias() -= x * y;
+    } else {
+      out.noalias() += Scalar(a) * x * y;
+    }
+  }
   /// out += scale·xᴴ (out is not x). Tile by tile, each tile of x read by columns into a
   /// small buffer first (loadTransposed below), tile columns on the library's threads
   /// (core/thread_pool.h).
@@ -226,6 +238,22 @@ struct MatrixBackend {
   static double innerProduct(const X& x, const X& y) {
     return Eigen::numext::real(x.conjugate().cwiseProduct(y).sum());
   }
+  /// Whether every entry is finite (no NaN, no infinity).
+  static bool allFinite(const X& x) { return x.allFinite(); }
+  /// Sets the subnormal entries (real and imaginary parts alike), 0 < |x| < 2^-1022, to zero of
+  /// the same sign and changes no other bit (OneStepMethod's integrate(): a decaying entry that
+  /// reaches the subnormal range would make every later step pay the CPU's slow path on it).
+  static void flushSubnormals(X& x) {
+    using Real = typename Eigen::NumTraits<Scalar>::Real;
+    constexpr Eigen::Index kParts = Eigen::NumTraits<Scalar>::IsComplex ? 2 : 1;
+    // std::complex<Real> is laid out as Real[2] (C++17 [complex.numbers]/4).
+    Real* entries = reinterpret_cast<Real*>(x.data());
+    for (Eigen::Index i = 0; i < kParts * x.size(); ++i) {
+      if (std::fpclassify(entries[i]) == FP_SUBNORMAL) {
+        entries[i] = std::copysign(Real(0), entries[i]);
+      }
+    }
+  }
   /// Whether every entry is exactly zero (NaN is not).
   static bool isZero(const X& x) {
     std::atomic<bool> nonzero{false};
@@ -304,5 +332,18 @@ struct MatrixBackend {
     }
   }
 };
+
+/// requireFinite (errors.h) for a state of any backend: InvalidArgument naming `name` unless
+/// every entry of x is finite.
+template <class X>
+const X& requireFiniteMatrix(const std::string& name, const X& x) {
+  if constexpr (isEigenMatrix<X>) {
+    return requireFinite(name, x);
+  } else {
+    using B = MatrixBackend<X>;
+    if (!B::allFinite(x)) throwInvalid(name, B::describe(x).text, "every entry must be finite");
+    return x;
+  }
+}
 
 }  // namespace ddb

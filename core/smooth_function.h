@@ -2,6 +2,9 @@
 // common shape of a reduced Lagrangian l: g → R and a Hamiltonian H: g* → R.
 #pragma once
 
+#include <ddb/core/matrix_backend.h>
+#include <ddb/core/matrix_traits.h>
+
 #include <Eigen/Core>
 #include <cmath>
 #include <limits>
@@ -30,13 +33,21 @@ class SmoothFunction {
   /// accuracy (docs/conventions.md §4, "Derivatives"). Override it with the formula where
   /// Newton runs often, e.g. at large h on matrix groups.
   virtual Codomain hessianTimes(const Domain& x, const Domain& v) const {
-    const double norm_v = v.norm();
-    const double norm_x = x.norm();
-    const double s = norm_v > 0.0 ? std::cbrt(std::numeric_limits<double>::epsilon()) *
-                                        (norm_x > 0.0 ? norm_x : 1.0) / norm_v
-                                  : 1.0;
-    const Domain plus = x + s * v, minus = x - s * v;
-    return Codomain((gradient(plus) - gradient(minus)) / (2.0 * s));
+    if constexpr (isEigenMatrix<Domain>) {
+      const double s = differenceStep(x.norm(), v.norm());
+      const Domain plus = x + s * v, minus = x - s * v;
+      return Codomain((gradient(plus) - gradient(minus)) / (2.0 * s));
+    } else {  // a backend's matrices (docs/matrix-backend.md)
+      using B = MatrixBackend<Domain>;
+      const double s = differenceStep(B::frobeniusNorm(x), B::frobeniusNorm(v));
+      Domain plus = x, minus = x;
+      B::axpy(s, v, plus);
+      B::axpy(-s, v, minus);
+      Codomain out = gradient(plus);
+      B::axpy(-1.0, gradient(minus), out);
+      B::divide(out, 2.0 * s);
+      return out;
+    }
   }
 
   /// In-place forms for large (matrix) algebras, `out` already of x's size: the
@@ -45,6 +56,14 @@ class SmoothFunction {
   virtual void gradientInto(const Domain& x, Codomain& out) const { out = gradient(x); }
   virtual void hessianTimesInto(const Domain& x, const Domain& v, Codomain& out) const {
     out = hessianTimes(x, v);
+  }
+
+ private:
+  // The central difference's step s = ∛u·‖x‖/‖v‖ (‖x‖ → 1 at x = 0).
+  static double differenceStep(double norm_x, double norm_v) {
+    return norm_v > 0.0 ? std::cbrt(std::numeric_limits<double>::epsilon()) *
+                              (norm_x > 0.0 ? norm_x : 1.0) / norm_v
+                        : 1.0;
   }
 };
 
@@ -68,11 +87,12 @@ class SmallSmoothFunction : public SmoothFunction<Domain, Codomain> {
   }
 };
 
-/// SmallSmoothFunction for fixed-size domains, SmoothFunction for the matrix algebras.
+/// SmallSmoothFunction for fixed-size domains, SmoothFunction for the matrix algebras (of any
+/// backend).
 template <class Domain, class Codomain>
 using SmoothFunctionFor =
-    std::conditional_t<Domain::SizeAtCompileTime == Eigen::Dynamic,
-                       SmoothFunction<Domain, Codomain>, SmallSmoothFunction<Domain, Codomain>>;
+    std::conditional_t<hasFixedSize<Domain>, SmallSmoothFunction<Domain, Codomain>,
+                       SmoothFunction<Domain, Codomain>>;
 
 /// The Hessian of f at x as a matrix: fixed-size domains only (the small implicit solvers'
 /// Jacobians and the Legendre transform).

@@ -69,6 +69,9 @@ struct MatrixBackend<DistributedMatrix> {
   static Eigen::Index globalSize(const X& x) { return Eigen::Index(x.size()) * x.size(); }
 
   static void multiply(const X& a, const X& b, X& out) { ddb::multiply(a, b, out); }
+  static void multiplyAdd(double s, const X& a, const X& b, X& out) {
+    multiplyInto(s, a, b, 1.0, out);
+  }
   static void addAdjoint(double scale, const X& x, X& out) {
     adjointExchange(x.layout()).addAdjoint(scale, x.local(), out.local());
   }
@@ -101,6 +104,10 @@ struct MatrixBackend<DistributedMatrix> {
   static double innerProduct(const X& x, const X& y) {
     return x.layout().grid().sum(x.local().conjugate().cwiseProduct(y.local()).sum().real());
   }
+  static bool allFinite(const X& x) {
+    return !(x.layout().grid().max(x.local().allFinite() ? 0.0 : 1.0) > 0.0);
+  }
+  static void flushSubnormals(X& x) { Dense::flushSubnormals(x.local()); }
   static bool isZero(const X& x) {
     const double largest = x.local().size() > 0 ? x.local().cwiseAbs().maxCoeff() : 0.0;
     return !(x.layout().grid().max(largest) > 0.0);

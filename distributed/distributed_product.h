@@ -1,5 +1,5 @@
-// C = A·B for distributed N×N matrices (pzgemm_): one complex product, the matrix
-// groups' cost unit (docs/conventions.md §4), spread over the grid.
+// C = A·B (and C += s·A·B) for distributed N×N matrices (pzgemm_): one complex product, the
+// matrix groups' cost unit (docs/conventions.md §4), spread over the grid.
 #pragma once
 
 #include <ddb/core/errors.h>
@@ -11,8 +11,11 @@
 
 namespace ddb {
 
-/// c = a·b; the three matrices share the grid, N and the block size, and c aliases neither.
-inline void multiply(const DistributedMatrix& a, const DistributedMatrix& b, DistributedMatrix& c) {
+/// c = alpha·a·b + beta·c (pzgemm_); the three matrices share the grid, N and the block size,
+/// and c aliases neither.
+inline void multiplyInto(std::complex<double> alpha, const DistributedMatrix& a,
+                         const DistributedMatrix& b, std::complex<double> beta,
+                         DistributedMatrix& c) {
   for (const DistributedMatrix* m : {&b, static_cast<const DistributedMatrix*>(&c)}) {
     if (m->size() != a.size() || m->layout().block() != a.layout().block() ||
         &m->layout().grid() != &a.layout().grid()) {
@@ -25,9 +28,13 @@ inline void multiply(const DistributedMatrix& a, const DistributedMatrix& b, Dis
   }
   if (&c == &a || &c == &b) throwInvalid("product", "c", "must not alias a factor");
   const int n = a.size(), one = 1;
-  const std::complex<double> alpha(1.0), beta(0.0);
   pzgemm_("N", "N", &n, &n, &n, &alpha, a.data(), &one, &one, a.descriptor(), b.data(), &one, &one,
           b.descriptor(), &beta, c.data(), &one, &one, c.descriptor());
+}
+
+/// c = a·b.
+inline void multiply(const DistributedMatrix& a, const DistributedMatrix& b, DistributedMatrix& c) {
+  multiplyInto(1.0, a, b, 0.0, c);
 }
 
 }  // namespace ddb

@@ -21,4 +21,20 @@ struct SUN : SkewHermitianGroup<SUN, detail::ComplexScalar> {
   static constexpr const char* kAlgebraName = "skew-Hermitian";
 };
 
+/// SU(N) with its states in another backend's matrices X (docs/matrix-backend.md): SUN's
+/// closed forms, with Algebra and Dual X, so that a system and a method are the library's own
+/// classes instantiated off the dense matrices (on MPI ranks: SUNOn<DistributedMatrix>). Only
+/// what is written against MatrixBackend<X> compiles for it: the system's in-place
+/// evaluations, the methods of the method table's kBackendMatrixGroups family, integrate()
+/// and Relaxation; the Casimirs, exp and log need dense matrices.
+template <class X>
+struct SUNOn : SkewHermitianGroup<SUNOn<X>, detail::ComplexScalar> {
+  static constexpr const char* kName = "SU(N)";
+  static constexpr const char* kAlgebraName = "skew-Hermitian";
+  template <class T>
+  using Algebra = X;
+  template <class T>
+  using Dual = X;
+};
+
 }  // namespace ddb

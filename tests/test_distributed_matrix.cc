@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <string>
 #include <tuple>
@@ -130,6 +131,46 @@ TEST_P(DistributedMatrixTest, ProductMatchesEigen) {
     const Eigen::MatrixXcd reference = a * b;
     EXPECT_LT(relativeDistance(c, reference), 1e-13);
   }
+}
+
+// multiplyAdd (pzgemm_ with β = 1) against Eigen's c + s·a b on the gathered matrices.
+TEST_P(DistributedMatrixTest, MultiplyAddMatchesEigen) {
+  const Eigen::MatrixXcd a = randomComplexMatrix(n(), 23), b = randomComplexMatrix(n(), 24),
+                         c = randomComplexMatrix(n(), 25);
+  DistributedMatrix da(grid_, n(), block()), db(grid_, n(), block()), dc(grid_, n(), block());
+  da.scatterFrom(a);
+  db.scatterFrom(b);
+  for (const double s : {1.0, -1.0, 0.3}) {
+    dc.scatterFrom(c);
+    MatrixBackend<DistributedMatrix>::multiplyAdd(s, da, db, dc);
+    const Eigen::MatrixXcd result = dc.gather();
+    if (grid_.rank() == 0) {
+      const Eigen::MatrixXcd reference = c + s * (a * b);
+      EXPECT_LT(relativeDistance(result, reference), 1e-13) << "s = " << s;
+    }
+  }
+}
+
+// allFinite answers alike on every rank, whichever rank holds the NaN; flushSubnormals is the
+// dense backend's on the local arrays, the same bits gathered.
+TEST_P(DistributedMatrixTest, AllFiniteAgreesOnEveryRankAndFlushSubnormalsIsTheDenseOnes) {
+  using D = MatrixBackend<DistributedMatrix>;
+  Eigen::MatrixXcd a = randomComplexMatrix(n(), 26);
+  a(n() - 1, 0) = {std::numeric_limits<double>::denorm_min(), -1.0};
+  a(0, n() - 1) = {0.5, -std::numeric_limits<double>::denorm_min() * 7};
+  DistributedMatrix da(grid_, n(), block());
+  da.scatterFrom(a);
+  EXPECT_TRUE(D::allFinite(da));
+  D::flushSubnormals(da);
+  const Eigen::MatrixXcd flushed = da.gather();
+  if (grid_.rank() == 0) {
+    Eigen::MatrixXcd dense = a;
+    MatrixBackend<Eigen::MatrixXcd>::flushSubnormals(dense);
+    EXPECT_EQ(std::memcmp(flushed.data(), dense.data(), sizeof(dense(0)) * dense.size()), 0);
+  }
+  a(n() - 1, n() - 1) = {NAN, 0.0};  // on the last rank's block for most layouts
+  da.scatterFrom(a);
+  EXPECT_FALSE(D::allFinite(da));
 }
 
 // The backend's adjoints (AdjointExchange) against Eigen's on the gathered matrix: out +

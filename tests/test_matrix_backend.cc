@@ -9,6 +9,7 @@
 #include <cmath>
 #include <complex>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include "test_support.h"
@@ -137,6 +138,58 @@ TEST(MatrixBackend, OneNormIsTheLargestColumnSumOfModuliAtEveryScale) {
   EXPECT_EQ(B::oneNorm(infinite), INFINITY);
   infinite(2, 2) = {NAN, 0.0};
   EXPECT_TRUE(std::isnan(B::oneNorm(infinite)));
+}
+
+// multiplyAdd against its formula out + s·(x y) with the product summed entry by entry in long
+// double: a GEMM's rounding differs from a loop's, so to 1e-15 of the terms' size.
+TEST(MatrixBackend, MultiplyAddIsTheProductAccumulatedIntoOut) {
+  std::srand(3);
+  const Matrix x = Matrix::Random(13, 11), y = Matrix::Random(11, 9), start = Matrix::Random(13, 9);
+  for (const double s : {1.0, -1.0, 0.3}) {
+    Matrix out = start;
+    B::multiplyAdd(s, x, y, out);
+    for (Eigen::Index j = 0; j < out.cols(); ++j) {
+      for (Eigen::Index i = 0; i < out.rows(); ++i) {
+        std::complex<long double> product = 0;
+        long double size = std::abs(start(i, j));
+        for (Eigen::Index k = 0; k < x.cols(); ++k) {
+          product += std::complex<long double>(x(i, k)) * std::complex<long double>(y(k, j));
+          size += std::abs(x(i, k)) * std::abs(y(k, j));
+        }
+        const std::complex<long double> expected =
+            std::complex<long double>(start(i, j)) + static_cast<long double>(s) * product;
+        EXPECT_LE(std::abs(std::complex<long double>(out(i, j)) - expected), 1e-15L * size)
+            << "s = " << s << ", entry (" << i << ", " << j << ")";
+      }
+    }
+  }
+}
+
+// flushSubnormals zeroes each subnormal part with its sign and changes no other bit;
+// allFinite finds a NaN or an infinity in either part.
+TEST(MatrixBackend, FlushSubnormalsAndAllFiniteLookAtEveryPartOfEveryEntry) {
+  const double tiny = std::numeric_limits<double>::denorm_min() * 3;
+  Matrix x = operand<Matrix>(5);
+  Matrix expected = x;
+  x(4, 4) = {tiny, 1.0};
+  expected(4, 4) = {0.0, 1.0};
+  x(5, 6) = {2.0, -tiny};
+  expected(5, 6) = {2.0, -0.0};
+  x(6, 5) = {-std::numeric_limits<double>::min(), tiny};  // the least normal stays
+  expected(6, 5) = {-std::numeric_limits<double>::min(), 0.0};
+  B::flushSubnormals(x);
+  EXPECT_TRUE(sameBits(x, expected));
+  EXPECT_TRUE(B::allFinite(x));
+  for (const std::complex<double> bad :
+       {std::complex<double>(NAN, 0.0), std::complex<double>(0.0, INFINITY),
+        std::complex<double>(-INFINITY, 1.0)}) {
+    Matrix y = x;
+    y(7, 2) = bad;
+    EXPECT_FALSE(B::allFinite(y)) << bad;
+  }
+  Eigen::MatrixXd real = Eigen::MatrixXd::Constant(3, 3, -tiny);
+  MatrixBackend<Eigen::MatrixXd>::flushSubnormals(real);
+  EXPECT_TRUE(sameBits(real, Eigen::MatrixXd(Eigen::MatrixXd::Constant(3, 3, -0.0))));
 }
 
 }  // namespace

@@ -1,22 +1,26 @@
 // A matrix backend without element access (docs/matrix-backend.md): OpaqueMatrix keeps its
 // entries private and MatrixBackend<OpaqueMatrix> implements the contract by the dense
 // backend's functions on them, so a formula that reached past the backend to an entry would
-// not compile. The DDB Cayley step, which is written against the backend (the Legendre
-// solver with its predictor, certified frozen solution and Newton–Krylov fallback, the
-// transport and the conjugations: advanceMatrixDdb), compiles and runs on it and takes the
-// dense step's bits, for Zeitlin's fluid on this backend (ZeitlinFluidOnBackend) whose
-// Poisson solve is the test's kernel.
+// not compile. On SU(N) with these matrices (SUNOn<OpaqueMatrix>) the library's own classes
+// compile and run: the fluid as a LiePoissonSystem whose Hamiltonian is the test's kernel,
+// every method of the method table's kBackendMatrixGroups family built by makeMethod (the
+// Legendre solver with its predictor, certified frozen solution and Newton–Krylov fallback,
+// the transport and the conjugations), integrate() and Relaxation with its step control,
+// probe and record; they take the dense backend's bits state by state. The other methods are
+// refused by name.
 #include <ddb/core/matrix_backend.h>
 #include <ddb/groups/sun.h>
-#include <ddb/integrators/methods/ddb.h>
+#include <ddb/integrators/drivers/relax.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/zeitlin_fluid.h>
-#include <ddb/systems/zeitlin_fluid_on_backend.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
-#include <gtest/gtest.h>
+#include <gmock/gmock.h>
 
 #include <complex>
 #include <cstring>
+#include <string>
 #include <utility>
+#include <vector>
 
 namespace ddb {
 
@@ -83,6 +87,9 @@ struct MatrixBackend<OpaqueMatrix> {
   static void multiply(const X& a, const X& b, X& out) {
     Dense::multiply(a.entries_, b.entries_, out.entries_);
   }
+  static void multiplyAdd(double s, const X& a, const X& b, X& out) {
+    Dense::multiplyAdd(s, a.entries_, b.entries_, out.entries_);
+  }
   static void addAdjoint(double s, const X& x, X& out) {
     Dense::addAdjoint(s, x.entries_, out.entries_);
   }
@@ -97,6 +104,8 @@ struct MatrixBackend<OpaqueMatrix> {
   static double innerProduct(const X& x, const X& y) {
     return Dense::innerProduct(x.entries_, y.entries_);
   }
+  static bool allFinite(const X& x) { return Dense::allFinite(x.entries_); }
+  static void flushSubnormals(X& x) { Dense::flushSubnormals(x.entries_); }
   static bool isZero(const X& x) { return Dense::isZero(x.entries_); }
   template <class Indices, class Out>
   static void sampleEntries(const X& x, const Indices& indices, Out& out) {
@@ -106,8 +115,8 @@ struct MatrixBackend<OpaqueMatrix> {
   static void load(BinaryRecordReader& in, X& x) { Dense::load(in, x.entries_); }
 };
 
-/// The test's kernels on the entries: states in and out, and the fluid's Poisson solve (a
-/// backend of the fluid brings its own, as the distributed one does).
+/// The test's kernels on the entries: states in and out, and the fluid's Hamiltonian (a
+/// backend's system brings its own, as the distributed fluid its Poisson solve).
 struct OpaqueKernels {
   static OpaqueMatrix wrap(Eigen::MatrixXcd entries) {
     OpaqueMatrix x;
@@ -115,60 +124,202 @@ struct OpaqueKernels {
     return x;
   }
   static const Eigen::MatrixXcd& reveal(const OpaqueMatrix& x) { return x.entries_; }
-
-  struct Laplacian {
-    explicit Laplacian(Eigen::Index n) : dense(n) {}
-    void solve(const OpaqueMatrix& W, OpaqueMatrix& out) const {
-      out.entries_.resize(W.entries_.rows(), W.entries_.cols());
-      dense.solve(W.entries_, out.entries_);
-    }
-    HoppeYauLaplacian dense;
-  };
+  static Eigen::MatrixXcd& reveal(OpaqueMatrix& x) { return x.entries_; }
 };
 
 namespace {
 
-// Zeitlin's fluid on opaque matrices, with the test's Poisson solve.
-using OpaqueZeitlinFluid = ZeitlinFluidOnBackend<OpaqueMatrix, OpaqueKernels::Laplacian>;
+/// SU(N) on opaque matrices: the methods see nothing but MatrixBackend<OpaqueMatrix>.
+using OpaqueSUN = SUNOn<OpaqueMatrix>;
+
+/// Zeitlin's Hamiltonian on opaque matrices: the dense one's kernels on the entries.
+class OpaqueZeitlinHamiltonian final : public Hamiltonian<OpaqueSUN> {
+ public:
+  explicit OpaqueZeitlinHamiltonian(Eigen::Index n) : dense_(n) {}
+  double value(const OpaqueMatrix& W) const override { return dense_.value(in(W)); }
+  OpaqueMatrix gradient(const OpaqueMatrix& W) const override {
+    return OpaqueKernels::wrap(dense_.gradient(in(W)));
+  }
+  OpaqueMatrix hessianTimes(const OpaqueMatrix& W, const OpaqueMatrix& V) const override {
+    return OpaqueKernels::wrap(dense_.hessianTimes(in(W), in(V)));
+  }
+  void gradientInto(const OpaqueMatrix& W, OpaqueMatrix& out) const override {
+    dense_.gradientInto(in(W), OpaqueKernels::reveal(out));
+  }
+  void hessianTimesInto(const OpaqueMatrix& W, const OpaqueMatrix& V,
+                        OpaqueMatrix& out) const override {
+    dense_.hessianTimesInto(in(W), in(V), OpaqueKernels::reveal(out));
+  }
+
+ private:
+  static const Eigen::MatrixXcd& in(const OpaqueMatrix& x) { return OpaqueKernels::reveal(x); }
+  ZeitlinHamiltonian dense_;
+};
+
+std::shared_ptr<const LiePoissonSystem<OpaqueSUN>> makeOpaqueZeitlinFluid(Eigen::Index n,
+                                                                          double alpha) {
+  return makeLiePoissonSystem("zeitlin", std::make_shared<const OpaqueZeitlinHamiltonian>(n),
+                              std::make_shared<const ScaledIdentityMetric<OpaqueSUN>>(alpha));
+}
 
 bool sameBits(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b) {
   return a.rows() == b.rows() && a.cols() == b.cols() &&
          std::memcmp(a.data(), b.data(), sizeof(a(0)) * a.size()) == 0;
 }
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-// `steps` DDB Cayley steps of size h on both backends, each state compared bit for bit.
-void expectTheDenseStepsBits(Eigen::Index n, double alpha, double h, int steps,
-                             MatrixLegendreStrategy strategy) {
+/// Every accepted state of a relaxation: its record and the state.
+template <class G>
+struct Record {
+  std::vector<RelaxState> states;
+  std::vector<Eigen::MatrixXcd> matrices;
+  RelaxStop stop = RelaxStop::kFailure;
+};
+
+template <class G, class Reveal>
+Record<G> relaxAndRecord(Relaxation<G>& relaxation, Reveal&& reveal) {
+  Record<G> record;
+  do {
+    record.states.push_back(relaxation.state());
+    record.matrices.push_back(reveal(relaxation.current()));
+  } while (relaxation.advance());
+  record.stop = relaxation.result().stop;
+  return record;
+}
+
+void expectSameRecords(const Record<SUN>& dense, const Record<OpaqueSUN>& opaque,
+                       const std::string& what) {
+  ASSERT_EQ(opaque.states.size(), dense.states.size()) << what;
+  EXPECT_EQ(opaque.stop, dense.stop) << what;
+  for (std::size_t k = 0; k < dense.states.size(); ++k) {
+    const RelaxState &a = dense.states[k], &b = opaque.states[k];
+    ASSERT_EQ(a.k, b.k) << what;
+    for (const auto& [x, y] : {std::pair{a.t, b.t}, {a.h, b.h}, {a.energy, b.energy}}) {
+      EXPECT_TRUE(sameBits(x, y)) << what << ", state " << k;
+    }
+    EXPECT_TRUE(sameBits(a.residual, b.residual) ||
+                (std::isnan(a.residual) && std::isnan(b.residual)))
+        << what << ", state " << k;
+    ASSERT_TRUE(sameBits(opaque.matrices[k], dense.matrices[k])) << what << ", state " << k;
+  }
+}
+
+/// Relaxation with every row of the method table that runs on any backend's matrices, on the
+/// opaque and the dense fluid from the same W0, state by state to the bit: with a fixed h, and
+/// adaptive to a residual tolerance (the step control's energy judge, the probe's residual).
+void expectTheDenseRelaxationsBits(Eigen::Index n, double alpha, double h) {
   const Eigen::MatrixXcd W0 = randomVorticity(n, 9);
-  Ddb<Cayley<SUN>> dense(makeZeitlinFluid(n, alpha), Cayley<SUN>(), LegendreForm::kHamiltonian);
-  dense.legendreSolver().setStrategy(strategy);
-  const OpaqueZeitlinFluid system(OpaqueKernels::Laplacian(n), n, alpha);
-  const Cayley<SUN> retraction;
-  MatrixLegendreSolver<Cayley<SUN>, OpaqueZeitlinFluid> legendre(
-      system, retraction, LegendreForm::kHamiltonian, SolverOptions{});
-  legendre.setStrategy(strategy);
-  MatrixCayleyTransport<SUN, OpaqueZeitlinFluid> transport;
-  Eigen::MatrixXcd W = W0;
-  OpaqueMatrix opaque = OpaqueKernels::wrap(W0);
-  int newton = 0;
-  for (int k = 0; k < steps; ++k) {
-    dense.advance(W, k * h, h);
-    advanceMatrixDdb<SUN>(system, legendre, transport, opaque, k * h, h);
-    newton += legendre.stats().newton;
-    ASSERT_TRUE(sameBits(OpaqueKernels::reveal(opaque), W)) << "step " << k;
+  const auto dense_fluid = makeZeitlinFluid(n, alpha);
+  const auto opaque_fluid = makeOpaqueZeitlinFluid(n, alpha);
+  int rows = 0;
+  for (const MethodInfo& m : kMethods) {
+    if ((m.groups & kBackendMatrixGroups) == 0) continue;
+    ++rows;
+    for (const bool adaptive : {false, true}) {
+      RelaxOptions options;
+      options.max_steps = adaptive ? 400 : 30;
+      options.tolerance = adaptive ? 1e-3 : 0.0;
+      options.control.adaptive = adaptive;
+      const std::string what = std::string(m.name) + ", N = " + std::to_string(n) +
+                               (adaptive ? ", adaptive" : ", fixed h");
+      auto dense_method = makeMethod<SUN>(m, dense_fluid);
+      auto opaque_method = makeMethod<OpaqueSUN>(m, opaque_fluid);
+      Relaxation<SUN> dense(*dense_method, *dense_fluid, W0, h, options);
+      Relaxation<OpaqueSUN> opaque(*opaque_method, *opaque_fluid, OpaqueKernels::wrap(W0), h,
+                                   options);
+      const Record<SUN> a = relaxAndRecord(dense, [](const Eigen::MatrixXcd& W) { return W; });
+      const Record<OpaqueSUN> b =
+          relaxAndRecord(opaque, [](const OpaqueMatrix& W) { return OpaqueKernels::reveal(W); });
+      EXPECT_GT(a.states.size(), 10u) << what;
+      expectSameRecords(a, b, what);
+    }
   }
-  if (strategy == MatrixLegendreStrategy::kNewtonKrylov) {
-    EXPECT_GT(newton, 0);
-  }
+  EXPECT_GE(rows, 1);
 }
 
-TEST(OpaqueBackend, TheDdbCayleyStepTakesTheDenseBackendsBits) {
-  expectTheDenseStepsBits(16, 0.5, 0.05, 40, MatrixLegendreStrategy::kAuto);
-  expectTheDenseStepsBits(33, -0.5, 0.02, 20, MatrixLegendreStrategy::kAuto);
+TEST(OpaqueBackend, EveryMethodForAnyBackendRelaxesWithTheDenseBackendsBits) {
+  expectTheDenseRelaxationsBits(16, 0.5, 0.05);
+  expectTheDenseRelaxationsBits(33, -0.5, 0.02);
 }
 
+// The method table's rows of the kBackendMatrixGroups family build on the opaque group; every
+// other row is refused by name, with the methods that do run there.
+TEST(OpaqueBackend, TheOtherMethodsAreRefusedByName) {
+  const auto fluid = makeOpaqueZeitlinFluid(8, 0.5);
+  for (const MethodInfo& m : kMethods) {
+    if ((m.groups & kBackendMatrixGroups) != 0) {
+      EXPECT_NE(makeMethod<OpaqueSUN>(m, fluid), nullptr) << m.name;
+      continue;
+    }
+    EXPECT_THAT([&] { makeMethod<OpaqueSUN>(m, fluid); },
+                ::testing::ThrowsMessage<InvalidArgument>(::testing::AllOf(
+                    ::testing::HasSubstr("method = " + std::string(m.name)),
+                    ::testing::HasSubstr("written against the matrix backend alone"),
+                    ::testing::EndsWith(": ddb-cay"))))
+        << m.name;
+  }
+  // The Newton search's OrbitNewton is written on dense matrices: refused by name.
+  RelaxOptions options;
+  options.newton = true;
+  options.tolerance = 1e-8;
+  options.max_steps = 10;
+  EXPECT_THAT(
+      [&] { Relaxation<OpaqueSUN>(*fluid, OpaqueKernels::wrap(randomVorticity(8, 1)), options); },
+      ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("newton")));
+}
+
+// Newton–Krylov forced from the first iterate (the certificate's fallback) on both backends.
 TEST(OpaqueBackend, NewtonKrylovTakesTheDenseBackendsBits) {
-  expectTheDenseStepsBits(16, 0.5, 0.05, 10, MatrixLegendreStrategy::kNewtonKrylov);
+  const Eigen::Index n = 16;
+  const double h = 0.05;
+  const Eigen::MatrixXcd W0 = randomVorticity(n, 9);
+  Ddb<Cayley<SUN>> dense(makeZeitlinFluid(n, 0.5), Cayley<SUN>(), LegendreForm::kHamiltonian);
+  Ddb<Cayley<OpaqueSUN>> opaque(makeOpaqueZeitlinFluid(n, 0.5), Cayley<OpaqueSUN>(),
+                                LegendreForm::kHamiltonian);
+  dense.legendreSolver().setStrategy(MatrixLegendreStrategy::kNewtonKrylov);
+  opaque.legendreSolver().setStrategy(MatrixLegendreStrategy::kNewtonKrylov);
+  Eigen::MatrixXcd W = W0;
+  OpaqueMatrix V = OpaqueKernels::wrap(W0);
+  int newton = 0;
+  for (int k = 0; k < 10; ++k) {
+    dense.advance(W, k * h, h);
+    opaque.advance(V, k * h, h);
+    newton += opaque.legendreSolver().stats().newton;
+    ASSERT_TRUE(sameBits(OpaqueKernels::reveal(V), W)) << "step " << k;
+  }
+  EXPECT_GT(newton, 0);
+}
+
+// A relaxation saved part way on the opaque backend and loaded into a fresh one (its method's
+// warm start read for the state's shape) takes the uninterrupted run's steps to the bit.
+TEST(OpaqueBackend, ARelaxationResumedFromItsRecordContinuesToTheBit) {
+  const Eigen::Index n = 12;
+  const auto fluid = makeOpaqueZeitlinFluid(n, 0.5);
+  const OpaqueMatrix W0 = OpaqueKernels::wrap(randomVorticity(n, 4));
+  RelaxOptions options;
+  options.max_steps = 40;
+  options.tolerance = 1e-9;
+  options.control.adaptive = true;
+  auto whole_method = makeMethod<OpaqueSUN>("ddb-cay", fluid);
+  Relaxation<OpaqueSUN> whole(*whole_method, *fluid, W0, 0.05, options);
+  while (whole.advance()) {
+  }
+  auto first_method = makeMethod<OpaqueSUN>("ddb-cay", fluid);
+  Relaxation<OpaqueSUN> first(*first_method, *fluid, W0, 0.05, options);
+  for (int k = 0; k < 17; ++k) ASSERT_TRUE(first.advance());
+  BinaryRecordWriter out;
+  first.save(out);
+  BinaryRecordReader in = BinaryRecordReader::unseal(out.sealed());
+  auto second_method = makeMethod<OpaqueSUN>("ddb-cay", fluid);
+  Relaxation<OpaqueSUN> second(*second_method, *fluid, W0, 0.05, options);
+  second.load(in);
+  EXPECT_TRUE(in.atEnd());
+  while (second.advance()) {
+  }
+  EXPECT_EQ(second.state().k, whole.state().k);
+  EXPECT_TRUE(
+      sameBits(OpaqueKernels::reveal(second.current()), OpaqueKernels::reveal(whole.current())));
+  EXPECT_TRUE(sameBits(second.state().t, whole.state().t));
 }
 
 }  // namespace

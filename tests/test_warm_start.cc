@@ -51,7 +51,7 @@ void checkEveryMethod(const std::shared_ptr<const LiePoissonSystem<G>>& system, 
     BinaryRecordReader in = BinaryRecordReader::unseal(out.sealed());
     auto second = makeMethod<G>(name, system);
     second->reset();
-    second->loadWarmStart(in);
+    second->loadWarmStart(in, middle);
     EXPECT_TRUE(in.atEnd()) << name;
     const Dual<G> resumed = advance(*second, middle, kSteps, h, kSteps);
     EXPECT_TRUE(resumed == expected)

@@ -224,6 +224,10 @@ class Relaxation {
  public:
   using Dual = typename G::template Dual<double>;
 
+  /// Whether the Newton search runs on G's states: OrbitNewton and its preconditioner are
+  /// written on dense matrices (docs/matrix-backend.md, "What runs on any backend").
+  static constexpr bool kNewtonSearch = !isDynamicGroup<G> || isEigenMatrix<Dual>;
+
   /// Starts at mu0 with the step h0 (options: when to stop, how to choose h). Bad arguments
   /// throw InvalidArgument; calls method.reset().
   Relaxation(OneStepMethod<G>& method, const LiePoissonSystem<G>& system, const Dual& mu0,
@@ -245,6 +249,11 @@ class Relaxation {
   Relaxation(const LiePoissonSystem<G>& system, const Dual& mu0, const RelaxOptions& options)
       : system_(system), options_(checked(options)), probing_(true), probe_(system) {
     if (!options.newton) throwInvalid("newton", "false", "this constructor is the Newton search's");
+    if constexpr (!kNewtonSearch) {
+      throwInvalid("newton", "true",
+                   std::string("the Newton search (OrbitNewton) runs on dense matrices, not on ") +
+                       G::kName + "'s");
+    }
     if (options.control.adaptive) {
       throwInvalid("adaptive", "true", "a Newton search chooses its own steps");
     }
@@ -256,7 +265,7 @@ class Relaxation {
                    "a Newton search simulates no time: cap it by max_steps");
     }
     start(mu0, "newton");
-    newton_.emplace(system, probe_.energyRate() < 0 ? 1.0 : -1.0);
+    if constexpr (kNewtonSearch) newton_.emplace(system, probe_.energyRate() < 0 ? 1.0 : -1.0);
   }
 
   /// The accepted state: its index, time, step, energy and residual, and the state itself.
@@ -270,7 +279,9 @@ class Relaxation {
   /// why). A failed step is recorded in the result; the state stays the last accepted one.
   bool advance() {
     if (stopped_) return false;
-    if (newton_) return advanceByNewton();
+    if constexpr (kNewtonSearch) {
+      if (newton_) return advanceByNewton();
+    }
     while (true) {
       if (probing_ && state().residual <= options_.tolerance) return stop(RelaxStop::kSteady);
       if (state().k >= options_.max_steps) return stop(RelaxStop::kStepCap);
@@ -282,8 +293,9 @@ class Relaxation {
           state().energy,
           [&] {
             method_->advance(trial_, state().t, h);
-            if (!trial_.allFinite()) {
-              throw NonFiniteState(method_->name(), -1, state().t, h, trial_);
+            if (!MatrixBackend<Dual>::allFinite(trial_)) {
+              throw NonFiniteState(method_->name(), -1, state().t, h,
+                                   MatrixBackend<Dual>::describe(trial_));
             }
           },
           [&] { return system_.energy(trial_); });
@@ -324,7 +336,7 @@ class Relaxation {
   void save(BinaryRecordWriter& out) const {
     saveRelaxCursor(out, state(), result_.final, result_.steps_rejected, times_);
     if (newton_) {
-      newton_->save(out);
+      if constexpr (kNewtonSearch) newton_->save(out);
     } else {
       control_->save(out);
       method_->saveWarmStart(out);
@@ -334,10 +346,10 @@ class Relaxation {
   void load(BinaryRecordReader& in) {
     loadRelaxCursor(in, cursor(), result_.final, result_.steps_rejected, times_);
     if (newton_) {
-      newton_->load(in);
+      if constexpr (kNewtonSearch) newton_->load(in);
     } else {
       control_->load(in);
-      method_->loadWarmStart(in);
+      method_->loadWarmStart(in, result_.final);
     }
     // The probe as the uninterrupted run left it: evaluated at the accepted state.
     if (probing_) probe_.evaluate(result_.final);
@@ -360,7 +372,7 @@ class Relaxation {
 
   // The first state; `needs` names the option that needs dissipation at mu0 when not steady.
   void start(const Dual& mu0, const char* needs) {
-    requireFinite("mu0", mu0);
+    requireFiniteMatrix("mu0", mu0);
     result_.final = mu0;
     result_.stop = RelaxStop::kFailure;
     cursor().energy = system_.energy(mu0);

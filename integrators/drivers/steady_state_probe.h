@@ -10,6 +10,7 @@
 
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
+#include <ddb/core/matrix_backend.h>
 
 #include <cmath>
 #include <complex>
@@ -28,10 +29,13 @@ class SteadyStateProbe {
   /// evaluates the system's in-place field (no allocation once the size is known).
   void evaluate(const Dual& mu) {
     if constexpr (isDynamicGroup<G>) {
-      w_.resize(mu.rows());
-      out_.resize(mu.rows(), mu.cols());
+      using B = MatrixBackend<Dual>;
+      w_.resize(mu);
+      if (!B::sameShape(out_, mu)) B::zeroLike(out_, mu);
       system_.vectorFieldInto(mu, w_, out_);
-      set(w_.commutator, w_.phi, w_.xi.norm(), w_.argument.norm());
+      // ad*_ξ μ is the commutator [Pμ, ξ]; the pairing is Re tr(AᴴB).
+      setFrom(B::frobeniusNorm(w_.commutator), B::innerProduct(w_.commutator, w_.phi),
+              B::frobeniusNorm(w_.xi), B::frobeniusNorm(w_.argument));
     } else {
       const auto xi = system_.velocity(mu);
       const auto ad = G::adDual(xi, mu).eval();
@@ -47,9 +51,13 @@ class SteadyStateProbe {
  private:
   template <class A, class P>
   void set(const A& ad, const P& phi, double xi_norm, double mu_norm) {
+    setFrom(ad.norm(), std::real(ad.conjugate().cwiseProduct(phi).sum()), xi_norm, mu_norm);
+  }
+  // From ‖ad*_ξ μ‖, ⟨ad*_ξ μ, k♯(ad*_ξ μ)⟩, ‖ξ‖ and ‖μ‖.
+  void setFrom(double ad_norm, double ad_dot_phi, double xi_norm, double mu_norm) {
     const double scale = xi_norm * mu_norm;
-    residual_ = scale > 0 ? ad.norm() / scale : 0.0;
-    energy_rate_ = -std::real(ad.conjugate().cwiseProduct(phi).sum());
+    residual_ = scale > 0 ? ad_norm / scale : 0.0;
+    energy_rate_ = -ad_dot_phi;
   }
 
   const LiePoissonSystem<G>& system_;

@@ -51,7 +51,9 @@ class Composition : public OneStepMethod<G> {
   std::string name() const override { return name_; }
   void reset() override { base_->reset(); }
   void saveWarmStart(BinaryRecordWriter& out) const override { base_->saveWarmStart(out); }
-  void loadWarmStart(BinaryRecordReader& in) override { base_->loadWarmStart(in); }
+  void loadWarmStart(BinaryRecordReader& in, const Dual& state) override {
+    base_->loadWarmStart(in, state);
+  }
 
   Dual step(const Dual& mu, double t, double h) override { return this->stepInPlace(mu, t, h); }
   void advance(Dual& mu, double t, double h) override {

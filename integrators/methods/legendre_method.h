@@ -38,7 +38,13 @@ class LegendreMethod : public OneStepMethod<typename R::Group> {
 
   void reset() override { legendre_.reset(); }
   void saveWarmStart(BinaryRecordWriter& out) const override { legendre_.saveWarmStart(out); }
-  void loadWarmStart(BinaryRecordReader& in) override { legendre_.loadWarmStart(in); }
+  void loadWarmStart(BinaryRecordReader& in, const Dual& state) override {
+    if constexpr (isDynamicGroup<G>) {
+      legendre_.loadWarmStart(in, state);
+    } else {
+      legendre_.loadWarmStart(in);
+    }
+  }
   bool solvesEquations() const override { return true; }
   /// The last Legendre solve's fixed-point sweeps and Newton steps: the one solve of a step
   /// (subclasses that solve more add theirs).

@@ -87,7 +87,7 @@ class MatrixFreeImplicitRungeKutta : public OneStepMethod<G> {
     stage_.setZero(n, n);
     slope_.setZero(n, n);
     for (Dual* m : {&stages_, &next_, &residual_, &delta_}) m->setZero(n, S * n);
-    for (auto& w : field_) w.resize(n);
+    for (auto& w : field_) w.resize(f0_);
   }
 
   // Y_i = μ + h Σ_j a_ij K_j from the blocks of `slopes`, into stage_.

@@ -8,6 +8,7 @@
 
 #include <ddb/core/errors.h>
 #include <ddb/core/group_traits.h>
+#include <ddb/core/matrix_traits.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/exponential.h>
 #include <ddb/integrators/methods/composition.h>
@@ -29,8 +30,15 @@
 namespace ddb {
 
 /// The groups a method runs on: the fixed-size ones (SO3, SE3 and any user group with
-/// static sizes) and the matrix groups with N at run time (SON, SUN).
-enum GroupFamilies : unsigned { kFixedSizeGroups = 1u, kMatrixGroups = 2u };
+/// static sizes), the matrix groups with N at run time (SON, SUN) on dense matrices, and the
+/// matrix groups on another backend's matrices (SUNOn<X>: MPI ranks, the test's entries-free
+/// backend), where only the methods whose whole step is written against MatrixBackend run
+/// (docs/matrix-backend.md, "What runs on any backend").
+enum GroupFamilies : unsigned {
+  kFixedSizeGroups = 1u,
+  kMatrixGroups = 2u,
+  kBackendMatrixGroups = 4u
+};
 
 /// How makeMethod() builds an entry.
 enum class MethodKind {
@@ -76,7 +84,7 @@ struct MethodInfo {
 /// Every method, in the order of the paper's comparison (docs/file-formats.md).
 inline constexpr std::array<MethodInfo, 15> kMethods{{
   {"ddb-cay", "DDB step with the Cayley map (order 1, order 2 at alpha = 0)",
-   kFixedSizeGroups | kMatrixGroups, true, false, false, 1, 2,
+   kFixedSizeGroups | kMatrixGroups | kBackendMatrixGroups, true, false, false, 1, 2,
    MethodKind::kDdb, RetractionKind::kCayley, SchemeKind::kNone, ""},
   {"ddb-exp", "DDB step with exp, dexp^-1 series truncated at order 2 as in the paper",
    kFixedSizeGroups | kMatrixGroups, true, false, false, 1, 2,
@@ -128,7 +136,11 @@ inline constexpr std::array<MethodInfo, 15> kMethods{{
 /// The families G belongs to.
 template <class G>
 constexpr unsigned groupFamilyOf() {
-  return isDynamicGroup<G> ? kMatrixGroups : kFixedSizeGroups;
+  if constexpr (!isDynamicGroup<G>) {
+    return kFixedSizeGroups;
+  } else {
+    return isEigenMatrix<typename G::template Dual<double>> ? kMatrixGroups : kBackendMatrixGroups;
+  }
 }
 
 /// The entry named `name`, or nullptr.
@@ -182,7 +194,16 @@ namespace detail {
 /// The message of a name that is not a method for G's family.
 template <class G>
 [[noreturn]] void throwNotAMethod(const std::string& name) {
-  if constexpr (isDynamicGroup<G>) {
+  if constexpr (groupFamilyOf<G>() == kBackendMatrixGroups) {
+    std::string valid;
+    for (const auto& n : methodNames(kBackendMatrixGroups)) {
+      valid += (valid.empty() ? "" : ", ") + n;
+    }
+    throwInvalid("method", name,
+                 "is not one of the methods whose step is written against the matrix backend "
+                 "alone, which run on " +
+                     std::string(G::kName) + "'s matrices: " + valid);
+  } else if constexpr (isDynamicGroup<G>) {
     std::string valid;
     for (const auto& n : matrixGroupMethodNames()) valid += (valid.empty() ? "" : ", ") + n;
     throwInvalid("method", name, "is not one of the methods for matrix groups: " + valid);
@@ -201,12 +222,15 @@ MethodPointer<G> withRetraction(RetractionKind r, std::shared_ptr<const LiePoiss
   if (r == RetractionKind::kCayley) {
     return std::make_unique<M<Cayley<G>>>(system, Cayley<G>(), args...);
   }
-  if (r == RetractionKind::kExponential) {
-    return std::make_unique<M<Exponential<G>>>(system, Exponential<G>(), args...);
-  }
-  if (r == RetractionKind::kTruncatedExponential2) {
-    return std::make_unique<M<TruncatedExponential<G>>>(system, TruncatedExponential<G>(2),
-                                                        args...);
+  // The exponential's matrix step works in ξ's eigenbasis: dense matrices only.
+  if constexpr (groupFamilyOf<G>() != kBackendMatrixGroups) {
+    if (r == RetractionKind::kExponential) {
+      return std::make_unique<M<Exponential<G>>>(system, Exponential<G>(), args...);
+    }
+    if (r == RetractionKind::kTruncatedExponential2) {
+      return std::make_unique<M<TruncatedExponential<G>>>(system, TruncatedExponential<G>(2),
+                                                          args...);
+    }
   }
   throw std::logic_error("method table: a retraction the group has not");
 }
@@ -241,36 +265,46 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(const MethodInfo& method,
   if constexpr (!isDynamicGroup<G>) {
     if (system->lagrangian()) form = LegendreForm::kLagrangian;
   }
-  switch (method.kind) {
-    case MethodKind::kDdb:
+  // On another backend's matrices only the rows of that family are built (the family check
+  // above refused the others); the other kinds are not even compiled for such a group.
+  constexpr bool kDenseOnly = groupFamilyOf<G>() != kBackendMatrixGroups;
+  if constexpr (!kDenseOnly) {
+    if (method.kind == MethodKind::kDdb) {
       return detail::withRetraction<G, Ddb>(method.retraction, system, form);
-    case MethodKind::kLinearlyImplicitDdb:
-      return detail::withRetraction<G, LinearlyImplicitDdb>(method.retraction, system, form);
-    case MethodKind::kSymmetricDdb:
-      return detail::withRetraction<G, SymmetricDdb>(method.retraction, system, form);
-    case MethodKind::kPaperSymmetricDdb:
-      if constexpr (!isDynamicGroup<G>) {
-        return detail::withRetraction<G, PaperSymmetricDdb>(method.retraction, system);
-      }
-      break;
-    case MethodKind::kComposition: {
-      const MethodInfo* base = findMethod(method.base);
-      if (base == nullptr) throw std::logic_error("method table: no base for " + name);
-      return std::make_unique<Composition<G>>(name, makeMethod<G>(*base, system),
-                                              detail::schemeOf(method.scheme));
     }
-    case MethodKind::kExplicitRk4:
-      return std::make_unique<ExplicitRungeKutta<G, 4>>(system, kClassicalRk4);
-    case MethodKind::kLobattoIIIC:
-      if constexpr (isDynamicGroup<G>) {
-        return std::make_unique<MatrixFreeImplicitRungeKutta<G, 3>>(system, kLobattoIIIC3);
-      } else {
-        return std::make_unique<ImplicitRungeKutta<G, 3>>(system, kLobattoIIIC3);
+    throw std::logic_error("method table: " + name + " is marked for any backend but not built");
+  } else {
+    switch (method.kind) {
+      case MethodKind::kDdb:
+        return detail::withRetraction<G, Ddb>(method.retraction, system, form);
+      case MethodKind::kLinearlyImplicitDdb:
+        return detail::withRetraction<G, LinearlyImplicitDdb>(method.retraction, system, form);
+      case MethodKind::kSymmetricDdb:
+        return detail::withRetraction<G, SymmetricDdb>(method.retraction, system, form);
+      case MethodKind::kPaperSymmetricDdb:
+        if constexpr (!isDynamicGroup<G>) {
+          return detail::withRetraction<G, PaperSymmetricDdb>(method.retraction, system);
+        }
+        break;
+      case MethodKind::kComposition: {
+        const MethodInfo* base = findMethod(method.base);
+        if (base == nullptr) throw std::logic_error("method table: no base for " + name);
+        return std::make_unique<Composition<G>>(name, makeMethod<G>(*base, system),
+                                                detail::schemeOf(method.scheme));
       }
-    case MethodKind::kReference:
-      return std::make_unique<ReferenceSolver<G>>(system);
+      case MethodKind::kExplicitRk4:
+        return std::make_unique<ExplicitRungeKutta<G, 4>>(system, kClassicalRk4);
+      case MethodKind::kLobattoIIIC:
+        if constexpr (isDynamicGroup<G>) {
+          return std::make_unique<MatrixFreeImplicitRungeKutta<G, 3>>(system, kLobattoIIIC3);
+        } else {
+          return std::make_unique<ImplicitRungeKutta<G, 3>>(system, kLobattoIIIC3);
+        }
+      case MethodKind::kReference:
+        return std::make_unique<ReferenceSolver<G>>(system);
+    }
+    throw std::logic_error("method table: " + name + " cannot be built on this group");
   }
-  throw std::logic_error("method table: " + name + " cannot be built on this group");
 }
 
 /// makeMethod for a name of the table; InvalidArgument naming it if it is not one.

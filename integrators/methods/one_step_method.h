@@ -6,6 +6,7 @@
 
 #include <ddb/core/binary_record.h>
 #include <ddb/core/errors.h>
+#include <ddb/core/matrix_backend.h>
 
 #include <Eigen/Core>
 #include <cmath>
@@ -13,23 +14,6 @@
 #include <vector>
 
 namespace ddb {
-
-/// Sets the entries of `mu` (real and imaginary parts alike) that are subnormal, 0 < |x| <
-/// 2^-1022, to zero of the same sign, and changes no other bit. A decaying component that
-/// reaches the subnormal range stays there (each step rounds it back to a few multiples of
-/// 2^-1074) and every later step pays the CPU's slow path on it: 1.4 us against 0.065 us a
-/// rigid-body ddb-cay step (issue 42). A run whose states stay out of that range is
-/// unchanged to the bit; a flushed entry moves by less than 2^-1022.
-template <class Dual>
-void flushSubnormals(Dual& mu) {
-  using Real = typename Eigen::NumTraits<typename Dual::Scalar>::Real;
-  constexpr Eigen::Index kParts = Eigen::NumTraits<typename Dual::Scalar>::IsComplex ? 2 : 1;
-  // std::complex<Real> is laid out as Real[2] (C++17 [complex.numbers]/4).
-  Real* x = reinterpret_cast<Real*>(mu.data());
-  for (Eigen::Index i = 0; i < kParts * mu.size(); ++i) {
-    if (std::fpclassify(x[i]) == FP_SUBNORMAL) x[i] = std::copysign(Real(0), x[i]);
-  }
-}
 
 template <class G>
 class OneStepMethod {
@@ -47,8 +31,10 @@ class OneStepMethod {
   /// uninterrupted one exactly: docs/file-formats.md, "Checkpoints"). Methods without one
   /// write nothing.
   virtual void saveWarmStart(BinaryRecordWriter&) const {}
-  /// Restores what saveWarmStart wrote; throws CorruptRecord if it is not such a record.
-  virtual void loadWarmStart(BinaryRecordReader&) {}
+  /// Restores what saveWarmStart wrote, for a run that continues from `state` (a warm start
+  /// that holds matrices reads them in its shape and, distributed, layout); throws
+  /// CorruptRecord if it is not such a record.
+  virtual void loadWarmStart(BinaryRecordReader&, const Dual& /*state*/) {}
   /// μ(t + h) from μ(t). Throws SolveFailure (step index -1) if an implicit solve fails.
   virtual Dual step(const Dual& mu, double t, double h) = 0;
   /// μ ← μ(t + h) in place; integrate() calls this. A method that overrides it can step
@@ -79,11 +65,12 @@ class OneStepMethod {
 template <class G, class Observer>
 void integrate(OneStepMethod<G>& method, const typename G::template Dual<double>& mu0, double t0,
                double h, long steps, Observer&& observer) {
-  requireFinite("mu0", mu0);
+  requireFiniteMatrix("mu0", mu0);
   requireFinite("t0", t0);
   requirePositive("h", h);
   if (steps < 0) throwInvalid("steps", std::to_string(steps), "must be >= 0");
   method.reset();
+  using B = MatrixBackend<typename G::template Dual<double>>;
   typename G::template Dual<double> mu = mu0;
   observer(0L, t0, mu);
   for (long k = 0; k < steps; ++k) {
@@ -93,10 +80,13 @@ void integrate(OneStepMethod<G>& method, const typename G::template Dual<double>
     } catch (const SolveFailure& failure) {
       failure.rethrowAtStep(k, t, h);
     }
-    if (!mu.allFinite()) {
-      throw NonFiniteState(method.name(), k, t, h, mu);
-    }
-    flushSubnormals(mu);
+    if (!B::allFinite(mu)) throw NonFiniteState(method.name(), k, t, h, B::describe(mu));
+    // A decaying component that reaches the subnormal range stays there (each step rounds it
+    // back to a few multiples of 2^-1074) and every later step would pay the CPU's slow path
+    // on it: 1.4 us against 0.065 us a rigid-body ddb-cay step (issue 42). A run whose states
+    // stay out of that range is unchanged to the bit; a flushed entry moves by less than
+    // 2^-1022.
+    B::flushSubnormals(mu);
     observer(k + 1, t0 + static_cast<double>(k + 1) * h, mu);
   }
 }

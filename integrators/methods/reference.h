@@ -105,7 +105,7 @@ class ReferenceSolver : public OneStepMethod<G> {
     out.put(dt_);
     out.put(substeps_);
   }
-  void loadWarmStart(BinaryRecordReader& in) override {
+  void loadWarmStart(BinaryRecordReader& in, const Dual&) override {
     in.expectTag("reference");
     in.get(dt_);
     in.get(substeps_);
@@ -120,7 +120,7 @@ class ReferenceSolver : public OneStepMethod<G> {
     State& x = state_;
     if constexpr (isDynamicGroup<G>) {
       x.resize(std::size_t(mu.size() * OdeintSystem<G>::kReals));
-      workspace_.field.resize(mu.rows());
+      workspace_.field.resize(mu);
     }
     const OdeintSystem<G> rhs{*system_, mu.rows(), mu.cols(), &workspace_};
     OdeintSystem<G>::map(x, mu.rows(), mu.cols()) = mu;

@@ -39,7 +39,7 @@ class ExplicitRungeKutta : public OneStepMethod<G> {
   void advance(Dual& mu, double, double h) override {
     if constexpr (isDynamicGroup<G>) {
       MatrixStages& w = matrix_;
-      w.field.resize(mu.rows());
+      w.field.resize(mu);
       runStages(mu, h, w.slopes, w.stage, w.sum,
                 [&](const Dual& x, Dual& out) { system_->vectorFieldInto(x, w.field, out); });
     } else {

@@ -172,8 +172,8 @@ class PaperSymmetricDdb : public LegendreMethod<R> {
     out.put(momentum_);
     out.put(output_);
   }
-  void loadWarmStart(BinaryRecordReader& in) override {
-    LegendreMethod<R>::loadWarmStart(in);
+  void loadWarmStart(BinaryRecordReader& in, const Dual& state) override {
+    LegendreMethod<R>::loadWarmStart(in, state);
     in.get(started_);
     in.get(h_);
     in.get(xi_);

@@ -35,6 +35,7 @@
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/core/matrix_backend.h>
+#include <ddb/core/matrix_traits.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/exponential.h>
 #include <ddb/groups/skew_hermitian_eigenbasis.h>
@@ -77,7 +78,7 @@ class MatrixLegendreSolver {
   static constexpr bool kProductForm = kSweep == MatrixSweep::kProductForm;
   static constexpr bool kEigenbasisSweep = kSweep == MatrixSweep::kEigenbasis;
   /// Dense matrices (the eigendecompositions need them).
-  static constexpr bool kDense = std::is_same_v<Dual, typename G::template Dual<double>>;
+  static constexpr bool kDense = isEigenMatrix<Dual>;
   static_assert(kDense || MatrixRetraction<R>::kAnyBackend,
                 "this retraction's matrix step needs dense matrices");
 
@@ -123,14 +124,25 @@ class MatrixLegendreSolver {
       predictors_[i].save(out);
     }
   }
-  /// Restores what saveWarmStart wrote (a dense solver, for states of the record's size).
-  void loadWarmStart(BinaryRecordReader& in) {
-    static_assert(kDense, "a distributed solver loads for its states' layout: (in, like)");
-    readWarmStart(in, nullptr);
+  /// Restores what saveWarmStart wrote, for states of `like`'s size (and, distributed,
+  /// layout); a record of another size is corrupt.
+  void loadWarmStart(BinaryRecordReader& in, const Dual& like) {
+    in.expectTag("matrix legendre solver");
+    const auto rows = in.get<std::int64_t>(), cols = in.get<std::int64_t>();
+    if (rows < 0 || cols != rows) throw CorruptRecord("a negative or non-square state size");
+    reset();
+    if (rows > 0) {
+      if (B::rows(like) != rows) throw CorruptRecord("a warm start of another size than the state");
+      allocate(like);
+    }
+    in.get(rate_);
+    in.get(clock_);
+    for (std::size_t i = 0; i < kPredictors; ++i) {
+      in.get(predictor_h_[i]);
+      in.get(last_used_[i]);
+      predictors_[i].load(in, p_);
+    }
   }
-  /// Restores it for states of `like`'s size and layout (a distributed solver); a record of
-  /// another size is corrupt.
-  void loadWarmStart(BinaryRecordReader& in, const Dual& like) { readWarmStart(in, &like); }
   void setStrategy(MatrixLegendreStrategy strategy) {
     if (strategy == MatrixLegendreStrategy::kExternal && !external_) {
       throw InvalidArgument("strategy = external is invalid: set a solver by setExternalSolver");
@@ -338,27 +350,6 @@ class MatrixLegendreSolver {
       B::zeroLike(*m, like);
     }
     forgetPredictions();
-  }
-
-  void readWarmStart(BinaryRecordReader& in, const Dual* like) {
-    in.expectTag("matrix legendre solver");
-    const auto rows = in.get<std::int64_t>(), cols = in.get<std::int64_t>();
-    if (rows < 0 || cols != rows) throw CorruptRecord("a negative or non-square state size");
-    reset();
-    if (rows > 0 && like != nullptr) {
-      if (B::rows(*like) != rows)
-        throw CorruptRecord("a warm start of another size than the state");
-      allocate(*like);
-    } else if (rows > 0) {
-      if constexpr (kDense) allocate(Dual::Zero(rows, cols));
-    }
-    in.get(rate_);
-    in.get(clock_);
-    for (std::size_t i = 0; i < kPredictors; ++i) {
-      in.get(predictor_h_[i]);
-      in.get(last_used_[i]);
-      predictors_[i].load(in, p_);
-    }
   }
 
   // Corrections scale with h, so only same-h ones extrapolate: one predictor per step size,
