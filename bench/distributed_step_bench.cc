@@ -1,4 +1,5 @@
-// The distributed DDB Cayley step (distributed/distributed_ddb.h) timed against one
+// The DDB Cayley step on distributed matrices (Ddb<Cayley<DistributedSUN>> of the distributed
+// fluid, distributed/distributed_zeitlin_fluid.h) timed against one
 // distributed complex N×N product (pzgemm_) in the same run, on the ranks it is started
 // with (docs/distributed.md, "Measured"): products per step = step time / product time;
 // strong scaling = the step time on 1 rank over that on P. On one rank it also times the
@@ -13,7 +14,7 @@
 // ProcessGrid's own, rows ≥ cols).
 //
 //   mpiexec -n P distributed-step-bench N [steps] [alpha] [block] [grid_rows]
-#include <ddb/distributed/distributed_ddb.h>
+#include <ddb/distributed/distributed_zeitlin_fluid.h>
 #include <ddb/distributed/process_grid.h>
 #include <ddb/integrators/methods/ddb.h>
 #include <ddb/systems/zeitlin_fluid.h>
@@ -74,7 +75,8 @@ int runBench(int argc, char** argv, const ProcessGrid& grid) {
   multiply(a, b, c);  // untimed: BLACS sets up its buffers on the first call
   const PerCall product = perCall(grid, 10, [&] { multiply(a, b, c); });
 
-  DistributedDdb ddb(W.layout(), alpha, options);
+  Ddb<Cayley<DistributedSUN>> ddb(makeDistributedZeitlinFluid(W.layout(), alpha),
+                                  Cayley<DistributedSUN>(), LegendreForm::kHamiltonian, options);
   long k = 0, sweeps = 0, refinements = 0, newton = 0;
   for (; k < kWarmUp; ++k) ddb.advance(W, k * h, h);
   const PerCall step = perCall(grid, steps, [&] {

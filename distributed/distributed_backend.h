@@ -61,7 +61,11 @@ struct MatrixBackend<DistributedMatrix> {
         c, [&](int j) -> const Entries& { return term(j).local(); }, count, out.local());
   }
   /// This rank's entries, for an error message.
-  static FormattedValue describe(const X& x) { return Dense::describe(x.local()); }
+  /// Named by what every rank agrees on (collective), not by a rank's own block of entries.
+  static FormattedValue describe(const X& x) {
+    return {"a " + std::to_string(x.size()) + "x" + std::to_string(x.size()) +
+            " distributed matrix whose Frobenius norm is " + formatValue(frobeniusNorm(x))};
+  }
 
   static bool sameShape(const X& x, const X& like) { return x.sameLayout(like); }
   static void zeroLike(X& x, const X& like) { x = DistributedMatrix(like.layout()); }

@@ -1,21 +1,26 @@
-// Zeitlin's fluid (systems/zeitlin_fluid.h) on matrices distributed over MPI ranks: the
-// fluid on the distributed backend (systems/zeitlin_fluid_on_backend.h) with
-// DistributedPoissonSolver's Poisson solve, the system the distributed DDB Cayley step is
-// instantiated with (docs/distributed.md, "One step formula").
+// Zeitlin's fluid (systems/zeitlin_fluid.h) on matrices distributed over MPI ranks: the fluid
+// on any backend (systems/zeitlin_fluid_on_backend.h) with DistributedPoissonSolver's Poisson
+// solve, an ordinary LiePoissonSystem on SU(N) with distributed states (DistributedSUN). The
+// method table's methods for any backend (makeMethod) and Relaxation run on it; every call is
+// collective (docs/distributed.md, "One step formula").
 #pragma once
 
 #include <ddb/distributed/distributed_backend.h>
 #include <ddb/distributed/distributed_poisson_solver.h>
 #include <ddb/systems/zeitlin_fluid_on_backend.h>
 
+#include <memory>
+
 namespace ddb {
 
-class DistributedZeitlinFluid
-    : public ZeitlinFluidOnBackend<DistributedMatrix, DistributedPoissonSolver> {
- public:
-  /// The fluid of `layout`'s size with k♯ = α·Id; collective.
-  DistributedZeitlinFluid(const BlockCyclicLayout& layout, double alpha)
-      : ZeitlinFluidOnBackend(DistributedPoissonSolver(layout), layout.size(), alpha) {}
-};
+/// SU(N) with its states distributed block-cyclically over MPI ranks.
+using DistributedSUN = SUNOn<DistributedMatrix>;
+
+/// The fluid of `layout`'s size with k♯ = α·Id; collective.
+inline std::shared_ptr<const LiePoissonSystem<DistributedSUN>> makeDistributedZeitlinFluid(
+    const BlockCyclicLayout& layout, double alpha) {
+  return makeZeitlinFluidOn<DistributedMatrix>(DistributedPoissonSolver(layout), layout.size(),
+                                               alpha);
+}
 
 }  // namespace ddb

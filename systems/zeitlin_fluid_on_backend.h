@@ -1,90 +1,75 @@
 // Zeitlin's fluid (systems/zeitlin_fluid.h) on any matrix backend (docs/matrix-backend.md),
-// given that backend's Poisson solve: the system the matrix-free DDB Cayley step
-// (MatrixLegendreSolver, MatrixCayleyTransport, advanceMatrixDdb) is instantiated with off
-// the dense matrices: on MPI ranks (distributed/distributed_zeitlin_fluid.h) and on the
-// test backend without element access (tests/test_opaque_backend.cc). It evaluates the
-// dense system's formulas through the backend: ξ = P ∂H/∂μ(Pμ) (matrixVelocityInto) with
-// ∂H/∂W = −Δ⁻¹W/ħ (zeitlinVelocityInto), and hφ/2 = k♯([p, a]) with k♯ = α·Id, the fluid's
-// metric (ScaledIdentityMetric).
+// given that backend's Poisson solve: the same system as makeZeitlinFluid's, a
+// LiePoissonSystem on SUNOn<X> with k♯ = α·Id (ScaledIdentityMetric), whose Hamiltonian
+// evaluates through the backend: H(W) = Re tr(WP)/(2ħ) = −Re⟨P, W⟩/(2ħ) (P skew-Hermitian),
+// ∂H/∂W = −Δ⁻¹W/ħ (zeitlinVelocityInto), the Hessian the same map. On MPI ranks it is the
+// distributed fluid (distributed/distributed_zeitlin_fluid.h); every method of the method
+// table's kBackendMatrixGroups family and Relaxation run on it.
 #pragma once
 
+#include <ddb/core/dissipation_metric.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/core/matrix_backend.h>
 #include <ddb/groups/sun.h>
 #include <ddb/systems/zeitlin_fluid.h>
 
+#include <memory>
 #include <utility>
 
 namespace ddb {
 
-/// The fluid on matrices X, with `Poisson::solve(const X& W, X& out)` solving Δ out = W.
-/// Every function is collective where the backend's are.
+/// Zeitlin's Hamiltonian on matrices X, with `Poisson::solve(const X& W, X& out)` solving
+/// Δ out = W for a skew-Hermitian W. Every function is collective where the backend's are;
+/// value() keeps the stream matrix in a workspace (one evaluation at a time).
 template <class X, class Poisson>
-class ZeitlinFluidOnBackend {
+class ZeitlinHamiltonianOn final : public Hamiltonian<SUNOn<X>> {
  public:
-  using Dual = X;
-  using Algebra = X;
   using B = MatrixBackend<X>;
 
-  ZeitlinFluidOnBackend(Poisson poisson, Eigen::Index n, double alpha)
-      : hamiltonian_(std::move(poisson), n), alpha_(requireFinite("alpha", alpha)) {}
+  ZeitlinHamiltonianOn(Poisson poisson, Eigen::Index n)
+      : poisson_(std::move(poisson)), hbar_(zeitlinHbar(n)) {}
 
-  double hbar() const { return hamiltonian_.hbar; }
-  double alpha() const { return alpha_; }
+  double hbar() const { return hbar_; }
 
-  /// ξ = P ∂H/∂μ(P p) into xi, P p into `argument`.
-  void velocityInto(const Dual& p, Dual& argument, Algebra& xi) const {
-    matrixVelocityInto<SUN>(hamiltonian_, p, argument, xi);
+  /// H(W) = −Re⟨P, W⟩/(2ħ), P = Δ⁻¹W: one Poisson solve.
+  double value(const X& W) const override {
+    if (!B::sameShape(stream_, W)) B::zeroLike(stream_, W);
+    poisson_.solve(W, stream_);
+    return -B::innerProduct(stream_, W) / (2.0 * hbar_);
   }
-  /// P D²H(P p)[P v] given `argument` = P p.
-  void velocityDerivativeInto(const Dual& argument, const Dual& v, Dual& direction,
-                              Algebra& out) const {
-    matrixVelocityDerivativeInto<SUN>(hamiltonian_, argument, v, direction, out);
+  X gradient(const X& W) const override {
+    X out;
+    B::zeroLike(out, W);
+    gradientInto(W, out);
+    return out;
   }
-  /// out = hφ/2 = k♯([p, a]) from the product ap = a p; no product.
-  void halfStepDissipationInto(const Dual& ap, Dual& commutator, Algebra& out) const {
-    SUN::commutatorFromProduct(ap, commutator);
-    B::scale(alpha_, commutator, out);
+  X hessianTimes(const X& W, const X& V) const override {
+    X out;
+    B::zeroLike(out, W);
+    hessianTimesInto(W, V, out);
+    return out;
   }
-
-  /// The stream matrix P = Δ⁻¹W of a skew-Hermitian W.
-  void streamMatrixInto(const Dual& W, Dual& P) const { hamiltonian_.poisson.solve(W, P); }
-  /// E = Re tr(WP)/(2N) = −Re⟨P, W⟩/(2N) (P skew-Hermitian), given P.
-  static double energy(const Dual& W, const Dual& P) {
-    return -B::innerProduct(P, W) / (2.0 * double(B::rows(W)));
+  void gradientInto(const X& W, X& out) const override {
+    zeitlinVelocityInto(poisson_, hbar_, W, out);
   }
-  /// dH/dt = −α‖[P, W]‖_F²/ħ² of the flow at W, H = N·E/ħ (SteadyStateProbe::energyRate:
-  /// −k(ad*_ξ W, ad*_ξ W) with ad*_ξ W = −[W, P]/ħ and k♯ = α·Id), given ‖[P, W]‖_F.
-  double energyRate(double commutator_norm) const {
-    const double rate = commutator_norm / hbar();
-    return -alpha_ * rate * rate;
-  }
-  /// ‖[P, W]‖_F = ‖[W, P]‖_F, [W, P] = (PW)ᴴ − PW (both skew-Hermitian): one product;
-  /// `product` and `commutator` are workspaces of W's shape.
-  static double commutatorNorm(const Dual& W, const Dual& P, Dual& product, Dual& commutator) {
-    B::multiply(P, W, product);
-    SUN::commutatorFromProduct(product, commutator);
-    return B::frobeniusNorm(commutator);
+  void hessianTimesInto(const X&, const X& V, X& out) const override {
+    zeitlinVelocityInto(poisson_, hbar_, V, out);
   }
 
  private:
-  // ∂H/∂W = −Δ⁻¹W/ħ (the Poisson solver keeps workspaces).
-  struct Hamiltonian {
-    Hamiltonian(Poisson solver, Eigen::Index n)
-        : poisson(std::move(solver)), hbar(zeitlinHbar(n)) {}
-    void gradientInto(const Dual& W, Dual& out) const {
-      zeitlinVelocityInto(poisson, hbar, W, out);
-    }
-    void hessianTimesInto(const Dual&, const Dual& V, Dual& out) const {
-      zeitlinVelocityInto(poisson, hbar, V, out);
-    }
-    mutable Poisson poisson;
-    double hbar;
-  };
-
-  Hamiltonian hamiltonian_;
-  double alpha_;
+  mutable Poisson poisson_;  // keeps workspaces
+  double hbar_;
+  mutable X stream_;
 };
+
+/// Zeitlin's fluid at resolution n on matrices X with k♯ = α·Id, given X's Poisson solve.
+template <class X, class Poisson>
+std::shared_ptr<const LiePoissonSystem<SUNOn<X>>> makeZeitlinFluidOn(Poisson poisson,
+                                                                     Eigen::Index n, double alpha) {
+  return makeLiePoissonSystem(
+      "zeitlin", std::make_shared<const ZeitlinHamiltonianOn<X, Poisson>>(std::move(poisson), n),
+      std::make_shared<const ScaledIdentityMetric<SUNOn<X>>>(alpha));
+}
 
 }  // namespace ddb

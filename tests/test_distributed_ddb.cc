@@ -1,17 +1,19 @@
-// The distributed DDB Cayley step (distributed/distributed_ddb.h) on 1–4 ranks against the
-// dense step, Ddb<Cayley<SUN>> (docs/distributed.md, "One step formula"): from the seeded
+// The DDB Cayley step on distributed matrices, Ddb<Cayley<DistributedSUN>> of the distributed
+// fluid (distributed/distributed_zeitlin_fluid.h, built by makeMethod), on 1–4 ranks against
+// the dense step, Ddb<Cayley<SUN>> (docs/distributed.md, "One step formula"): from the seeded
 // random vorticity, 100 steps of fluid-relax's default h at N = 16, 33, 64 with block sizes
 // that do not divide N, α = 0, 0.5, −0.5. The final W agrees to 1e-13 relative, the
 // products the Legendre solve takes (sweeps and frozen-solution refinements) agree step by
 // step up to a stopping test decided the other way at the tolerance's edge, and the
 // spectrum (Eigen's eigensolver on the gathered W) moves by at most 1e-12. The energy, the
-// residual r and dH/dt that fluid-relax-mpi's step control reads, evaluated distributed, are
-// the serial SteadyStateProbe's (which pairs ad*_ξ W with the metric's φ).
-#include <ddb/distributed/distributed_ddb.h>
+// residual r and dH/dt that Relaxation's step control reads, evaluated distributed by the
+// same SteadyStateProbe on the distributed system, are the serial ones.
+#include <ddb/distributed/distributed_zeitlin_fluid.h>
 #include <ddb/distributed/process_grid.h>
 #include <ddb/groups/sun.h>
 #include <ddb/integrators/drivers/steady_state_probe.h>
 #include <ddb/integrators/methods/ddb.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <gtest/gtest.h>
@@ -68,10 +70,12 @@ TEST_P(DistributedDdbTest, AgreesWithTheDenseStepSweepForSweep) {
 
   DistributedMatrix Wd(grid_, n(), block());
   Wd.scatterFrom(W0);
-  DistributedDdb distributed(Wd.layout(), alpha());
+  const auto method =
+      makeMethod<DistributedSUN>("ddb-cay", makeDistributedZeitlinFluid(Wd.layout(), alpha()));
+  const auto& distributed = dynamic_cast<const Ddb<Cayley<DistributedSUN>>&>(*method);
   int dense_total = 0, distributed_total = 0;
   for (int k = 0; k < kSteps; ++k) {
-    distributed.advance(Wd, k * h, h);
+    method->advance(Wd, k * h, h);
     const LegendreStats& stats = distributed.legendreSolver().stats();
     const int work = 2 * stats.fixed_point + stats.refinements;
     // Products round differently (pzgemm's blocks), so a stopping test at the tolerance's
@@ -111,14 +115,12 @@ TEST_P(DistributedDdbTest, EnergyResidualAndRateAreTheSerialProbes) {
 
   DistributedMatrix W(grid_, n(), block());
   W.scatterFrom(W0);
-  DistributedMatrix P(W.layout()), product(W.layout()), commutator(W.layout());
-  const DistributedZeitlinFluid fluid(W.layout(), alpha());
-  fluid.streamMatrixInto(W, P);
-  using B = MatrixBackend<DistributedMatrix>;
-  const double energy = DistributedZeitlinFluid::energy(W, P) * n() / fluid.hbar();
-  const double norm = DistributedZeitlinFluid::commutatorNorm(W, P, product, commutator);
-  const double residual = norm / (B::frobeniusNorm(P) * B::frobeniusNorm(W));
-  const double rate = fluid.energyRate(norm);
+  const auto fluid = makeDistributedZeitlinFluid(W.layout(), alpha());
+  SteadyStateProbe<DistributedSUN> distributed(*fluid);
+  distributed.evaluate(W);
+  const double energy = fluid->energy(W);
+  const double residual = distributed.residual();
+  const double rate = distributed.energyRate();
   const auto relative = [](double a, double b) { return std::abs(a - b) / std::abs(b); };
   EXPECT_LT(relative(energy, system->energy(W0)), 1e-13);
   EXPECT_LT(relative(residual, probe.residual()), 1e-13);

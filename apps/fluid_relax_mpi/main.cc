@@ -1,22 +1,23 @@
-// fluid-relax-mpi: fluid-relax's ddb-cay relaxation with every N×N matrix distributed
-// block-cyclically over the ranks of an MPI job (docs/distributed.md, "fluid-relax-mpi").
-// The step is the library's one DDB step on distributed matrices (DistributedDdb), accepted
-// or rejected by Relaxation's rule (attemptStep: fixed steps, or --adaptive's energy step
-// control); the command line, its checks and the files are fluid-relax's
+// fluid-relax-mpi: fluid-relax's relaxation with every N×N matrix distributed block-cyclically
+// over the ranks of an MPI job (docs/distributed.md, "fluid-relax-mpi"). The run is the
+// library's own: the distributed fluid (makeDistributedZeitlinFluid, a LiePoissonSystem on
+// DistributedSUN), the method of --method built by makeMethod (the method table's methods for
+// any backend) and Relaxation (fixed steps, --adaptive's energy step control, --until-steady),
+// as fluid-relax calls them; the command line, its checks and the files are fluid-relax's
 // (docs/file-formats.md), written by rank 0 from the states gathered there for the history
-// rows and at the end; summary.json adds mpi_ranks, process_grid and block_size. The energy
-// (for energy rises and the step control) and the residual (for --until-steady and the step
-// control) of every step are evaluated distributed. Exit statuses as
-// fluid-relax's, agreed by every rank: 2 bad input on any rank (nothing written), 1 a failed
-// step or a file rank 0 could not write, 130/143 a SIGINT/SIGTERM on any rank (outputs and a
-// checkpoint written); anything unexpected on one rank ends the job (MPI_Abort). Checkpoints
-// are fluid-relax's record (docs/distributed.md, "Checkpoints"), so either app resumes the
-// other's; with --h5, rank 0 appends fluid.hdf5's frames as fluid-relax does.
-#include <ddb/distributed/distributed_ddb.h>
+// rows and at the end; summary.json adds mpi_ranks, process_grid and block_size. Exit
+// statuses as fluid-relax's, agreed by every rank: 2 bad input on any rank (nothing written),
+// 1 a failed step or a file rank 0 could not write, 130/143 a SIGINT/SIGTERM on any rank
+// (outputs and a checkpoint written); anything unexpected on one rank ends the job
+// (MPI_Abort). Checkpoints are Relaxation's record (docs/distributed.md, "Checkpoints"), so
+// either app resumes the other's; with --h5, rank 0 appends fluid.hdf5's frames as fluid-relax
+// does.
+#include <ddb/distributed/distributed_zeitlin_fluid.h>
 #include <ddb/distributed/process_grid.h>
 #include <ddb/distributed/rank_zero_record_reader.h>
 #include <ddb/integrators/drivers/relax.h>
 #include <ddb/integrators/drivers/run.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <mpi.h>
 #include <spdlog/spdlog.h>
@@ -27,6 +28,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <memory>
 #include <optional>
 
 #include "common/atomic_file.h"
@@ -49,7 +51,6 @@ namespace {
 using namespace ddb;
 using namespace ddb::fluid;
 using namespace ddb::fluid_mpi;
-using B = MatrixBackend<DistributedMatrix>;
 
 // What rank 0 makes of gathered states: fluid-relax's history rows (history.csv, and
 // fluid.hdf5 with --h5) and final files.
@@ -93,6 +94,19 @@ StepFlags agreeOnFlags(const ProcessGrid& grid, StepFlags mine) {
   return {values[0], values[1], values[2]};
 }
 
+/// The run's result with its final state gathered (whole on rank 0): what the summary reads.
+RelaxResult<SUN> gathered(const RelaxResult<DistributedSUN>& result) {
+  RelaxResult<SUN> whole;
+  whole.final = result.final.gather();
+  whole.last = result.last;
+  whole.stop = result.stop;
+  whole.steps_rejected = result.steps_rejected;
+  whole.runtime_s = result.runtime_s;
+  whole.failure = result.failure;
+  whole.failed_step = result.failed_step;
+  return whole;
+}
+
 int relax(MpiRun& run, const ProcessGrid& grid) {
   const auto start = std::chrono::steady_clock::now();
   const Options& o = run.options;
@@ -101,18 +115,26 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   const bool root = grid.rank() == 0;
   const Eigen::Index n = run.n;
 
-  DistributedMatrix W(grid, static_cast<int>(n), run.block);
-  DistributedMatrix trial(W.layout()), P(W.layout()), product(W.layout()), commutator(W.layout());
-  DistributedDdb ddb(W.layout(), s.alpha);
-  const DistributedZeitlinFluid& fluid = ddb.system();
-  // The cursor of fluid-relax's Relaxation, kept alike so that the checkpoints are its
-  // record (docs/file-formats.md, "Checkpoints"): the state's record, the step control and
-  // the step times.
-  RelaxResult<SUN> result;
-  RelaxState& at = result.last;
-  EnergyStepControl control(s.relax.control, s.h);
-  StepTimes times;
-  times.h = control.h();
+  // fluid-relax's run, on distributed states: the library's fluid, method and Relaxation
+  // (docs/distributed.md, "One step formula"). A resumed run starts from the zero matrix of
+  // the layout, which the checkpoint's state replaces.
+  DistributedMatrix W0(grid, static_cast<int>(n), run.block);
+  if (resume == nullptr) W0.scatterFrom(s.W0);  // rank 0's
+  const auto system = makeDistributedZeitlinFluid(W0.layout(), s.alpha);
+  std::unique_ptr<OneStepMethod<DistributedSUN>> method;
+  std::optional<Relaxation<DistributedSUN>> relaxing;
+  // The library's checks of the run (InvalidArgument) are bad input, agreed by every rank.
+  if (const int status = onEveryRank(grid, [&] {
+        try {
+          method = makeMethod<DistributedSUN>(o.method, system);
+          relaxing.emplace(*method, *system, W0, s.h, s.relax);
+        } catch (const InvalidArgument& e) {
+          throw app::UsageError(e.what());
+        }
+      })) {
+    throw Reported{status};
+  }
+  Relaxation<DistributedSUN>& relaxation = *relaxing;
   Tally tally;
   if (resume != nullptr) {
     // Rank 0's record, read on every rank in step: its numbers broadcast, its matrices (the
@@ -121,17 +143,12 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
     RankZeroRecordReader record(grid, std::move(resume->relaxation));
     const int status = onEveryRank(grid, [&] {
       resumeRelaxation(record, s.relax, o.resume, [&](BinaryRecordReader& in) {
-        loadRelaxCursor(in, at, W, result.steps_rejected, times);
-        control.load(in);
-        ddb.loadWarmStart(in, W.layout());
-        return at;
+        relaxation.load(in);
+        return relaxation.state();
       });
     });
     if (status != 0) throw Reported{status};
     tally = resume->tally;
-  } else {
-    W.scatterFrom(s.W0);  // rank 0's
-    at.residual = NAN;
   }
   if (const int status = onRankZero(grid, [&] {
         if (resume != nullptr) {
@@ -149,19 +166,17 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   if (const int status = onRankZero(grid, [&] { outputs.emplace(o, s, resume); })) {
     throw Reported{status};
   }
+  const RelaxState& at = relaxation.state();
   if (resume != nullptr) spdlog::info("resuming {} at step {}, t = {}", s.out.string(), at.k, at.t);
-  const bool adaptive = s.relax.control.adaptive;
-  spdlog::info("N = {}, alpha = {}, {} init, ddb-cay on {} ranks ({}x{} grid, block {}): {}{}{}", n,
-               s.alpha, s.init, grid.size(), grid.rows(), grid.cols(), run.block,
-               adaptive ? "adaptive steps from h = " : fmt::format("{} steps of h = ", s.steps),
-               control.h(), s.default_h && resume == nullptr ? " (default)" : "");
+  spdlog::info("N = {}, alpha = {}, {} init, {} on {} ranks ({}x{} grid, block {}): {}{}{}", n,
+               s.alpha, s.init, o.method, grid.size(), grid.rows(), grid.cols(), run.block,
+               s.relax.control.adaptive ? "adaptive steps from h = "
+                                        : fmt::format("{} steps of h = ", s.steps),
+               s.h, s.default_h && resume == nullptr ? " (default)" : "");
 
-  // Rises are counted where the flow lowers H; --adaptive reads H, and dH/dt from r's
-  // commutator, at every state, as Relaxation does.
-  const bool watch_energy = app::EnergyRises::applies(true, s.alpha);
-  const bool need_energy = watch_energy || adaptive;
-  const bool probing = adaptive || s.relax.tolerance > 0;
-  double rate = 0.0;        // dH/dt at the current state, for the step control
+  const bool watch_energy =
+      app::EnergyRises::applies(findMethod(o.method)->keeps_casimirs, s.alpha);
+  const bool counts_iterations = method->solvesEquations();
   std::string write_error;  // rank 0's first failed write
   const auto onRoot = [&](const std::function<void()>& write) {
     if (!root || !write_error.empty()) return;
@@ -180,49 +195,26 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
     });
   };
   EveryKth<const DistributedMatrix*, decltype(historyRow)> history(o.every, historyRow);
-
-  // H = N·E/ħ of a state (the energy fluid-relax watches for rises), from P = its stream
-  // matrix.
-  const auto energyFromStream = [&](const DistributedMatrix& state) {
-    return DistributedZeitlinFluid::energy(state, P) * static_cast<double>(n) / fluid.hbar();
-  };
-  // r = ‖[P, W]‖/(‖P‖ ‖W‖) (0 where ‖P‖ ‖W‖ = 0, SteadyStateProbe's convention) and dH/dt
-  // of the current state, given its P; one product, distributed.
-  const auto probeState = [&] {
-    const double scale = B::frobeniusNorm(P) * B::frobeniusNorm(W);
-    const double norm = DistributedZeitlinFluid::commutatorNorm(W, P, product, commutator);
-    at.residual = scale > 0.0 ? norm / scale : 0.0;
-    rate = fluid.energyRate(norm);
-  };
-  // The current state's H, r and dH/dt, from one Poisson solve (none if P is W's already);
-  // only what the run reads.
-  const auto observeState = [&](bool stream_is_current) {
-    if (!need_energy && !probing) return;
-    if (!stream_is_current) fluid.streamMatrixInto(W, P);
-    if (need_energy) {
-      at.energy = energyFromStream(W);
-      if (watch_energy) tally.rises.observe(at.k, at.t, at.energy);
+  // What the summary accumulates over every accepted state, as fluid-relax does.
+  const auto observe = [&] {
+    if (at.k > 0 && counts_iterations) {
+      const long iterations = method->lastStepIterations();
+      tally.iterations_total += iterations;
+      tally.iterations_max = std::max(tally.iterations_max, iterations);
     }
-    if (probing) probeState();
+    if (watch_energy) tally.rises.observe(at.k, at.t, at.energy);
+    history(at.k, at.t, &relaxation.current());
   };
 
-  // A checkpoint of the current state, written by rank 0 from the gathered state and warm
-  // start (collective); the files that grow are on disk up to `lengths` (rank 0's).
+  // A checkpoint of the current state: Relaxation's record, written by rank 0 from the
+  // gathered state and warm start (collective); the files that grow are on disk up to
+  // `lengths` (rank 0's).
   auto last_checkpoint = std::chrono::steady_clock::now();
   long checkpointed_at = -1;  // the step of the last checkpoint
   const auto checkpoint = [&](const HistoryFiles::Lengths& lengths) {
-    if (!need_energy) {
-      // Relaxation's record holds H of every state, which this run evaluates only here.
-      fluid.streamMatrixInto(W, P);
-      at.energy = energyFromStream(W);
-    }
     BinaryRecordWriter record;
-    if (root) {
-      record = beginCheckpoint(o, run.given, s, tally, lengths);
-    }
-    saveRelaxCursor(record, at, W, result.steps_rejected, times);
-    control.save(record);
-    ddb.saveWarmStart(record);
+    if (root) record = beginCheckpoint(o, run.given, s, tally, lengths);
+    relaxation.save(record);
     onRoot([&] { writeCheckpoint(s.out, record); });
     last_checkpoint = std::chrono::steady_clock::now();
     checkpointed_at = at.k;
@@ -234,74 +226,20 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   };
 
   if (resume == nullptr) {
-    observeState(false);
-    history(0, 0.0, &W);
-  } else {
-    if (probing) {
-      // As the uninterrupted run left it (Relaxation::load evaluates its probe): the step
-      // control needs dH/dt at the state.
-      fluid.streamMatrixInto(W, P);
-      probeState();
-    }
+    observe();
+  } else if (at.k % o.every != 0) {
     // The checkpoint's state is the last row, held back (its length excludes that row).
-    if (at.k % o.every != 0) history(at.k, at.t, &W);
+    history(at.k, at.t, &relaxation.current());
   }
   app::Progress progress(o.log.quiet || !root);
-  const std::string label = "ddb-cay N=" + std::to_string(n) + " P=" + std::to_string(grid.size());
+  const std::string label =
+      o.method + " N=" + std::to_string(n) + " P=" + std::to_string(grid.size());
   app::StopSignals signals;
   StepFlags flags;
-  while (true) {
-    if (probing && at.residual <= s.relax.tolerance) {
-      result.stop = RelaxStop::kSteady;
-      break;
-    }
-    if (at.k >= s.relax.max_steps) {
-      result.stop = RelaxStop::kStepCap;
-      break;
-    }
-    if (reachedTimeCap(at.t, s.relax.t_end)) {
-      result.stop = RelaxStop::kTimeCap;
-      break;
-    }
-    // The step from a copy, so that a failed or rejected step keeps the state before it. Its
-    // decisions use values reduced alike on every rank, so every rank decides alike.
-    const double h = std::min(control.h(), s.relax.t_end - at.t);
-    B::copy(W, trial);
-    const StepAttempt attempt = attemptStep(
-        control, adaptive, at.k, at.t, h, rate, at.energy,
-        [&] {
-          ddb.advance(trial, at.t, h);
-          // Named by the norm every rank agrees on, not by a rank's own block of entries.
-          const double norm = B::frobeniusNorm(trial);
-          if (!std::isfinite(norm)) {
-            const Eigen::Matrix<double, 1, 1> value(norm);
-            throw NonFiniteState("ddb-cay", -1, at.t, h, value, "state's Frobenius norm");
-          }
-        },
-        [&] {
-          if (!adaptive) return 0.0;  // H is evaluated for the accepted state below
-          fluid.streamMatrixInto(trial, P);
-          return energyFromStream(trial);
-        });
-    if (attempt.rejected) ++result.steps_rejected;
-    if (!attempt.failure.empty()) {
-      result.failure = attempt.failure;
-      result.failed_step = at.k;
-      result.stop = RelaxStop::kFailure;
-      break;
-    }
-    if (!attempt.accepted) continue;
-    W.swap(trial);
-    ++at.k;
-    at.t = times.after(at.t, h);
-    at.h = h;
-    const LegendreStats& stats = ddb.legendreSolver().stats();
-    const long iterations = stats.fixed_point + stats.newton;
-    tally.iterations_total += iterations;
-    tally.iterations_max = std::max(tally.iterations_max, iterations);
-    // With --adaptive, the accepted trial's energy left P = its stream matrix.
-    observeState(adaptive);
-    history(at.k, at.t, &W);
+  // Relaxation decides every step from values reduced alike on every rank, so every rank
+  // takes the same steps and stops alike.
+  while (relaxation.advance()) {
+    observe();
     const bool due = o.checkpoint_every > 0 ? at.k % o.checkpoint_every == 0
                                             : std::chrono::steady_clock::now() - last_checkpoint >=
                                                   std::chrono::duration<double>(kCheckpointSeconds);
@@ -309,12 +247,12 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
         agreeOnFlags(grid, {signals.received(), write_error.empty() ? 0 : 1, root && due ? 1 : 0});
     if (flags.write_failed != 0) break;
     if (flags.signal != 0) {
-      result.stop = RelaxStop::kInterrupted;
+      relaxation.interrupt();
       break;
     }
     if (flags.checkpoint_due != 0) checkpoint(syncedLengths());
     progress.update(label, at.k, s.relax.max_steps,
-                    [&] { return fmt::format("t {:.6g}  h {:.3g}", at.t, h); });
+                    [&] { return fmt::format("t {:.6g}  h {:.3g}", at.t, at.h); });
   }
   progress.clear();
   // As fluid-relax: the checkpoint of the final state records the files without the
@@ -323,13 +261,13 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   history.finish();
   onRoot([&] { outputs->commit(); });
   if (checkpointed_at != at.k) checkpoint(lengths);
-  result.final = W.gather();
+  const RelaxResult<SUN> result = gathered(relaxation.result());
   const double runtime_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   onRoot([&] {
-    tally.rises.warnIfAny("ddb-cay");
-    app::Json summary = runSummary(o, s, outputs->system(), result, tally, "ddb-cay",
-                                   /*counts_iterations=*/true, watch_energy, runtime_s);
+    tally.rises.warnIfAny(o.method);
+    app::Json summary = runSummary(o, s, outputs->system(), result, tally, o.method,
+                                   counts_iterations, watch_energy, runtime_s);
     summary["mpi_ranks"] = grid.size();
     summary["process_grid"] = {grid.rows(), grid.cols()};
     summary["block_size"] = run.block;

@@ -2,6 +2,7 @@
 
 #include <ddb/core/binary_record.h>
 #include <ddb/distributed/rank_zero_record_reader.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <mpi.h>
 
 #include <algorithm>
@@ -19,10 +20,27 @@ namespace ddb::fluid_mpi {
 
 namespace {
 
+/// The methods that run on distributed matrices: the method table's for any backend.
+std::string distributedMethods() {
+  std::string names;
+  for (const auto& name : methodNames(kBackendMatrixGroups)) {
+    names += (names.empty() ? "" : ", ") + name;
+  }
+  return names;
+}
+
+bool runsDistributed(const std::string& method) {
+  const MethodInfo* info = findMethod(method);
+  return info != nullptr && (info->groups & kBackendMatrixGroups) != 0;
+}
+
 // What fluid-relax has and this app does not yet (docs/distributed.md, "Not done yet").
 void refuseUnsupported(const CLI::App& cli, const fluid::Options& o) {
-  if (o.method != "ddb-cay") {
-    app::usageError("--method", o.method, "fluid-relax-mpi runs ddb-cay only");
+  if (!runsDistributed(o.method)) {
+    app::usageError("--method", o.method,
+                    "fluid-relax-mpi runs the methods whose step is written against the matrix "
+                    "backend alone: " +
+                        distributedMethods() + " (docs/matrix-backend.md)");
   }
   if (cli.count("--newton") > 0) {
     throw app::UsageError(
@@ -37,7 +55,7 @@ void refuseForeignRun(const std::string& dir, const fluid::Checkpoint& c) {
   std::string what;
   if (c.settings.relax.newton) {
     what = "--newton";
-  } else if (c.options.method != "ddb-cay") {
+  } else if (!runsDistributed(c.options.method)) {
     what = "--method " + c.options.method;
   }
   if (!what.empty()) {
@@ -138,9 +156,11 @@ void addMpiOptions(CLI::App& cli, MpiOptions& o) {
                  "rows of the process grid, a divisor of the number of ranks (default: the most "
                  "square grid with rows >= columns)");
   cli.footer(
-      "\nfluid-relax-mpi is fluid-relax's ddb-cay relaxation with every N x N matrix "
+      "\nfluid-relax-mpi is fluid-relax's relaxation with every N x N matrix "
       "distributed over the MPI ranks\n(docs/distributed.md): start it with mpirun -np P. "
-      "Not available here: --method other than ddb-cay,\n--newton.\n\nInitial "
+      "Methods here: " +
+      distributedMethods() +
+      "; not available: the other methods, --newton.\n\nInitial "
       "vorticities (--init; all "
       "scaled to ||W||_F = sqrt(N), seeded by --seed):\n" +
       app::describeChoices(app::initDescriptions()) +

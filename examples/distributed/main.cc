@@ -5,10 +5,11 @@
 // 1e-12 relative) and against W₀'s spectrum, which the step keeps (Eigen's eigensolver,
 // to 1e-12 relative). Every rank exits with status 1 if a check fails.
 //   mpiexec -n 2 ./app
-#include <ddb/distributed/distributed_ddb.h>
+#include <ddb/distributed/distributed_zeitlin_fluid.h>
 #include <ddb/distributed/process_grid.h>
 #include <ddb/groups/sun.h>
 #include <ddb/integrators/methods/ddb.h>
+#include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <ddb/systems/zeitlin_step_size.h>
@@ -39,9 +40,11 @@ bool run() {
 
   ddb::DistributedMatrix W(grid, kN, kBlock);
   W.scatterFrom(W0);
-  ddb::DistributedDdb step(W.layout(), kAlpha);
+  // The library's fluid and method, on distributed states (ddb::DistributedSUN).
+  const auto fluid = ddb::makeDistributedZeitlinFluid(W.layout(), kAlpha);
+  const auto step = ddb::makeMethod<ddb::DistributedSUN>("ddb-cay", fluid);
   // Every call is collective: a failed solve throws ddb::SolveFailure on every rank.
-  for (int k = 0; k < kSteps; ++k) step.advance(W, k * h, h);
+  for (int k = 0; k < kSteps; ++k) step->advance(W, k * h, h);
   const Eigen::MatrixXcd W_distributed = W.gather();  // whole on rank 0, empty elsewhere
 
   int passed = 1;

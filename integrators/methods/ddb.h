@@ -27,16 +27,6 @@ struct MatrixTransportOf<R, true> {
       typename MatrixRetraction<R>::template Transport<LiePoissonSystem<typename R::Group>>;
 };
 
-/// Matrix groups: DDB's step (i) and (ii) in place, with the solver's certified frozen
-/// solution and the preallocated transport (no allocation once the size is known). Any
-/// matrix system: dense (Ddb::advance) or distributed (distributed/distributed_ddb.h).
-template <class G, class System, class Solver, class Transport, class Dual>
-void advanceMatrixDdb(const System& system, Solver& legendre, Transport& transport, Dual& mu,
-                      double t, double h) {
-  legendre.solveInPlace(FixedMomentum<G, Dual>{mu}, mu, t, h);
-  transport.apply(system, legendre, h, mu);
-}
-
 template <class R>
 class Ddb : public LegendreMethod<R> {
  public:
@@ -62,11 +52,13 @@ class Ddb : public LegendreMethod<R> {
     }
   }
 
-  /// Matrix groups: the same step in place, through the solver's solution and the
-  /// preallocated transport of the retraction (no allocation once the size is known).
+  /// Matrix groups (on any backend: docs/matrix-backend.md): DDB's step (i) and (ii) in
+  /// place, with the solver's certified frozen solution and the preallocated transport of the
+  /// retraction (no allocation once the size is known).
   void advance(Dual& mu, double t, double h) override {
     if constexpr (isDynamicGroup<G>) {
-      advanceMatrixDdb<G>(*this->system_, this->legendre_, transport_, mu, t, h);
+      this->legendre_.solveInPlace(FixedMomentum<G, Dual>{mu}, mu, t, h);
+      transport_.apply(*this->system_, this->legendre_, h, mu);
     } else {
       mu = step(mu, t, h);
     }

@@ -11,10 +11,10 @@
 // (LiePoissonSystem::velocityInto): the Hamiltonian sees the algebra part of p, whose trace
 // stays in the solve. Workspaces are allocated on the first solve of a size and reused: no
 // iteration allocates.
-// The solver is written against the matrix backend (core/matrix_backend.h) and takes the
-// system as a type: a LiePoissonSystem on dense matrices, or a system on distributed ones
-// (distributed/distributed_zeitlin_fluid.h), which runs this same algorithm over MPI ranks
-// (docs/distributed.md, "One step formula"). The exponential is dense only.
+// The solver is written against the matrix backend (core/matrix_backend.h): the same
+// algorithm runs on a LiePoissonSystem of dense matrices and of any backend's, over MPI ranks
+// on the distributed fluid (distributed/distributed_zeitlin_fluid.h; docs/distributed.md,
+// "One step formula"). The exponential is dense only.
 //
 // A solver from outside (setExternalSolver) may solve DDB's Cayley equation instead, through
 // residualInto and jacobianTimes: Ceres does, as an independent check of the matrix-free
