@@ -122,7 +122,7 @@ inline constexpr std::array<MethodInfo, 15> kMethods{{
    kFixedSizeGroups | kMatrixGroups, true, false, false, 6, 6,
    MethodKind::kComposition, RetractionKind::kNone, SchemeKind::kYoshida6, "sddb-exp"},
   {"rk4", "classical Runge-Kutta, order 4 (does not keep Casimirs)",
-   kFixedSizeGroups | kMatrixGroups, false, false, false, 4, 4,
+   kFixedSizeGroups | kMatrixGroups | kBackendMatrixGroups, false, false, false, 4, 4,
    MethodKind::kExplicitRk4, RetractionKind::kNone, SchemeKind::kNone, ""},
   {"lobatto3c", "Lobatto IIIC, 3 stages, order 4 (does not keep Casimirs)",
    kFixedSizeGroups | kMatrixGroups, false, false, false, 4, 4,
@@ -268,43 +268,45 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(const MethodInfo& method,
   // On another backend's matrices only the rows of that family are built (the family check
   // above refused the others); the other kinds are not even compiled for such a group.
   constexpr bool kDenseOnly = groupFamilyOf<G>() != kBackendMatrixGroups;
-  if constexpr (!kDenseOnly) {
-    if (method.kind == MethodKind::kDdb) {
+  switch (method.kind) {
+    case MethodKind::kDdb:
       return detail::withRetraction<G, Ddb>(method.retraction, system, form);
-    }
-    throw std::logic_error("method table: " + name + " is marked for any backend but not built");
-  } else {
-    switch (method.kind) {
-      case MethodKind::kDdb:
-        return detail::withRetraction<G, Ddb>(method.retraction, system, form);
-      case MethodKind::kLinearlyImplicitDdb:
+    case MethodKind::kLinearlyImplicitDdb:
+      if constexpr (kDenseOnly) {
         return detail::withRetraction<G, LinearlyImplicitDdb>(method.retraction, system, form);
-      case MethodKind::kSymmetricDdb:
-        return detail::withRetraction<G, SymmetricDdb>(method.retraction, system, form);
-      case MethodKind::kPaperSymmetricDdb:
-        if constexpr (!isDynamicGroup<G>) {
-          return detail::withRetraction<G, PaperSymmetricDdb>(method.retraction, system);
-        }
-        break;
-      case MethodKind::kComposition: {
-        const MethodInfo* base = findMethod(method.base);
-        if (base == nullptr) throw std::logic_error("method table: no base for " + name);
-        return std::make_unique<Composition<G>>(name, makeMethod<G>(*base, system),
-                                                detail::schemeOf(method.scheme));
       }
-      case MethodKind::kExplicitRk4:
-        return std::make_unique<ExplicitRungeKutta<G, 4>>(system, kClassicalRk4);
-      case MethodKind::kLobattoIIIC:
-        if constexpr (isDynamicGroup<G>) {
-          return std::make_unique<MatrixFreeImplicitRungeKutta<G, 3>>(system, kLobattoIIIC3);
-        } else {
-          return std::make_unique<ImplicitRungeKutta<G, 3>>(system, kLobattoIIIC3);
-        }
-      case MethodKind::kReference:
-        return std::make_unique<ReferenceSolver<G>>(system);
+      break;
+    case MethodKind::kSymmetricDdb:
+      // Its Anderson mixing fits on Eigen's flat real dot product (dense only, for now).
+      if constexpr (kDenseOnly) {
+        return detail::withRetraction<G, SymmetricDdb>(method.retraction, system, form);
+      }
+      break;
+    case MethodKind::kPaperSymmetricDdb:
+      if constexpr (!isDynamicGroup<G>) {
+        return detail::withRetraction<G, PaperSymmetricDdb>(method.retraction, system);
+      }
+      break;
+    case MethodKind::kComposition: {
+      const MethodInfo* base = findMethod(method.base);
+      if (base == nullptr) throw std::logic_error("method table: no base for " + name);
+      return std::make_unique<Composition<G>>(name, makeMethod<G>(*base, system),
+                                              detail::schemeOf(method.scheme));
     }
-    throw std::logic_error("method table: " + name + " cannot be built on this group");
+    case MethodKind::kExplicitRk4:
+      return std::make_unique<ExplicitRungeKutta<G, 4>>(system, kClassicalRk4);
+    case MethodKind::kLobattoIIIC:
+      if constexpr (!isDynamicGroup<G>) {
+        return std::make_unique<ImplicitRungeKutta<G, 3>>(system, kLobattoIIIC3);
+      } else if constexpr (kDenseOnly) {
+        return std::make_unique<MatrixFreeImplicitRungeKutta<G, 3>>(system, kLobattoIIIC3);
+      }
+      break;
+    case MethodKind::kReference:
+      if constexpr (kDenseOnly) return std::make_unique<ReferenceSolver<G>>(system);
+      break;
   }
+  throw std::logic_error("method table: " + name + " cannot be built on this group");
 }
 
 /// makeMethod for a name of the table; InvalidArgument naming it if it is not one.

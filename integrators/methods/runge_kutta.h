@@ -8,6 +8,7 @@
 #include <ddb/core/errors.h>
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
+#include <ddb/core/matrix_backend.h>
 #include <ddb/integrators/methods/butcher_tableau.h>
 #include <ddb/integrators/methods/one_step_method.h>
 
@@ -39,7 +40,7 @@ class ExplicitRungeKutta : public OneStepMethod<G> {
   void advance(Dual& mu, double, double h) override {
     if constexpr (isDynamicGroup<G>) {
       MatrixStages& w = matrix_;
-      w.field.resize(mu);
+      w.resize(mu);
       runStages(mu, h, w.slopes, w.stage, w.sum,
                 [&](const Dual& x, Dual& out) { system_->vectorFieldInto(x, w.field, out); });
     } else {
@@ -60,23 +61,56 @@ class ExplicitRungeKutta : public OneStepMethod<G> {
                                      Dual& sum, const Field& field) {
 #pragma GCC unroll 16
     for (int i = 0; i < S; ++i) {
-      stage = mu;
+      copy(mu, stage);
 #pragma GCC unroll 16
       for (int j = 0; j < i; ++j) {
-        if (tableau_.a[i][j] != 0.0) stage += (h * tableau_.a[i][j]) * k[j];
+        if (tableau_.a[i][j] != 0.0) axpy(h * tableau_.a[i][j], k[j], stage);
       }
       field(stage, k[i]);
     }
-    sum = tableau_.b[0] * k[0];
+    scale(tableau_.b[0], k[0], sum);
 #pragma GCC unroll 16
-    for (int i = 1; i < S; ++i) sum += tableau_.b[i] * k[i];
-    mu += h * sum;
+    for (int i = 1; i < S; ++i) axpy(tableau_.b[i], k[i], sum);
+    axpy(h, sum, mu);
+  }
+  // The stages' arithmetic: Eigen's expressions on a small group's vectors, the matrix
+  // backend's operations on a matrix group's states (the same entry-wise formulas, so the
+  // same bits on dense matrices: docs/matrix-backend.md).
+  EIGEN_ALWAYS_INLINE static void copy(const Dual& x, Dual& out) {
+    if constexpr (isDynamicGroup<G>) {
+      MatrixBackend<Dual>::copy(x, out);
+    } else {
+      out = x;
+    }
+  }
+  EIGEN_ALWAYS_INLINE static void scale(double a, const Dual& x, Dual& out) {
+    if constexpr (isDynamicGroup<G>) {
+      MatrixBackend<Dual>::scale(a, x, out);
+    } else {
+      out = a * x;
+    }
+  }
+  EIGEN_ALWAYS_INLINE static void axpy(double a, const Dual& x, Dual& y) {
+    if constexpr (isDynamicGroup<G>) {
+      MatrixBackend<Dual>::axpy(a, x, y);
+    } else {
+      y += a * x;
+    }
   }
 
   struct MatrixStages {
     std::array<Dual, S> slopes;
     Dual stage, sum;
     MatrixFieldWorkspace<G> field;
+
+    /// Every workspace of mu's shape (and layout); nothing if they have it already.
+    void resize(const Dual& mu) {
+      field.resize(mu);
+      if (MatrixBackend<Dual>::sameShape(stage, mu)) return;
+      for (Dual& k : slopes) MatrixBackend<Dual>::zeroLike(k, mu);
+      MatrixBackend<Dual>::zeroLike(stage, mu);
+      MatrixBackend<Dual>::zeroLike(sum, mu);
+    }
   };
   struct NoStages {};
 

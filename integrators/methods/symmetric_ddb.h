@@ -20,6 +20,7 @@
 #include <ddb/core/detail/jet_jacobian.h>
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
+#include <ddb/core/matrix_backend.h>
 #include <ddb/integrators/matrix_kernels/matrix_retraction.h>
 #include <ddb/integrators/methods/legendre_method.h>
 
@@ -86,8 +87,9 @@ class SymmetricDdb : public LegendreMethod<R> {
   void advance(Dual& mu, double t, double h) override {
     if constexpr (isDynamicGroup<G>) {
       auto& solver = this->legendre_;
+      matrix_.resize(mu);
       solver.solveInPlace(MatrixTarget{*this, mu, h}, mu, t, h);
-      mu = solver.target();
+      MatrixBackend<Dual>::copy(solver.target(), mu);
       if (!MatrixRetraction<R>::applySolvedFlow(solver, h, matrix_.flow, mu)) {
         applyFlow(solver.velocity(), h, mu);
       }
@@ -102,6 +104,13 @@ class SymmetricDdb : public LegendreMethod<R> {
   struct MatrixWorkspace {
     Dual product, commutator, half, drift;
     MatrixConjugation<R> kick, flow;
+
+    /// The matrices of mu's shape (and layout); nothing if they have it already.
+    void resize(const Dual& mu) {
+      using B = MatrixBackend<Dual>;
+      if (B::sameShape(product, mu)) return;
+      for (Dual* m : {&product, &commutator, &half, &drift}) B::zeroLike(*m, mu);
+    }
   };
   struct NoWorkspace {};
 
@@ -120,7 +129,7 @@ class SymmetricDdb : public LegendreMethod<R> {
       } else {
         method.system_->dissipationInto(p, xi, 0.5 * h, w.product, w.commutator, w.half);
       }
-      out = mu;
+      MatrixBackend<Dual>::copy(mu, out);
       w.kick.prepare(w.half);
       w.kick.apply(out);
     }
@@ -128,7 +137,7 @@ class SymmetricDdb : public LegendreMethod<R> {
 
   /// μ ← Ad*_{τ(hξ)} μ, τ(hξ) formed from ξ.
   void applyFlow(const Dual& xi, double h, Dual& mu) {
-    matrix_.drift = h * xi;
+    MatrixBackend<Dual>::scale(h, xi, matrix_.drift);
     matrix_.flow.prepare(matrix_.drift);
     matrix_.flow.apply(mu);
   }
