@@ -95,7 +95,7 @@ TEST(Lobatto3cOnMatrixGroups, VectorFieldDerivativeMatchesCentralDifferences) {
   const auto fluid = makeZeitlinFluid(6, 0.5);
   const Eigen::MatrixXcd W = randomVorticity(6, 3), V = randomVorticity(6, 4);
   MatrixFieldWorkspace<SUN> w;
-  w.resize(6);
+  w.resize(W);
   Eigen::MatrixXcd f(6, 6), df(6, 6);
   fluid->vectorFieldInto(W, w, f);
   fluid->vectorFieldDerivativeInto(V, w, df);
@@ -109,7 +109,7 @@ TEST(Lobatto3cOnMatrixGroups, VectorFieldDerivativeMatchesCentralDifferences) {
   const auto body = makeManakovBody(Eigen::VectorXd::LinSpaced(5, 0.3, 1.5), 0.7);
   const Eigen::MatrixXd M = manakovState(5, 5), U = manakovState(5, 6);
   MatrixFieldWorkspace<SON> v;
-  v.resize(5);
+  v.resize(M);
   Eigen::MatrixXd g(5, 5), dg(5, 5);
   body->vectorFieldInto(M, v, g);
   body->vectorFieldDerivativeInto(U, v, dg);
