@@ -106,7 +106,7 @@ struct MatrixBackend<DistributedMatrix> {
     return Dense::squaresWereExact(fast) ? fast : largestColumnSum(x, true);
   }
   static double innerProduct(const X& x, const X& y) {
-    return x.layout().grid().sum(x.local().conjugate().cwiseProduct(y.local()).sum().real());
+    return x.layout().grid().sum(Dense::innerProduct(x.local(), y.local()));
   }
   static bool allFinite(const X& x) {
     return !(x.layout().grid().max(x.local().allFinite() ? 0.0 : 1.0) > 0.0);

@@ -309,7 +309,7 @@ TEST(FluidRelaxMpi, RefusesBadInputOnEveryRankOnce) {
   const fs::path out = freshFolder("ddb_mpi_", "bad");
   // fluid-relax's own checks are tested on fluid-relax (test_bad_inputs): here one of them
   // with this app's bound on N (the group's, not fluid-relax's 1024), a parse error, and
-  // this app's own (a method whose step is dense-only, sddb-cay, is refused by name).
+  // this app's own (a method whose step is dense-only, lobatto3c, is refused by name).
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"--n 4097 --steps 10", "--n = 4097: must be in [2, 4096]"},
       {"--steps 10 --bogus", "bogus"},
@@ -319,7 +319,7 @@ TEST(FluidRelaxMpi, RefusesBadInputOnEveryRankOnce) {
       {"--steps 10 --grid-rows 0", "--grid-rows"},
       {"--steps 10 --grid-rows 1.5", "--grid-rows"},
       {"--steps 10 --grid-rows two", "--grid-rows"},
-      {"--steps 10 --method sddb-cay", "--method"},
+      {"--steps 10 --method lobatto3c", "--method"},
       {"--steps 10 --newton --until-steady 1e-3", "--newton"},
       {"--steps 10 --adaptive --alpha 0", "--adaptive"},
       {"--steps 10 --resume somewhere", "--resume"},

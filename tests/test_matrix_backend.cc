@@ -165,6 +165,37 @@ TEST(MatrixBackend, MultiplyAddIsTheProductAccumulatedIntoOut) {
   }
 }
 
+// innerProduct against Re tr(xᴴy) formed as the trace of the product xᴴy, column by column in
+// long double (an identity the backend's flat sum of Re·Re + Im·Im does not use): to 1e-15 of
+// Σ|x_ij||y_ij|, real and complex, and symmetric in x and y to the bit.
+template <class X>
+void checkInnerProduct() {
+  using Dense = MatrixBackend<X>;
+  std::srand(5);
+  const X x = X::Random(37, 29), y = X::Random(37, 29);
+  std::complex<long double> trace = 0;
+  long double size = 0;
+  for (Eigen::Index j = 0; j < x.cols(); ++j) {
+    for (Eigen::Index i = 0; i < x.rows(); ++i) {
+      trace += std::conj(std::complex<long double>(x(i, j))) * std::complex<long double>(y(i, j));
+      size += std::abs(std::complex<long double>(x(i, j))) *
+              std::abs(std::complex<long double>(y(i, j)));
+    }
+  }
+  EXPECT_LE(std::abs(static_cast<long double>(Dense::innerProduct(x, y)) - trace.real()),
+            1e-15L * size);
+  EXPECT_EQ(Dense::innerProduct(x, y), Dense::innerProduct(y, x));
+  const double squared = Dense::innerProduct(x, x);
+  const double norm = Dense::frobeniusNorm(x);
+  EXPECT_NEAR(squared, norm * norm, 1e-14 * squared);
+  EXPECT_EQ(Dense::innerProduct(x, X::Zero(x.rows(), x.cols())), 0.0);
+}
+
+TEST(MatrixBackend, InnerProductIsTheRealPartOfTheTraceOfXAdjointY) {
+  checkInnerProduct<Eigen::MatrixXcd>();
+  checkInnerProduct<Eigen::MatrixXd>();
+}
+
 // flushSubnormals zeroes each subnormal part with its sign and changes no other bit;
 // allFinite finds a NaN or an infinity in either part.
 TEST(MatrixBackend, FlushSubnormalsAndAllFiniteLookAtEveryPartOfEveryEntry) {

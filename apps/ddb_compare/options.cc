@@ -54,14 +54,8 @@ std::string helpFooter() {
            return app::describeChoices(lines);
          }() +
          "\nMethods (--method; default: every method that applies to the system):\n" +
-         app::describeChoices(methodDescriptions()) + "On manakov and zeitlin: " +
-         [] {
-           std::string names;
-           for (const auto& name : methodNames(kMatrixGroups)) {
-             names += (names.empty() ? "" : ", ") + name;
-           }
-           return names;
-         }() +
+         app::describeChoices(methodDescriptions()) +
+         "On manakov and zeitlin: " + methodList(kMatrixGroups) +
          "\n\nDefaults of the other systems (heavy-top and kirchhoff: t-end " +
          shortList(top.t_end) + "):\n  heavy-top  inertia " + shortList(top.inertia) + ", mgl " +
          shortList(top.mgl) + ", chi " + shortList(top.chi) + ", mu0 " + shortList(top.mu0) +

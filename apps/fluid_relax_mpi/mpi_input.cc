@@ -20,15 +20,6 @@ namespace ddb::fluid_mpi {
 
 namespace {
 
-/// The methods that run on distributed matrices: the method table's for any backend.
-std::string distributedMethods() {
-  std::string names;
-  for (const auto& name : methodNames(kBackendMatrixGroups)) {
-    names += (names.empty() ? "" : ", ") + name;
-  }
-  return names;
-}
-
 bool runsDistributed(const std::string& method) {
   const MethodInfo* info = findMethod(method);
   return info != nullptr && (info->groups & kBackendMatrixGroups) != 0;
@@ -40,7 +31,7 @@ void refuseUnsupported(const CLI::App& cli, const fluid::Options& o) {
     app::usageError("--method", o.method,
                     "fluid-relax-mpi runs the methods whose step is written against the matrix "
                     "backend alone: " +
-                        distributedMethods() + " (docs/matrix-backend.md)");
+                        methodList(kBackendMatrixGroups) + " (docs/matrix-backend.md)");
   }
   if (cli.count("--newton") > 0) {
     throw app::UsageError(
@@ -159,7 +150,7 @@ void addMpiOptions(CLI::App& cli, MpiOptions& o) {
       "\nfluid-relax-mpi is fluid-relax's relaxation with every N x N matrix "
       "distributed over the MPI ranks\n(docs/distributed.md): start it with mpirun -np P. "
       "Methods here: " +
-      distributedMethods() +
+      methodList(kBackendMatrixGroups) +
       "; not available: the other methods, --newton.\n\nInitial "
       "vorticities (--init; all "
       "scaled to ||W||_F = sqrt(N), seeded by --seed):\n" +

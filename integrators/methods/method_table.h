@@ -107,13 +107,13 @@ inline constexpr std::array<MethodInfo, 15> kMethods{{
    kFixedSizeGroups, true, true, false, 1, 2,
    MethodKind::kPaperSymmetricDdb, RetractionKind::kExponential, SchemeKind::kNone, ""},
   {"sddb-cay", "one-step symmetric DDB, Cayley (order 2)",
-   kFixedSizeGroups | kMatrixGroups, true, false, false, 2, 2,
+   kFixedSizeGroups | kMatrixGroups | kBackendMatrixGroups, true, false, false, 2, 2,
    MethodKind::kSymmetricDdb, RetractionKind::kCayley, SchemeKind::kNone, ""},
   {"sddb-exp", "one-step symmetric DDB, exp (order 2)",
    kFixedSizeGroups | kMatrixGroups, true, false, false, 2, 2,
    MethodKind::kSymmetricDdb, RetractionKind::kExponential, SchemeKind::kNone, ""},
   {"ddb4-cay", "triple jump of sddb-cay (order 4)",
-   kFixedSizeGroups | kMatrixGroups, true, false, false, 4, 4,
+   kFixedSizeGroups | kMatrixGroups | kBackendMatrixGroups, true, false, false, 4, 4,
    MethodKind::kComposition, RetractionKind::kNone, SchemeKind::kTripleJump, "sddb-cay"},
   {"ddb4-exp", "triple jump of sddb-exp (order 4)",
    kFixedSizeGroups | kMatrixGroups, true, false, false, 4, 4,
@@ -160,8 +160,12 @@ inline std::vector<std::string> methodNames(unsigned families = kFixedSizeGroups
   return names;
 }
 
-/// The names of the methods for matrix groups (SO(N), SU(N)).
-inline std::vector<std::string> matrixGroupMethodNames() { return methodNames(kMatrixGroups); }
+/// The names of the entries that run on any of `families`, as a message lists them: "a, b, c".
+inline std::string methodList(unsigned families = kFixedSizeGroups | kMatrixGroups) {
+  std::string list;
+  for (const auto& name : methodNames(families)) list += (list.empty() ? "" : ", ") + name;
+  return list;
+}
 
 /// (name, one-line description) of the entries that run on any of `families`.
 inline std::vector<std::pair<std::string, std::string>> methodDescriptions(
@@ -195,18 +199,13 @@ namespace detail {
 template <class G>
 [[noreturn]] void throwNotAMethod(const std::string& name) {
   if constexpr (groupFamilyOf<G>() == kBackendMatrixGroups) {
-    std::string valid;
-    for (const auto& n : methodNames(kBackendMatrixGroups)) {
-      valid += (valid.empty() ? "" : ", ") + n;
-    }
     throwInvalid("method", name,
                  "is not one of the methods whose step is written against the matrix backend "
                  "alone, which run on " +
-                     std::string(G::kName) + "'s matrices: " + valid);
+                     std::string(G::kName) + "'s matrices: " + methodList(kBackendMatrixGroups));
   } else if constexpr (isDynamicGroup<G>) {
-    std::string valid;
-    for (const auto& n : matrixGroupMethodNames()) valid += (valid.empty() ? "" : ", ") + n;
-    throwInvalid("method", name, "is not one of the methods for matrix groups: " + valid);
+    throwInvalid("method", name,
+                 "is not one of the methods for matrix groups: " + methodList(kMatrixGroups));
   } else {
     throwInvalid("method", name, "unknown method");
   }
@@ -277,11 +276,7 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(const MethodInfo& method,
       }
       break;
     case MethodKind::kSymmetricDdb:
-      // Its Anderson mixing fits on Eigen's flat real dot product (dense only, for now).
-      if constexpr (kDenseOnly) {
-        return detail::withRetraction<G, SymmetricDdb>(method.retraction, system, form);
-      }
-      break;
+      return detail::withRetraction<G, SymmetricDdb>(method.retraction, system, form);
     case MethodKind::kPaperSymmetricDdb:
       if constexpr (!isDynamicGroup<G>) {
         return detail::withRetraction<G, PaperSymmetricDdb>(method.retraction, system);

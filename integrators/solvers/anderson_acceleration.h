@@ -11,10 +11,13 @@
 // with Δf_j, ΔG_j the differences of consecutive residuals and images. On a linear map
 // this is GMRES on (I − DG) with the iterates as its Krylov basis, so each iteration costs
 // one sweep where Newton–Krylov pays a sweep and a Jacobian–vector product per Krylov step.
-// The fit is on the real inner product Re tr(XᴴY) of the algebra (γ real), by the normal
-// equations of m ≤ 4 unknowns with dependent differences left out; no step allocates once
-// the buffers are sized.
+// The fit is on the real inner product Re tr(XᴴY) of the algebra (γ real, the backend's
+// innerProduct), by the normal equations of m ≤ 4 unknowns with dependent differences left
+// out; every operation on the iterates goes through the matrix backend
+// (docs/matrix-backend.md), and no step allocates once the buffers are sized.
 #pragma once
+
+#include <ddb/core/matrix_backend.h>
 
 #include <Eigen/Core>
 #include <array>
@@ -38,29 +41,32 @@ class AndersonAcceleration {
   /// Given the iterate p and its image g = G(p), replaces g by the mixed next iterate.
   void mix(const Matrix& p, Matrix& g) {
     allocate(p);
-    residual_ = g - p;
+    B::sum(1.0, g, -1.0, p, residual_);
     if (count_ > 0) {
       const std::size_t slot = static_cast<std::size_t>(stored_ % kDepth);
-      dF_[slot] = residual_ - previous_residual_;
-      dG_[slot] = g - previous_image_;
+      B::sum(1.0, residual_, -1.0, previous_residual_, dF_[slot]);
+      B::sum(1.0, g, -1.0, previous_image_, dG_[slot]);
       ++stored_;
     }
-    previous_residual_ = residual_;
-    previous_image_ = g;
+    B::copy(residual_, previous_residual_);
+    B::copy(g, previous_image_);
     ++count_;
     const int m = stored_ < kDepth ? stored_ : kDepth;
     if (m == 0) return;
     gram_.setZero(m, m);
     rhs_.setZero(m);
     for (int i = 0; i < m; ++i) {
-      rhs_(i) = inner(difference(i), residual_);
-      for (int j = 0; j <= i; ++j) gram_(i, j) = gram_(j, i) = inner(difference(i), difference(j));
+      rhs_(i) = B::innerProduct(difference(i), residual_);
+      for (int j = 0; j <= i; ++j) {
+        gram_(i, j) = gram_(j, i) = B::innerProduct(difference(i), difference(j));
+      }
     }
     if (!solveGram(m)) return;  // g stays the plain sweep
-    for (int i = 0; i < m; ++i) g -= gamma_(i) * image(i);
+    for (int i = 0; i < m; ++i) B::axpy(-gamma_(i), image(i), g);
   }
 
  private:
+  using B = MatrixBackend<Matrix>;
   using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kDepth, kDepth>;
   using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kDepth, 1>;
   /// Pivots of the Gram matrix below this fraction of its largest diagonal entry count as
@@ -93,27 +99,16 @@ class AndersonAcceleration {
     return gamma_.head(m).allFinite();
   }
 
-  static double inner(const Matrix& x, const Matrix& y) {
-    return Eigen::Map<const Eigen::VectorXd>(reinterpret_cast<const double*>(x.data()),
-                                             x.size() * kReals)
-        .dot(Eigen::Map<const Eigen::VectorXd>(reinterpret_cast<const double*>(y.data()),
-                                               y.size() * kReals));
-  }
-  static constexpr Eigen::Index kReals =
-      Eigen::NumTraits<typename Matrix::Scalar>::IsComplex ? 2 : 1;
-
   // The difference i of the m newest (any order: the fit is invariant under permutations).
   const Matrix& difference(int i) const { return dF_[static_cast<std::size_t>(i)]; }
   const Matrix& image(int i) const { return dG_[static_cast<std::size_t>(i)]; }
 
   void allocate(const Matrix& like) {
-    if (residual_.rows() == like.rows() && residual_.cols() == like.cols()) return;
-    for (Matrix* m : {&residual_, &previous_residual_, &previous_image_}) {
-      m->setZero(like.rows(), like.cols());
-    }
+    if (B::sameShape(residual_, like)) return;
+    for (Matrix* m : {&residual_, &previous_residual_, &previous_image_}) B::zeroLike(*m, like);
     for (int i = 0; i < kDepth; ++i) {
-      dF_[static_cast<std::size_t>(i)].setZero(like.rows(), like.cols());
-      dG_[static_cast<std::size_t>(i)].setZero(like.rows(), like.cols());
+      B::zeroLike(dF_[static_cast<std::size_t>(i)], like);
+      B::zeroLike(dG_[static_cast<std::size_t>(i)], like);
     }
     reset();
   }
