@@ -1,4 +1,4 @@
-"""`pip install .` for the Python module `ddb` (docs/python.md, "Build"): CMake configures the
+"""`pip install .` for the Python module `ddb` (docs/guide/python.md, "Build"): CMake configures the
 project with only the module (no tests, apps or benchmarks), builds target ddb_python and
 the built ddb*.so is installed as the extension. Offline, with the system's setuptools:
 

@@ -7,9 +7,9 @@
 // and 1024 only ddb-cay (α = 0.5) and the product run, over steps 10..29 (a step there
 // takes up to seconds): zeitlin/ddb-cay/<N> at that h, beyond the dissipation's stability
 // bound there (the energy rises), and zeitlin-resolved/ddb-cay/<N> at
-// h = min(0.02 ħ/‖P₀‖₂, 4 ħ/(|α| ‖W₀‖₂²)) within it (docs/design.md, "Large N: the step's
-// stability bound"; fluid-relax's default, systems/zeitlin_step_size.h). The BLAS thread count is
-// the environment's (OPENBLAS_NUM_THREADS).
+// h = min(0.02 ħ/‖P₀‖₂, 4 ħ/(|α| ‖W₀‖₂²)) within it (docs/design/architecture.md, "Large N: the
+// step's stability bound"; fluid-relax's default, systems/zeitlin_step_size.h). The BLAS thread
+// count is the environment's (OPENBLAS_NUM_THREADS).
 #include "zeitlin_bench.h"
 
 #include <benchmark/benchmark.h>

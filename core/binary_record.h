@@ -1,9 +1,9 @@
 // BinaryRecord: a flat record of numbers, matrices and strings, written and read back
 // bit for bit, with a checksum. It carries what a run must keep to be resumed exactly:
 // a method's warm start (OneStepMethod::saveWarmStart), the state of a relaxation
-// (Relaxation::save) and an app's checkpoint (docs/file-formats.md, "Checkpoints").
-// Numbers are stored as their bytes, never as text, so that a resumed run continues from
-// the same doubles; shapes and tags are checked on reading, and a record that ends early,
+// (Relaxation::save) and an app's checkpoint (docs/reference/command-lines-and-files.md,
+// "Checkpoints"). Numbers are stored as their bytes, never as text, so that a resumed run continues
+// from the same doubles; shapes and tags are checked on reading, and a record that ends early,
 // has a wrong tag or a wrong checksum throws CorruptRecord instead of yielding numbers.
 #pragma once
 

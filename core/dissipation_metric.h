@@ -1,6 +1,7 @@
 // DissipationMetric: the symmetric semi-definite k: g* × g* → R through its
 // musical map k♯: g* → g (paper, eq. (3.5)): φ(ξ) = k♯(ad*_ξ ∂l/∂ξ(ξ)).
-// A negative scale (α < 0) is allowed: energy ascent on the orbit (docs/conventions.md §4).
+// A negative scale (α < 0) is allowed: energy ascent on the orbit (docs/reference/conventions.md
+// §4).
 #pragma once
 
 #include <ddb/core/errors.h>
@@ -61,7 +62,8 @@ const ScaledIdentityMetric<G>* asScalarMetric(const DissipationMetric<G>& metric
   return dynamic_cast<const ScaledIdentityMetric<G>*>(&metric);
 }
 
-/// k♯ = α · diag(k), k_i >= 0 (the heavy-top and Kirchhoff metrics of docs/file-formats.md).
+/// k♯ = α · diag(k), k_i >= 0 (the heavy-top and Kirchhoff metrics of
+/// docs/reference/command-lines-and-files.md).
 template <class G>
 class DiagonalMetric final : public DissipationMetric<G> {
  public:

@@ -77,7 +77,7 @@ inline std::string formatValue(const FormattedValue& v) { return v.text; }
 
 /// A state that overflowed or became NaN inside a step. It is what it says, not a
 /// solver that missed its tolerance: the message names the step, t, h and the offending
-/// entry (docs/conventions.md §4). A SolveFailure, so the valid prefix is kept alike.
+/// entry (docs/reference/conventions.md §4). A SolveFailure, so the valid prefix is kept alike.
 /// `quantity` names what became non-finite when it is not the state itself (the residual
 /// of an implicit equation whose data overflowed).
 class NonFiniteState : public SolveFailure {
@@ -114,7 +114,7 @@ class NonFiniteState : public SolveFailure {
 
 /// An iterative loop that used up its budget (sub-steps, iterations, series terms)
 /// before it converged: every loop has one, so no input runs without bound
-/// (docs/reliability.md). `what` names the loop, `budget` what ran out.
+/// (docs/reference/guarantees.md). `what` names the loop, `budget` what ran out.
 class BudgetExhausted : public SolveFailure {
  public:
   BudgetExhausted(const std::string& what, const std::string& budget, long step, double time,
@@ -135,7 +135,7 @@ class BudgetExhausted : public SolveFailure {
 };
 
 /// A step of an exponential-map method with |hξ| at or beyond the injectivity limit of
-/// exp (π on SO(3), docs/reliability.md §2): past it the Legendre equation has solutions
+/// exp (π on SO(3), docs/reference/guarantees.md §2): past it the Legendre equation has solutions
 /// on other branches and the method would converge to one of them without a word.
 /// `largest_h` is the largest admissible h at this state, limit/|ξ|.
 class InjectivityLimit : public SolveFailure {

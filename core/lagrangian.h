@@ -20,7 +20,8 @@ class Hamiltonian : public SmoothFunctionFor<typename G::template Dual<double>,
   using Group = G;
   /// Whether the gradient ξ = ∂H/∂μ solves an equation of its own (LegendreHamiltonian)
   /// instead of evaluating a formula: the small Legendre solver then runs no fixed-point
-  /// sweeps, each of which would be such a solve (integrators/solvers/legendre.h, docs/design.md).
+  /// sweeps, each of which would be such a solve (integrators/solvers/legendre.h,
+  /// docs/design/architecture.md).
   virtual bool gradientIsASolve() const { return false; }
 };
 

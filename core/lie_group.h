@@ -13,7 +13,7 @@
 //   exp(x), log(g), casimirs(mu)
 // Deduced API: everything composed below is written once from those; a group may shadow any of
 // them with a closed form (SO3 does), and the generic test suite checks each
-// group's versions against the defining identities of docs/conventions.md §1:
+// group's versions against the defining identities of docs/reference/conventions.md §1:
 //   <ad*_x mu, y> = <mu, [x, y]>,  <Ad*_g mu, y> = <mu, Ad_g y>,  Ad*_{gh} = Ad*_h Ad*_g.
 //
 // The algebra and dual element types are parameters: fixed-size Eigen vectors for
@@ -104,7 +104,7 @@ struct LieGroupBase {
   }
 
   /// Ad*_{cay(a) cay(b)} mu, the DDB update (paper, eq. (4.12)) with τ = cay; SO3 shadows it
-  /// with an unbiased vector form (docs/long-run.md).
+  /// with an unbiased vector form (docs/results/casimir-drift.md).
   template <class A, class D>
   static D cayTransport(const A& a, const A& b, const D& mu) {
     return Derived::AdDual(Derived::compose(Derived::cay(a), Derived::cay(b)), mu);
@@ -205,7 +205,7 @@ struct LieGroupBase {
   }
 
   /// ∂/∂x [(dcay^{-1}_x)* mu], the kDim × kDim matrix the Legendre Jacobian needs
-  /// (docs/conventions.md §4); fixed-size groups, by Jets through dcayInvDual.
+  /// (docs/reference/conventions.md §4); fixed-size groups, by Jets through dcayInvDual.
   template <class A, class D>
   static auto dcayInvDualJacobian(const A& x, const D& mu) {
     return jacobianByJets<A::RowsAtCompileTime>(
@@ -256,7 +256,7 @@ struct LieGroupBase {
     }
     if (to_round_off) {
       // A step size too large for this state, not bad input: a solve failure that ends
-      // the run and keeps its prefix (docs/reliability.md).
+      // the run and keeps its prefix (docs/reference/guarantees.md).
       throw BudgetExhausted("dexp series",
                             std::to_string(max_order) +
                                 " terms did not reach round-off (|x| is beyond "

@@ -38,7 +38,7 @@ struct MatrixFieldWorkspace {
 };
 
 /// Matrix groups: ξ = P ∂H/∂μ(Pμ), with Pμ into `argument`. The one place where a matrix
-/// group's Hamiltonian is evaluated (docs/conventions.md §2, "Systems on matrix groups");
+/// group's Hamiltonian is evaluated (docs/reference/conventions.md §2, "Systems on matrix groups");
 /// written against the matrix backend, so H may act on distributed matrices.
 template <class G, class H, class X>
 void matrixVelocityInto(const H& hamiltonian, const X& mu, X& argument, X& xi) {
@@ -72,7 +72,7 @@ class LiePoissonSystem {
   using Algebra = AlgebraT<double>;
   using Dual = DualT<double>;
   using Casimirs = typename G::template Casimirs<double>;
-  /// The matrix groups' arithmetic (docs/matrix-backend.md).
+  /// The matrix groups' arithmetic (docs/design/matrix-backend.md).
   using B = MatrixBackend<Dual>;
 
   LiePoissonSystem(std::string name, std::shared_ptr<const Hamiltonian<G>> hamiltonian,
@@ -112,8 +112,8 @@ class LiePoissonSystem {
 
   /// ξ = ∂H/∂μ (double or Jet). On matrix groups ξ = P ∂H/∂μ(P μ) with P = G::projectToAlgebra:
   /// the Hamiltonian sees an element of the algebra (su(N): the DDB Legendre unknown's trace
-  /// stays in the solve) and ξ is in the algebra whatever H returns (docs/conventions.md §2,
-  /// "Systems on matrix groups").
+  /// stays in the solve) and ξ is in the algebra whatever H returns (docs/reference/conventions.md
+  /// §2, "Systems on matrix groups").
   template <class T>
   AlgebraT<T> velocity(const DualT<T>& mu) const {
     return velocityOf(*hamiltonian_, mu);
@@ -275,7 +275,8 @@ class LiePoissonSystem {
 /// when they are `final` the compiler inlines ∂H/∂μ and k♯ into the field: one virtual call
 /// per evaluation (fieldAt) instead of two (∂H/∂μ and k♯ through their base classes), and ξ
 /// stays in registers. For a small system that is most of the explicit methods' overhead over
-/// hand-written code (docs/design.md, "Explicit steps"). Built by makeLiePoissonSystem.
+/// hand-written code (docs/design/architecture.md, "Explicit steps"). Built by
+/// makeLiePoissonSystem.
 template <class G, class H, class K>
 class TypedLiePoissonSystem final : public LiePoissonSystem<G> {
   static_assert(std::is_base_of_v<Hamiltonian<G>, H>, "H must derive from Hamiltonian<G>");

@@ -1,6 +1,6 @@
 // MatrixBackend<X>: all the arithmetic of the matrix groups' step formulas, so that one
 // formula serves a dense matrix, a matrix distributed over MPI ranks and any other storage
-// (docs/matrix-backend.md is the contract a backend implements). As in Boost.Odeint's
+// (docs/design/matrix-backend.md is the contract a backend implements). As in Boost.Odeint's
 // algebra and operations, a formula never touches entries: it combines matrices by the
 // element-wise operations below (copy, setZero, scale, divide, axpy, sum, addSum,
 // addCombination) and couples them by the functions after them: products, adjoints,
@@ -212,8 +212,8 @@ struct MatrixBackend {
   static double frobeniusDistance(const X& x, const X& y) { return (x - y).norm(); }
   /// ‖x‖₁, the largest column sum of |x_ij| (an upper bound of ‖x‖₂ for normal x). |z| is
   /// √(Re² + Im²), vectorised: std::abs of a complex calls hypot, which made this norm a
-  /// visible share of a fluid step (docs/design.md, "Threads"). Where |z|² may have under-
-  /// or overflowed (a norm that is tiny or not finite) hypot's exact |z| is used. NaN
+  /// visible share of a fluid step (docs/design/architecture.md, "Threads"). Where |z|² may have
+  /// under- or overflowed (a norm that is tiny or not finite) hypot's exact |z| is used. NaN
   /// entries make it NaN.
   /// Column ranges on the library's threads: the largest sum does not depend on them.
   static double oneNorm(const X& x) {
@@ -304,7 +304,7 @@ struct MatrixBackend {
 
   // The transposing passes go tile by tile and read the transposed tile by its columns:
   // reading it along its rows strides by a column's length, which for N a multiple of 256
-  // (complex) maps every access to the same cache set (docs/design.md, "Threads").
+  // (complex) maps every access to the same cache set (docs/design/architecture.md, "Threads").
   static constexpr Eigen::Index kTile = 32;
   using Tile = Eigen::Matrix<Scalar, kTile, kTile>;
 

@@ -2,7 +2,7 @@
 // Eigen matrix or vector (the dense backend's type, whose expressions a formula may write
 // directly) and whether its size is fixed at compile time (the small groups' vectors).
 // Every other state type is a matrix of some backend, reached through MatrixBackend only
-// (docs/matrix-backend.md).
+// (docs/design/matrix-backend.md).
 #pragma once
 
 #include <Eigen/Core>

@@ -1,5 +1,5 @@
 // Element-wise passes over a matrix split by column ranges among the library's threads
-// (core/thread_pool.h): the O(N²) work between a step's products (docs/design.md,
+// (core/thread_pool.h): the O(N²) work between a step's products (docs/design/architecture.md,
 // "Threads"). Each entry is computed by the same expression as in a serial pass, so the
 // results are the same bits whatever the number of threads.
 #pragma once

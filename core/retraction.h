@@ -10,7 +10,7 @@
 //                              transform M = (dτ^{-1}_{hξ})* ∂l/∂ξ uses (paper, Section 4.1, DDB
 //                              method step (a))
 // and, for fixed-size groups in double, the two parts of the Legendre Jacobian
-// (docs/conventions.md §4):
+// (docs/reference/conventions.md §4):
 //   dTauInverseDualMatrix(x)   the matrix of mu ↦ (dτ^{-1}_x)* mu
 //   dTauInverseDualJacobian(x, mu)  ∂/∂x [(dτ^{-1}_x)* mu]
 // Composed here, written once:

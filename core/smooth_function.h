@@ -30,14 +30,14 @@ class SmoothFunction {
   /// errors balance at about u^{2/3} ≈ 4e-11 relative. Only Newton-type solves use it (the
   /// matrix groups' Newton–Krylov fallbacks, the small solvers' Jacobians), and they judge
   /// convergence on the exact residual: an approximate derivative costs iterations, not
-  /// accuracy (docs/conventions.md §4, "Derivatives"). Override it with the formula where
+  /// accuracy (docs/reference/conventions.md §4, "Derivatives"). Override it with the formula where
   /// Newton runs often, e.g. at large h on matrix groups.
   virtual Codomain hessianTimes(const Domain& x, const Domain& v) const {
     if constexpr (isEigenMatrix<Domain>) {
       const double s = differenceStep(x.norm(), v.norm());
       const Domain plus = x + s * v, minus = x - s * v;
       return Codomain((gradient(plus) - gradient(minus)) / (2.0 * s));
-    } else {  // a backend's matrices (docs/matrix-backend.md)
+    } else {  // a backend's matrices (docs/design/matrix-backend.md)
       using B = MatrixBackend<Domain>;
       const double s = differenceStep(B::frobeniusNorm(x), B::frobeniusNorm(v));
       Domain plus = x, minus = x;
@@ -68,8 +68,8 @@ class SmoothFunction {
 };
 
 /// A SmoothFunction on a fixed-size (vector) domain, which can also give its Hessian whole:
-/// the small implicit solvers assemble their Jacobians from it (docs/conventions.md §4). The
-/// default asks hessianTimes for each column (n virtual calls, each a Jet evaluation inside
+/// the small implicit solvers assemble their Jacobians from it (docs/reference/conventions.md §4).
+/// The default asks hessianTimes for each column (n virtual calls, each a Jet evaluation inside
 /// AutoDiff); a system with an analytic Hessian returns it in one call, which for the heavy
 /// top removes six virtual calls from each Jacobian.
 template <class Domain, class Codomain>

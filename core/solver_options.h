@@ -1,6 +1,6 @@
 // SolverOptions: how hard the implicit solves of every method try (Legendre equations,
 // implicit Runge–Kutta stages); a constructor argument of the DDB methods and of
-// ImplicitRungeKutta (docs/conventions.md §4).
+// ImplicitRungeKutta (docs/reference/conventions.md §4).
 #pragma once
 
 namespace ddb {

@@ -1,8 +1,8 @@
 // ThreadPool: the library's own threads for a matrix step: its element-wise passes and
 // Poisson solve, which no BLAS threads, and, under a single-threaded BLAS, its products and
 // solves too (core/detail/blas_threads.h), so that one pool runs all of a step's work
-// (docs/design.md, "Threads"). One pool per process, of threadCount() threads counting the
-// caller.
+// (docs/design/architecture.md, "Threads"). One pool per process, of threadCount() threads counting
+// the caller.
 //
 // Why not OpenMP: libgomp's idle threads spin at full speed after each parallel region
 // while the BLAS's threads need the cores for the next product, and its spin is read from
@@ -143,7 +143,7 @@ class ThreadPool {
 
  private:
   /// Yields an idle worker makes before it sleeps: few, so that a worker idle beside a
-  /// threaded BLAS gives the core up soon (docs/design.md, "Threads").
+  /// threaded BLAS gives the core up soon (docs/design/architecture.md, "Threads").
   static constexpr int kSpinYields = 2000;
 
   explicit ThreadPool(int n) { start(n); }

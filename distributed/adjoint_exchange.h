@@ -1,4 +1,4 @@
-// The conjugate transpose of a block-cyclic matrix (docs/distributed.md, "Adjoints"): block
+// The conjugate transpose of a block-cyclic matrix (docs/design/distributed.md, "Adjoints"): block
 // (I, J) of x, conjugate-transposed, is block (J, I) of xᴴ, which lies on the rank at grid
 // position (J mod rows, I mod cols). Each rank packs the adjoints of its blocks, grouped by
 // destination, exchanges them in one MPI_Alltoallv and combines each received block with

@@ -1,5 +1,5 @@
 // ScaLAPACK's two-dimensional block-cyclic layout of an N×N matrix with square blocks of
-// size b on a process grid (docs/distributed.md): global row i lies on grid row
+// size b on a process grid (docs/design/distributed.md): global row i lies on grid row
 // (i / b) mod rows at local row (i / (b·rows))·b + i mod b, and columns likewise. The
 // descriptor and the local sizes come from ScaLAPACK's own descinit_ and numroc_.
 #pragma once

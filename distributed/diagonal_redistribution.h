@@ -1,4 +1,4 @@
-// The exchange between the block-cyclic layout and whole diagonals (docs/distributed.md):
+// The exchange between the block-cyclic layout and whole diagonals (docs/design/distributed.md):
 // diagonal m = j − i of an N×N matrix, an independent tridiagonal system of the Hoppe–Yau
 // Laplacian, is owned by one rank, rank q(m) mod P with q(0) = 0, q(m) = 2m − 1 and
 // q(−m) = 2m for m > 0, so the 2N − 1 diagonals, taken longest first, are dealt to the

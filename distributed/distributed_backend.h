@@ -1,6 +1,6 @@
 // MatrixBackend<DistributedMatrix>: the matrix backend (core/matrix_backend.h) of a
 // block-cyclic matrix, so that the matrix groups' step formulas run unchanged on matrices
-// distributed over MPI ranks (docs/distributed.md, "One step formula"). The operands of one
+// distributed over MPI ranks (docs/design/distributed.md, "One step formula"). The operands of one
 // formula share a layout, so the element-wise operations are the dense backend's on this
 // rank's local arrays. Products are pzgemm_,
 // adjoints an AdjointExchange, the 1-norm from column sums as the dense backend's, LU factors and
@@ -100,7 +100,8 @@ struct MatrixBackend<DistributedMatrix> {
   /// ‖x‖₁ as the dense backend forms it (|z| from the squares, hypot's where they may have
   /// under- or overflowed): this rank's column sums added over the process rows on rank 0,
   /// whose largest is broadcast, so every rank has the same bits. pzlange_ took |z| by hypot,
-  /// a visible share of the step (docs/distributed.md, "The 1-norm and the factor by solves").
+  /// a visible share of the step (docs/design/distributed.md, "The 1-norm and the factor by
+  /// solves").
   static double oneNorm(const X& x) {
     const double fast = largestColumnSum(x, false);
     return Dense::squaresWereExact(fast) ? fast : largestColumnSum(x, true);
@@ -135,7 +136,7 @@ struct MatrixBackend<DistributedMatrix> {
   }
 
   /// x, gathered whole, into rank 0's record; the other ranks' records get an empty matrix
-  /// (only rank 0's is written: docs/distributed.md, "Checkpoints").
+  /// (only rank 0's is written: docs/design/distributed.md, "Checkpoints").
   static void save(BinaryRecordWriter& out, const X& x) { out.put(x.gather()); }
   /// x ← the whole matrix of rank 0's record, scattered: the record is read on every rank
   /// through a RankZeroRecordReader, so that only rank 0 holds it whole.

@@ -1,5 +1,5 @@
 // The Poisson solve P = Δ⁻¹(W − tr(W)/N · I) of Zeitlin's fluid on a block-cyclic W
-// (docs/distributed.md): whole diagonals are gathered on their owners
+// (docs/design/distributed.md): whole diagonals are gathered on their owners
 // (DiagonalRedistribution), each is solved there by the serial HoppeYauLaplacian's
 // per-diagonal sweep, and the result goes back to the block-cyclic layout. Each rank keeps
 // the factors of its own diagonals only, packed as its diagonals are (two vectors of about

@@ -1,5 +1,5 @@
 // C = A·B (and C += s·A·B) for distributed N×N matrices (pzgemm_): one complex product, the
-// matrix groups' cost unit (docs/conventions.md §4), spread over the grid.
+// matrix groups' cost unit (docs/reference/conventions.md §4), spread over the grid.
 #pragma once
 
 #include <ddb/core/errors.h>

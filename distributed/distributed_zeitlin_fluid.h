@@ -2,7 +2,7 @@
 // on any backend (systems/zeitlin_fluid_on_backend.h) with DistributedPoissonSolver's Poisson
 // solve, an ordinary LiePoissonSystem on SU(N) with distributed states (DistributedSUN). The
 // method table's methods for any backend (makeMethod) and Relaxation run on it; every call is
-// collective (docs/distributed.md, "One step formula").
+// collective (docs/design/distributed.md, "One step formula").
 #pragma once
 
 #include <ddb/distributed/distributed_backend.h>

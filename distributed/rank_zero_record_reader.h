@@ -1,5 +1,5 @@
 // RankZeroRecordReader: a BinaryRecordReader on every rank of a process grid for a record
-// that rank 0 alone holds (fluid-relax-mpi's --resume: docs/distributed.md, "Checkpoints").
+// that rank 0 alone holds (fluid-relax-mpi's --resume: docs/design/distributed.md, "Checkpoints").
 // Every rank runs the same reading code in step. Each number, string or small matrix rank 0
 // reads is broadcast, so every rank reads the same value and takes the same branches; a
 // DistributedMatrix (MatrixBackend<DistributedMatrix>::load, getDistributed) is read whole on

@@ -41,7 +41,7 @@ class Cayley : public Retraction<Cayley<G>, G> {
     return G::dcayInvDualJacobian(x, mu);
   }
   /// Ad*_{cay(a) cay(b)} mu through the group, which may apply it without forming the
-  /// product (SO3: docs/long-run.md); shadows Retraction::transport.
+  /// product (SO3: docs/results/casimir-drift.md); shadows Retraction::transport.
   template <class A, class D>
   EIGEN_ALWAYS_INLINE D transport(const A& a, const A& b, const D& mu) const {
     return G::cayTransport(a, b, mu);

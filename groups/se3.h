@@ -1,5 +1,5 @@
 // SE(3) = SO(3) ⋉ R^3 in its 4×4 homogeneous representation; ξ = (ω, v), μ = (π, γ)
-// with the dot pairing (docs/conventions.md §1):
+// with the dot pairing (docs/reference/conventions.md §1):
 //   [ξ₁, ξ₂] = (ω₁×ω₂, ω₁×v₂ − ω₂×v₁),  ad*_ξ μ = (π×ω + γ×v, γ×ω),
 //   Ad*_(R,r) μ = (Rᵀ(π + γ×r), Rᵀγ),   Casimirs |γ|² and π·γ.
 // exp/log use SO(3)'s closed forms (V = dexp_ω of SO(3)); dexp and dexp^{-1} come
@@ -131,7 +131,7 @@ struct SE3 : LieGroupBase<SE3> {
   /// (dcay^{-1}_x)* μ = μ − ad*_x μ/2 + ¼((π·ω) ω − v × (γ × ω), 0), the transpose of dcayInv.
   /// Written on the 3-vector halves (the same operations in the same order as the formula):
   /// it is the residual of every SE(3) Legendre solve, and the 6-vector form through adDual and
-  /// comma initialisers took 15% of a heavy-top DDB step (perf, docs/design.md).
+  /// comma initialisers took 15% of a heavy-top DDB step (perf, docs/design/architecture.md).
   template <class T>
   EIGEN_ALWAYS_INLINE static Dual<T> dcayInvDual(const Algebra<T>& x, const Dual<T>& mu) {
     const Eigen::Matrix<T, 3, 1> w = x.template head<3>(), v = x.template tail<3>();
@@ -144,7 +144,7 @@ struct SE3 : LieGroupBase<SE3> {
     return out;
   }
   /// Ad*_{cay(x)} mu = (Rᵀ(π + γ × r), Rᵀγ) with R = cay(ω), r = (I − ω̂/2)^{-1} v (cay above),
-  /// Rᵀ applied as SO3::cayAdDual does, without forming R (docs/long-run.md).
+  /// Rᵀ applied as SO3::cayAdDual does, without forming R (docs/results/casimir-drift.md).
   template <class T>
   EIGEN_ALWAYS_INLINE static Dual<T> cayAdDual(const Algebra<T>& x, const Dual<T>& mu) {
     const Eigen::Matrix<T, 3, 1> w = x.template head<3>(), v = x.template tail<3>();

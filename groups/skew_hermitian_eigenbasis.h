@@ -1,6 +1,6 @@
 // SkewHermitianEigenbasis: the spectral calculus of a skew-Hermitian (real: skew-symmetric)
 // matrix x, on which the exponential retraction of SO(N) and SU(N) rests
-// (docs/conventions.md §1, "Matrix algebras"). x = V diag(iθ) Vᴴ, θ real ascending, from
+// (docs/reference/conventions.md §1, "Matrix algebras"). x = V diag(iθ) Vᴴ, θ real ascending, from
 // the Hermitian −ix; in x's eigenbasis (Â = Vᴴ A V) ad_x multiplies entry (a, b) by
 // i(θ_a − θ_b). So every function of ad_x with real Taylor coefficients (dexp, dexp⁻¹, their
 // duals under the trace pairing, where ad_x is skew-adjoint, and Ad*_{exp x}) acts as
@@ -92,7 +92,7 @@ class SkewHermitianEigenbasis {
   }
 
   /// out = exp(scale·x) = I + V diag(e^{i scale θ} − 1) Vᴴ: formed as V diag(e^{iθ}) Vᴴ it is
-  /// unitary only to a few ulps more (docs/conventions.md §2).
+  /// unitary only to a few ulps more (docs/reference/conventions.md §2).
   void exponential(double scale, Matrix& out) {
     const Complex& V = vectors();
     for (Eigen::Index a = 0; a < V.cols(); ++a) {

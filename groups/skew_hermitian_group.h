@@ -1,6 +1,6 @@
 // SkewHermitianGroup: the closed forms shared by SO(N) (real skew-symmetric algebra)
 // and SU(N) (complex skew-Hermitian algebra), N chosen at run time
-// (docs/conventions.md §1, "Matrix algebras"):
+// (docs/reference/conventions.md §1, "Matrix algebras"):
 //   ξ, μ are N×N matrices, hat = dualHat = identity, pairing <μ, ξ> = Re tr(μᴴ ξ),
 //   ad*_ξ μ = [μ, ξ],  Ad*_g μ = g⁻¹ μ g = gᴴ μ g,  (dcay⁻¹_x)* μ = (I + x/2) μ (I − x/2).
 // Every formula is O(N³) at most and no operator on the N²-dimensional algebra is formed.
@@ -8,7 +8,7 @@
 // vee and dualVee are the orthogonal projection onto skew-Hermitian matrices, u(N) (for
 // real matrices: so(N)). They do not remove the trace: the Cayley map sends su(N) into
 // U(N), not SU(N), and its tangent maps and the DDB Legendre unknown p live in u(N)
-// (docs/conventions.md §2, "Zeitlin's fluid"); projecting them would change the scheme.
+// (docs/reference/conventions.md §2, "Zeitlin's fluid"); projecting them would change the scheme.
 #pragma once
 
 #include <ddb/core/errors.h>
@@ -97,7 +97,7 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
   /// The orthogonal projection onto the algebra, in place: the skew-Hermitian part with the
   /// trace removed (su(N)), the skew-symmetric part for real matrices (so(N)). It is what a
   /// system hands its Hamiltonian, where the DDB Legendre unknown carries a trace, and what it
-  /// makes of the ξ the Hamiltonian returns (docs/conventions.md §2, "Systems on matrix
+  /// makes of the ξ the Hamiltonian returns (docs/reference/conventions.md §2, "Systems on matrix
   /// groups"). The result is skew-Hermitian bit for bit (entry (j, i) is −conj of entry
   /// (i, j), the diagonal imaginary), and sums and real multiples of such matrices stay so:
   /// an explicit step keeps its state on the algebra up to a trace of rounding size.
@@ -134,7 +134,7 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
   static X AdDual(const X& g, const X& mu) {
     return g.adjoint() * mu * g;
   }
-  // The exponential's tangent maps in closed form (docs/conventions.md §1, "Matrix
+  // The exponential's tangent maps in closed form (docs/reference/conventions.md §1, "Matrix
   // algebras"): ad_x multiplies entry (a, b) of x's eigenbasis by iδ, δ = θ_a − θ_b, and is
   // skew-adjoint under the trace pairing, so with f(iη) = (e^{iη} − 1)/(iη)
   //   dexp_x = f(ad_x),  dexp⁻¹_x = 1/f(ad_x),  (dexp⁻¹_x)* = 1/f(−ad_x).
@@ -201,10 +201,10 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
 
   // ---- In-place kernels of the matrix-free DDB Cayley step (no allocation) ----
   // They use skew-Hermitian structure: for skew-Hermitian a and p, pa = (ap)ᴴ, so
-  // [a, p] = ap − (ap)ᴴ costs one product (docs/conventions.md §4).
+  // [a, p] = ap − (ap)ᴴ costs one product (docs/reference/conventions.md §4).
 
   /// out = W − [a, p] + a p a, the fixed-point map of W = (I + a) p (I − a)
-  /// (docs/conventions.md §2); ap, apa are workspaces. Two products.
+  /// (docs/reference/conventions.md §2); ap, apa are workspaces. Two products.
   template <class X>
   static void cayleyFixedPoint(const X& W, const X& a, const X& p, X& ap, X& apa, X& out) {
     MatrixBackend<X>::multiply(a, p, ap);

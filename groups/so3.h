@@ -1,5 +1,6 @@
 // SO(3): rotations; so(3) ≅ R^3 with [x, y] = x × y, so(3)* ≅ R^3 with the dot
-// pairing (docs/conventions.md §1). Closed forms shadow the generic LieGroupBase versions.
+// pairing (docs/reference/conventions.md §1). Closed forms shadow the generic LieGroupBase
+// versions.
 #pragma once
 
 #include <ddb/core/lie_group.h>
@@ -73,7 +74,7 @@ struct SO3 : LieGroupBase<SO3> {
   }
 
   /// The spectral radius of ad_x (its eigenvalues are 0, ±i|x|): exp is one-to-one for
-  /// adRadius < π and dexp^{-1} has its poles at 2π (docs/reliability.md §2).
+  /// adRadius < π and dexp^{-1} has its poles at 2π (docs/reference/guarantees.md §2).
   static double adRadius(const Algebra<double>& x) { return x.norm(); }
 
   /// Casimir |mu|.
@@ -145,7 +146,7 @@ struct SO3 : LieGroupBase<SO3> {
   /// Ad*_{cay(x)} mu = cay(x)ᵀ mu = mu + c (−x × mu + ½ x × (x × mu)), c = 4/(4 + |x|²),
   /// as vector operations: forming cay(x) rounds its diagonal 1 − O(|x|²) the same way at
   /// every step of a steady rotation, and that bias adds up linearly in |M|
-  /// (docs/long-run.md); here the only rounding of order ulp(mu) is the final sum.
+  /// (docs/results/casimir-drift.md); here the only rounding of order ulp(mu) is the final sum.
   template <class T>
   EIGEN_ALWAYS_INLINE static Dual<T> cayAdDual(const Algebra<T>& x, const Dual<T>& mu) {
     const Algebra<T> xm = x.cross(mu);
@@ -200,8 +201,8 @@ struct SO3 : LieGroupBase<SO3> {
     return y + xy * a + x.cross(xy) * b;
   }
 
-  /// Closed form dexp^{-1}_x = I - X/2 + c X², c = (1 - (θ/2) cot(θ/2))/θ² (docs/conventions.md
-  /// §1).
+  /// Closed form dexp^{-1}_x = I - X/2 + c X², c = (1 - (θ/2) cot(θ/2))/θ²
+  /// (docs/reference/conventions.md §1).
   template <class T>
   static Algebra<T> dexpInv(const Algebra<T>& x, const Algebra<T>& y) {
     const Algebra<T> xy = x.cross(y);

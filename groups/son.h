@@ -1,5 +1,5 @@
 // SO(N), N chosen at run time: the algebra so(N) of real skew-symmetric N×N matrices,
-// its dual identified with it by the pairing Re tr(μᵀ ξ) (docs/conventions.md §1).
+// its dual identified with it by the pairing Re tr(μᵀ ξ) (docs/reference/conventions.md §1).
 // Casimirs: the spectrum of μ (the eigenvalues ±iλ of a real skew matrix, as the real
 // eigenvalues of −iμ, ascending).
 #pragma once

@@ -1,5 +1,5 @@
 // SU(N), N chosen at run time: the algebra su(N) of complex skew-Hermitian traceless N×N
-// matrices, its dual identified with it by the pairing Re tr(μᴴ ξ) (docs/conventions.md
+// matrices, its dual identified with it by the pairing Re tr(μᴴ ξ) (docs/reference/conventions.md
 // §1). Casimirs: the spectrum of μ (the eigenvalues of the Hermitian −iμ, ascending).
 // The Cayley family and the DDB Legendre unknown live in u(N) (see
 // skew_hermitian_group.h); states are checked to be traceless by requireState.
@@ -21,7 +21,7 @@ struct SUN : SkewHermitianGroup<SUN, detail::ComplexScalar> {
   static constexpr const char* kAlgebraName = "skew-Hermitian";
 };
 
-/// SU(N) with its states in another backend's matrices X (docs/matrix-backend.md): SUN's
+/// SU(N) with its states in another backend's matrices X (docs/design/matrix-backend.md): SUN's
 /// closed forms, with Algebra and Dual X, so that a system and a method are the library's own
 /// classes instantiated off the dense matrices (on MPI ranks: SUNOn<DistributedMatrix>). Only
 /// what is written against MatrixBackend<X> compiles for it: the system's in-place

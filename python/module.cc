@@ -1,5 +1,5 @@
 // The `ddb` Python module: the library's systems, the method table and integrate() on
-// NumPy arrays (README, "Python"; docs/python.md).
+// NumPy arrays (README, "Python"; docs/guide/python.md).
 #include <pybind11/pybind11.h>
 
 #include "bindings.h"
@@ -9,7 +9,7 @@ PYBIND11_MODULE(ddb, m) {
       "Lie-Poisson systems with double-bracket dissipation, integrated by the DDB methods "
       "(energy decays, Casimirs kept) and their peers, at C++ speed. Build a system "
       "(rigid_body, heavy_top, kirchhoff, manakov, zeitlin, user_system), pick a method by "
-      "its name (methods()) and call integrate(). See docs/python.md.";
+      "its name (methods()) and call integrate(). See docs/guide/python.md.";
   m.attr("__version__") = DDB_VERSION;
   ddb::python::bindErrors(m);
   ddb::python::bindSystem(m);

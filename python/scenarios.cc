@@ -1,5 +1,5 @@
 // The paper's scenarios and the default heavy top and Kirchhoff body
-// (systems/paper_scenarios.h; docs/conventions.md §3): their data, system() and mu0.
+// (systems/paper_scenarios.h; docs/reference/conventions.md §3): their data, system() and mu0.
 #include <ddb/systems/paper_scenarios.h>
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>

@@ -1,4 +1,4 @@
-// States between NumPy and Eigen (docs/python.md, "Copies"). A state of SO(3) is an array
+// States between NumPy and Eigen (docs/guide/python.md, "Copies"). A state of SO(3) is an array
 // of shape (3,), of SE(3) (6,), of SO(N) a real (N, N) array, of SU(N) a complex (N, N)
 // one; a stack of k states has a leading axis k. Every conversion copies: into an Eigen
 // object that the integrator owns and steps in place, and out into NumPy's row-major

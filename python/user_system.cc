@@ -1,7 +1,7 @@
 // ddb.user_system(): a system whose Hamiltonian is written in Python (H, its gradient and
 // optionally its Hessian-vector product), on SO3, SE3, SO(N) or SU(N), with k# = alpha Id
 // or alpha diag(metric); every method of the table that applies runs on it. Each call of
-// H's functions takes the GIL and copies the state into a new array (docs/python.md).
+// H's functions takes the GIL and copies the state into a new array (docs/guide/python.md).
 #include <ddb/core/dissipation_metric.h>
 #include <ddb/core/lagrangian.h>
 
@@ -154,7 +154,7 @@ void bindUserSystem(py::module_& m) {
 group: "SO3" (states (3,)), "SE3" ((6,)), "SO(N)" (real (N, N)) or "SU(N)" (complex (N, N)).
 hamiltonian: H(mu) -> float.
 gradient: dH/dmu(mu) -> array of mu's shape. On SO(N), SU(N) the system hands H the state
-    projected onto the algebra and projects the gradient (docs/conventions.md §2).
+    projected onto the algebra and projects the gradient (docs/reference/conventions.md §2).
 hessian_times: optional (mu, v) -> D^2H(mu)[v]; without it a central difference of
     `gradient` (good to ~4e-11 relative: it costs Newton iterations, not accuracy).
 alpha, metric: the dissipation k# = alpha diag(metric) (SO3, SE3; metric: 3 or 6 numbers
@@ -164,7 +164,7 @@ name: the system's name.
 
 Without a Lagrangian, the paper's symmetric variants (sddb-paper-*) do not apply; every
 other method does (system.methods()). Each call of H's functions takes the GIL and copies
-the state into a new array: see docs/python.md for what that costs per step.)doc");
+the state into a new array: see docs/guide/python.md for what that costs per step.)doc");
 }
 
 }  // namespace ddb::python

@@ -63,7 +63,8 @@ void bindZeitlin(py::module_& m) {
       m, "ZeitlinFluid",
       "Zeitlin's fluid on SU(N): vorticity W (complex skew-Hermitian, traceless N x N), "
       "hbar = 2/sqrt(N^2 - 1), stream matrix P = Laplacian^-1 W, "
-      "W' = ([P, W] + alpha [W, [P, W]])/hbar (docs/conventions.md §2). casimirs() is the "
+      "W' = ([P, W] + alpha [W, [P, W]])/hbar (docs/reference/conventions.md §2). "
+      "casimirs() is the "
       "spectrum of -iW.")
       .def_property_readonly("hbar", [](const ZeitlinFluid& f) { return f.hamiltonian().hbar(); })
       .def(

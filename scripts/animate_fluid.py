@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Animation of a fluid-relax run from its fluid.hdf5 (docs/file-formats.md, "fluid.hdf5").
+"""Animation of a fluid-relax run from its fluid.hdf5
+(docs/reference/command-lines-and-files.md, "fluid.hdf5").
 
 Usage: animate_fluid.py FILE.hdf5 OUT.mp4
 

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Figures for a fluid-relax output folder (docs/file-formats.md), from its CSV/JSON only.
+"""Figures for a fluid-relax output folder (docs/reference/command-lines-and-files.md), from its
+CSV/JSON only.
 
 Usage: plot_fluid.py OUT_DIR
 
@@ -9,7 +10,7 @@ history.png           energy, enstrophy, ||[P,W]||_F (log) and spectrum drift (l
                       omitted) against t, from history.csv
 
 The vorticity is omega(theta, phi) = sum omega_lm Y_lm(theta, phi) with the real spherical
-harmonics of docs/conventions.md §2 (theta colatitude, phi longitude):
+harmonics of docs/reference/conventions.md §2 (theta colatitude, phi longitude):
   m > 0: sqrt(2) (-1)^m Re Y_l^m,  m < 0: sqrt(2) (-1)^m Im Y_l^|m|,  m = 0: Y_l^0,
 Y_l^m being scipy's complex harmonics (Condon-Shortley phase), so that Y_10, Y_11, Y_1-1
 are proportional to z, x, y.

@@ -2,7 +2,7 @@
 """Relative Casimir drift against the number of steps for long ddb-compare runs.
 
 Usage: plot_long_run.py OUT.png LABEL=FOLDER [LABEL=FOLDER ...]
-Each FOLDER holds a ddb-compare run with one method and --every K (docs/long-run.md);
+Each FOLDER holds a ddb-compare run with one method and --every K (docs/results/casimir-drift.md);
 the curve is the largest |C_k - C_0| / |C_0| over the rows written up to step k.
 """
 import csv

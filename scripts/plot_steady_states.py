@@ -5,7 +5,7 @@ usage: plot_steady_states.py FIXED ADAPTIVE NEWTON [IMPLICIT] OUT.png
 
 FIXED, ADAPTIVE, NEWTON and IMPLICIT are fluid-relax output folders (history.csv,
 summary.json): fixed steps, --adaptive, --newton, and --adaptive with --method
-ddb-cay-implicit (docs/steady-states.md). Left: ||[P, W]||_F and the step h against the flow
+ddb-cay-implicit (docs/guide/steady-states.md). Left: ||[P, W]||_F and the step h against the flow
 time t for the time-stepping runs (one axis pair: ||[P, W]||_F on the left scale, h on the
 right). Right: ||[P, W]||_F against the accepted step for all, with each run's steps and wall
 time in its label (a Newton search has no time, and its steps cost more than a DDB step: the

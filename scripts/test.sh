@@ -40,7 +40,8 @@ if [[ -f "$scratch/prefix/share/ddb/cmake/ddbDistributedTargets.cmake" ]]; then
   OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 \
     OMPI_MCA_mpi_yield_when_idle=1 OPENBLAS_NUM_THREADS=1 mpiexec -n 2 "$scratch/distributed/app"
 else
-  echo "== examples/distributed skipped: the distributed layer was not built (docs/distributed.md)"
+  echo "== examples/distributed skipped: the distributed layer was not built" \
+    "(docs/design/distributed.md)"
 fi
 
 # Debug catches a build type overwritten unconditionally, the empty one a default
@@ -55,7 +56,7 @@ for build_type in Debug ""; do
 done
 # The library's failure-mode and randomised tests (every system and DDB method, the small
 # and the matrix-free Legendre solvers, the matrix groups' OpenBLAS products) again under
-# AddressSanitizer and UndefinedBehaviorSanitizer (docs/reliability.md §4): -O1 -g with
+# AddressSanitizer and UndefinedBehaviorSanitizer (docs/reference/guarantees.md §4): -O1 -g with
 # Eigen's own assertions on (no NDEBUG). Only these two: a sanitized file takes about 3×
 # its Release compile time, and more would take .ci/run past 30 minutes. Any finding stops
 # the run.

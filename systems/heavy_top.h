@@ -1,5 +1,5 @@
-// The heavy top on se(3)* (docs/conventions.md §2): μ = (π, γ), H = ½ π·𝕀^{-1}π + mgℓ χ·γ,
-// so ξ = ∂H/∂μ = (𝕀^{-1}π, mgℓ χ) and μ̇ = ad*_ξ μ gives π̇ = π×Ω + mgℓ γ×χ,
+// The heavy top on se(3)* (docs/reference/conventions.md §2): μ = (π, γ), H = ½ π·𝕀^{-1}π + mgℓ
+// χ·γ, so ξ = ∂H/∂μ = (𝕀^{-1}π, mgℓ χ) and μ̇ = ad*_ξ μ gives π̇ = π×Ω + mgℓ γ×χ,
 // γ̇ = γ×Ω. H is linear in γ: there is no regular Lagrangian, so DDB runs in its
 // Hamiltonian form. Dissipation k♯ = α diag(k); Casimirs |γ|², π·γ.
 #pragma once

@@ -1,5 +1,5 @@
 // The Hoppe–Yau Laplacian Δ_N on N×N matrices, the quantised Laplace–Beltrami operator
-// of Zeitlin's fluid on the sphere (docs/conventions.md §2), indices 0-based:
+// of Zeitlin's fluid on the sphere (docs/reference/conventions.md §2), indices 0-based:
 //   (Δ P)_ij = −((N−1)(i+j+1) − 2ij) P_ij + √(i(N−i) j(N−j)) P_{i−1,j−1}
 //              + √((i+1)(N−i−1)(j+1)(N−j−1)) P_{i+1,j+1}.
 // Each diagonal m = j − i is an invariant tridiagonal block (the same coefficients for
@@ -10,7 +10,7 @@
 // Entry (i, j) follows (i−1, j−1) on its diagonal, so the factors are stored as N×N
 // matrices laid out like P and all diagonals are swept at once, column after column:
 // contiguous memory instead of a stride of N + 1 (the solve runs in every sweep of the
-// fluid's Legendre solver; docs/design.md, "Measured, and what it decided").
+// fluid's Legendre solver; docs/design/architecture.md, "Measured, and what it decided").
 #pragma once
 
 #include <ddb/core/errors.h>
@@ -145,7 +145,7 @@ class HoppeYauLaplacian {
   /// Solves diagonal m alone, in place: `values` holds the N − |m| entries of diagonal m of
   /// W, (k, k + m) or (k − m, k) for k = 0, 1, …, and becomes those of solve(W). The same
   /// sweeps on the same factors as solve, one diagonal at a time, for a caller that holds
-  /// whole diagonals rather than the matrix (docs/distributed.md); m = 0 removes the mean
+  /// whole diagonals rather than the matrix (docs/design/distributed.md); m = 0 removes the mean
   /// before and after, as solve does with the trace.
   void solveDiagonal(Eigen::Index m, Eigen::Ref<Eigen::VectorXcd> values) const {
     const Eigen::Index offset = std::abs(m), length = n_ - offset;

@@ -1,4 +1,4 @@
-// The SO(N) generalised rigid body (Manakov; docs/conventions.md §2) with double-bracket
+// The SO(N) generalised rigid body (Manakov; docs/reference/conventions.md §2) with double-bracket
 // dissipation K = α·Id: Ω real skew-symmetric, l(Ω) = ½<Ω, 𝕁Ω> with the inertia operator
 // 𝕁Ω = ΩJ + JΩ, J = diag(J_1..J_N) > 0; M = 𝕁Ω, so Ω_ij = M_ij/(J_i + J_j), and
 // Ṁ = [M, Ω] plus the double bracket. For N = 3 it is the rigid body with

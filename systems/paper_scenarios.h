@@ -1,4 +1,4 @@
-// The paper's scenario data (Section 5; docs/conventions.md §3) and the default heavy
+// The paper's scenario data (Section 5; docs/reference/conventions.md §3) and the default heavy
 // top and Kirchhoff body, written once for the apps, the benchmark and the tests.
 // Each value type holds plain data and builds its system and initial momentum on demand,
 // so that a caller can start from a scenario and override single parameters.

@@ -1,4 +1,4 @@
-// The real spherical-harmonic basis T_lm of su(N) ⊕ i·I (docs/conventions.md §2): the
+// The real spherical-harmonic basis T_lm of su(N) ⊕ i·I (docs/reference/conventions.md §2): the
 // eigenmatrices of the Hoppe–Yau Laplacian, ΔT_lm = −l(l+1) T_lm, orthonormal for
 // Re tr(AᴴB)/N, so that ω_lm = Re tr(T_lmᴴ W)/N are the real spherical-harmonic
 // coefficients of the vorticity W: ω(θ, φ) = Σ ω_lm Y_lm(θ, φ).
@@ -119,8 +119,8 @@ class SphericalHarmonicBasis {
   /// product, so no recurrence runs against its growing solution. The pivots of all
   /// eigenvalues are computed together, a row at a time, so that the divisions are
   /// vectorised. The Laplacian's blocks have known eigenvalues, so none is computed:
-  /// Eigen's QR iteration took O(n³) per block and made the basis O(N⁴) (docs/design.md,
-  /// "The spherical-harmonic basis").
+  /// Eigen's QR iteration took O(n³) per block and made the basis O(N⁴)
+  /// (docs/design/architecture.md, "The spherical-harmonic basis").
   static void eigenvectors(const Eigen::VectorXd& diagonal, const Eigen::VectorXd& subdiagonal,
                            const Eigen::ArrayXd& lambda, TwistedFactors& f, Eigen::ArrayXXd& z) {
     const Eigen::Index n = diagonal.size(), count = lambda.size();
@@ -188,8 +188,9 @@ class SphericalHarmonicBasis {
     }
   }
 
-  /// w.vectors = v_{l,m}, l = m..N−1: block m's eigenvectors for −l(l+1) (docs/conventions.md
-  /// §2), scaled to ‖v‖ = √N with the sign of their last component (−1)^m.
+  /// w.vectors = v_{l,m}, l = m..N−1: block m's eigenvectors for −l(l+1)
+  /// (docs/reference/conventions.md §2), scaled to ‖v‖ = √N with the sign of their last component
+  /// (−1)^m.
   void blockVectors(Eigen::Index m, Workspace& w) const {
     const Eigen::Index length = n_ - m;
     w.lambda.resize(length);

@@ -1,5 +1,5 @@
 // Zeitlin's SU(N) fluid on the sphere with double-bracket dissipation
-// (docs/conventions.md §2): vorticity W ∈ su(N), ħ = 2/√(N² − 1), stream matrix
+// (docs/reference/conventions.md §2): vorticity W ∈ su(N), ħ = 2/√(N² − 1), stream matrix
 // P = Δ_N⁻¹ W, and
 //   Ẇ = (1/ħ)([P, W] + α [W, [P, W]]),  dE/dt = −α ‖[P, W]‖_F²/(ħN),
 // with energy E = Re tr(WP)/(2N) >= 0, enstrophy Z = ‖W‖_F²/(2N) (constant), and the

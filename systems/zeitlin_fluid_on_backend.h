@@ -1,4 +1,4 @@
-// Zeitlin's fluid (systems/zeitlin_fluid.h) on any matrix backend (docs/matrix-backend.md),
+// Zeitlin's fluid (systems/zeitlin_fluid.h) on any matrix backend (docs/design/matrix-backend.md),
 // given that backend's Poisson solve: the same system as makeZeitlinFluid's, a
 // LiePoissonSystem on SUNOn<X> with k♯ = α·Id (ScaledIdentityMetric), whose Hamiltonian
 // evaluates through the backend: H(W) = Re tr(WP)/(2ħ) = −Re⟨P, W⟩/(2ħ) (P skew-Hermitian),

@@ -1,5 +1,6 @@
-// Seeded, reproducible initial vorticities for Zeitlin's fluid (docs/file-formats.md,
-// fluid-relax --init): every one is in su(N) and scaled to ‖W‖_F = √N, i.e. enstrophy ½.
+// Seeded, reproducible initial vorticities for Zeitlin's fluid
+// (docs/reference/command-lines-and-files.md, fluid-relax --init): every one is in su(N) and scaled
+// to ‖W‖_F = √N, i.e. enstrophy ½.
 //   random: i.i.d. standard normal real and imaginary parts, projected to su(N);
 //   l1:     W = U X₃ Uᴴ, X₃ = ħ i diag(j − (N−1)/2), U a random unitary (QR of a normal
 //           matrix with the phases of R's diagonal removed: Haar-distributed) — a point of

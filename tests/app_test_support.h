@@ -1,5 +1,6 @@
 // Running an app end to end from a test: the app's exit status and output, its peak
-// memory, fresh output folders, and the CSV files it writes (docs/file-formats.md).
+// memory, fresh output folders, and the CSV files it writes
+// (docs/reference/command-lines-and-files.md).
 #pragma once
 
 #include <sys/resource.h>

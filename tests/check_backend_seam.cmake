@@ -1,5 +1,5 @@
 # Fails if a formula reaches past the matrix backend to the storage of a matrix
-# (docs/matrix-backend.md): outside the backends, no file of the library's formula layers
+# (docs/design/matrix-backend.md): outside the backends, no file of the library's formula layers
 # (core, groups, systems, integrators) nor of the apps names a backend's local array
 # (`.local()`, `entries(`), so that a backend whose memory is not this process's (a GPU,
 # MPI ranks) runs every formula unchanged.
@@ -32,7 +32,7 @@ if(count LESS 40)
 endif()
 if(errors)
   message(FATAL_ERROR "formulas that touch a matrix's storage instead of calling the backend "
-                      "(docs/matrix-backend.md):\n${errors}")
+                      "(docs/design/matrix-backend.md):\n${errors}")
 endif()
 message(STATUS "${count} files of core, groups, systems, integrators and apps go through the "
                "matrix backend")

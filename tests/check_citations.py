@@ -5,11 +5,12 @@ heading is then mechanical, and a reader who follows a comment finds the text it
 A citation is a path under docs/ named in the code, the scripts, the build files or the
 docs themselves, optionally followed by a section and a heading:
 
-    docs/conventions.md                      the file exists
-    docs/conventions.md §2                   it has a heading "§2 ..." or "2. ..."
-    docs/file-formats.md, "Checkpoints"      it has a heading or a bold run-in title (of a
+    docs/reference/conventions.md            the file exists
+    docs/reference/conventions.md §2         it has a heading "§2 ..." or "2. ..."
+    docs/reference/guarantees.md, "Nothing finished is lost"
+                                             it has a heading or a bold run-in title (of a
                                              paragraph or a list item)
-    docs/conventions.md §1, "Matrix algebras"    ... inside §1
+    docs/reference/conventions.md §1, "Matrix algebras"    ... inside §1
 
 as comments wrap them (across comment leaders). A title matches when it is the cited text, or
 begins with it followed by ":", ".", "," or " (" (backticks ignored): "Run folders" names

@@ -37,7 +37,7 @@ foreach(file IN LISTS library_files user_files)
       string(APPEND errors "  ${file}: ${line}  (resolves only in the tree; write <ddb/...>)\n")
     elseif(path MATCHES "^ddb/(.*)$")
       # Installed, include/ddb/ holds the four folders, ddb.h and, when the distributed layer
-      # is built, distributed/ (docs/distributed.md); nothing else of the tree.
+      # is built, distributed/ (docs/design/distributed.md); nothing else of the tree.
       set(rest "${CMAKE_MATCH_1}")
       if(NOT rest MATCHES "^(core|groups|systems|integrators|distributed)/" AND NOT rest STREQUAL "ddb.h")
         string(APPEND errors "  ${file}: ${line}  (not a library header: <ddb/core|groups|"

@@ -1,5 +1,6 @@
 // A step of any method on a matrix group allocates nothing once its workspaces exist
-// (docs/conventions.md §4): every malloc of this binary is counted (tools/malloc_counter.h).
+// (docs/reference/conventions.md §4): every malloc of this binary is counted
+// (tools/malloc_counter.h).
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/manakov_body.h>
 #include <ddb/systems/zeitlin_fluid.h>

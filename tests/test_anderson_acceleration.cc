@@ -54,7 +54,7 @@ TEST(AndersonAcceleration, SolvesAnAffineMapOnR4InAtMostSixMaps) {
 }
 
 // A real-linear map on complex matrices with the spectrum the symmetric DDB's fixed point
-// shows on the fluid (docs/design.md): one slow direction among fast ones,
+// shows on the fluid (docs/design/architecture.md): one slow direction among fast ones,
 // p ↦ 0.95 Re⟨u, p⟩ u + 0.1 B p Bᴴ + c, with ‖u‖_F = 1 and B unitary (Re⟨x, y⟩ = Re tr xᴴy).
 // The plain iteration, run to round-off, is the reference; mixing needs ten times fewer maps.
 TEST(AndersonAcceleration, RemovesTheSlowDirectionOfARealLinearMapOnComplexMatrices) {

@@ -1,4 +1,4 @@
-// Every row of docs/bad-inputs.md, run against the real apps: the table is the one
+// Every row of docs/reference/bad-inputs.md, run against the real apps: the table is the one
 // source of the cases and of their messages. Each row must exit with status 2, print
 // exactly one line on stderr that starts with "<app>: ", names the row's flag and
 // contains the documented message, and create or change nothing: neither a new output
@@ -89,9 +89,9 @@ std::map<std::string, std::string> snapshot(const fs::path& root) {
 
 TEST(BadInputs, EveryRowOfTheTableExitsTwoWithItsMessageAndWritesNothing) {
   const std::vector<Row> rows = readTable(DDB_BAD_INPUTS_DOC);
-  ASSERT_GE(rows.size(), 40u) << "docs/bad-inputs.md promises at least 40 rows";
+  ASSERT_GE(rows.size(), 40u) << "docs/reference/bad-inputs.md promises at least 40 rows";
 
-  // The scratch folder {tmp} and its fixtures (docs/bad-inputs.md lists them).
+  // The scratch folder {tmp} and its fixtures (docs/reference/bad-inputs.md lists them).
   const fs::path tmp = freshFolder("ddb_bad_inputs_", "scratch");
   fs::create_directories(tmp / "existing");
   std::ofstream(tmp / "existing" / "summary.json") << "{\"from\": \"an earlier run\"}\n";
@@ -110,7 +110,8 @@ TEST(BadInputs, EveryRowOfTheTableExitsTwoWithItsMessageAndWritesNothing) {
   environment.timeout_s = 20;  // a row that runs instead of failing must not hang ctest
   for (const Row& row : rows) {
     const std::string where =
-        "docs/bad-inputs.md:" + std::to_string(row.line) + ": " + row.app + " " + row.arguments;
+        "docs/reference/bad-inputs.md:" + std::to_string(row.line) + ": " + row.app + " " +
+        row.arguments;
     ASSERT_EQ(programs.count(row.app), 1u) << where;
     const std::string arguments = replaceAll(row.arguments, "{tmp}", tmp.string());
     const std::string message = replaceAll(row.message, "{tmp}", tmp.string());

@@ -1,6 +1,6 @@
 // The apps' command-line helpers (apps/common/cli.h): numbers read as std::stod read them
 // but without the locale, and options given twice rejected as CLI11's own parse counted
-// them (docs/bad-inputs.md, "Repeated flags").
+// them (docs/reference/bad-inputs.md, "Repeated flags").
 #include <gmock/gmock.h>
 
 #include <cmath>

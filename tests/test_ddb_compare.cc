@@ -1,6 +1,6 @@
 // ddb-compare end to end on a short horizon: the files against the contract of
-// docs/file-formats.md (columns, row count, JSON keys, finite values), the final state
-// against the library called directly, bad input (exit status 2, a message naming the
+// docs/reference/command-lines-and-files.md (columns, row count, JSON keys, finite values), the
+// final state against the library called directly, bad input (exit status 2, a message naming the
 // flag, nothing written), --help, --version, "custom" scenarios, --every, FAILED runs,
 // I/O errors (exit status 1 naming the file) and constant memory on long runs.
 #include <ddb/integrators/drivers/relax.h>
@@ -131,7 +131,7 @@ TEST(DdbCompare, SE3SystemsWriteTwoCasimirColumns) {
 
 TEST(DdbCompare, FailedSolveKeepsThePrefixAndExitsOne) {
   // Energy ascent (α = −0.5) from Ω₀ near the slow axis: |Ω| grows until an exp step of
-  // h = 4 passes the injectivity limit h|ξ| = π (docs/reliability.md §2) after some good
+  // h = 4 passes the injectivity limit h|ξ| = π (docs/reference/guarantees.md §2) after some good
   // steps; the valid prefix is written. Independent expectation: the step at which the
   // library's own integrate() fails.
   const Eigen::Vector3d inertia(1.0, 1.3, 0.5), omega0(0.05, 0.4, 0.1);
@@ -195,7 +195,7 @@ TEST(DdbCompare, HelpListsEveryMethodSystemScenarioAndDefault) {
   }
   for (const std::string init : {"random", "l1", "zonal"}) EXPECT_TRUE(hasLine(init)) << init;
   for (const std::string scenario : {"A", "B", "C"}) EXPECT_TRUE(hasLine(scenario)) << scenario;
-  // Defaults of docs/file-formats.md and of the paper's scenarios (Section 5).
+  // Defaults of docs/reference/command-lines-and-files.md and of the paper's scenarios (Section 5).
   for (const std::string text :
        {"--h TEXT=0.1", "--out TEXT=results", "--system TEXT=rigid-body", "--scenario TEXT=A",
         "--every INT=1", "--repeat INT=5", "A 30", "B and C 250", "1,1.3,0.5", "C 1,1,0.5",
@@ -467,7 +467,7 @@ TEST(DdbCompare, MemoryDoesNotGrowWithTheNumberOfSteps) {
       << short_run.max_rss_kb << " kB vs " << long_run.max_rss_kb << " kB";
 }
 
-/// r = |M × Ω|/(|M| |Ω|) of the rigid body, Ω = M/𝕀 (docs/steady-states.md), computed
+/// r = |M × Ω|/(|M| |Ω|) of the rigid body, Ω = M/𝕀 (docs/guide/steady-states.md), computed
 /// here from the written state.
 double rigidBodyResidual(const Eigen::Vector3d& inertia, const Eigen::Vector3d& M) {
   const Eigen::Vector3d omega = M.cwiseQuotient(inertia);
@@ -519,7 +519,7 @@ TEST(DdbCompare, UntilSteadyAdaptiveReachesScenarioBsLimitPoint) {
     EXPECT_NEAR(Mk.norm(), M0.norm(), 1e-14);
     EXPECT_NEAR(row[7], rigidBodyResidual(inertia, Mk), 1e-12 * row[7]) << k;
     // Stopped at the first state within the tolerance; the energy never rose beyond the
-    // rounding of an energy difference, 8ε max(|H|, |H'|) (docs/steady-states.md, rule 2).
+    // rounding of an energy difference, 8ε max(|H|, |H'|) (docs/guide/steady-states.md, rule 2).
     if (k + 1 < rows.size()) {
       EXPECT_GT(row[7], kTolerance) << k;
     }
@@ -528,7 +528,7 @@ TEST(DdbCompare, UntilSteadyAdaptiveReachesScenarioBsLimitPoint) {
                                              std::max(std::abs(row[4]), std::abs(rows[k - 1][4])))
           << k;
       EXPECT_NEAR(row[0] - rows[k - 1][0], row[6], 1e-12 * row[0]) << k;
-      // h is the first step times a power of two (docs/steady-states.md).
+      // h is the first step times a power of two (docs/guide/steady-states.md).
       const double doublings = std::log2(row[6] / 0.1);
       EXPECT_NEAR(doublings, std::round(doublings), 1e-12) << k;
     }

@@ -1,6 +1,6 @@
-// ddb-compare on matrix groups (docs/file-formats.md, "ddb-compare"), end to end at small
-// N: the Manakov body on SO(N) and Zeitlin's fluid on SU(N). Every method of the method
-// table for matrix groups runs; its final state in summary.json equals, bit for bit, the
+// ddb-compare on matrix groups (docs/reference/command-lines-and-files.md, "ddb-compare"), end to
+// end at small N: the Manakov body on SO(N) and Zeitlin's fluid on SU(N). Every method of the
+// method table for matrix groups runs; its final state in summary.json equals, bit for bit, the
 // library's makeMethod<SON/SUN> run directly here on the same problem; err_final and the
 // spectrum drift are recomputed here with Eigen's Hermitian eigensolver; bad inputs exit
 // 2 and write nothing.
@@ -169,8 +169,8 @@ TEST(DdbCompareMatrix, ManakovFromAFileMatchesTheLibrary) {
 }
 
 TEST(DdbCompareMatrix, ManakovDefaultsAreTheDocumentedOnes) {
-  // docs/file-formats.md: J_i = 1 + (i − 1)/(N − 1), M0 the real part of the seeded random
-  // vorticity scaled to ‖M0‖_F = √N, α = 0.5.
+  // docs/reference/command-lines-and-files.md: J_i = 1 + (i − 1)/(N − 1), M0 the real part of the
+  // seeded random vorticity scaled to ‖M0‖_F = √N, α = 0.5.
   const int n = 3;
   const fs::path out = freshFolder("manakov-defaults");
   ASSERT_EQ(

@@ -1,6 +1,6 @@
 // Two runs of each app with the same arguments write byte-identical files, apart from
-// the runtime fields that docs/file-formats.md lists ("Determinism"): those are masked
-// here, by name, and nothing else is.
+// the runtime fields that docs/reference/command-lines-and-files.md lists ("Determinism"): those
+// are masked here, by name, and nothing else is.
 #include <gmock/gmock.h>
 #include <locale.h>
 
@@ -36,7 +36,7 @@ void maskRuntimes(nlohmann::ordered_json& json) {
   }
 }
 
-/// `text` with the runtime fields of docs/file-formats.md replaced by "R": in
+/// `text` with the runtime fields of docs/reference/command-lines-and-files.md replaced by "R": in
 /// summary.json "runtime_s" and "timed_runs" and every value of "runtime_table"; the
 /// runtime column of runtime_table.md; the runtime_s column of error_vs_h.csv.
 std::string withoutRuntimes(const std::string& name, const std::string& text) {
@@ -59,7 +59,8 @@ void expectSameFilesApartFromRuntimes(const fs::path& first, const fs::path& sec
   ASSERT_EQ(fileNames(first), fileNames(second));
   for (const std::string& name : fileNames(first)) {
     const std::string a = readFile(first / name), b = readFile(second / name);
-    // fluid-relax's lock of its folder is empty by design (docs/file-formats.md, "Run folders").
+    // fluid-relax's lock of its folder is empty by design
+    // (docs/reference/command-lines-and-files.md, "Run folders").
     if (name == "run.lock") {
       EXPECT_EQ(a + b, "");
       continue;

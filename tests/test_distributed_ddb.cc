@@ -1,7 +1,7 @@
 // The DDB Cayley step on distributed matrices, Ddb<Cayley<DistributedSUN>> of the distributed
 // fluid (distributed/distributed_zeitlin_fluid.h, built by makeMethod), on 1–4 ranks against
-// the dense step, Ddb<Cayley<SUN>> (docs/distributed.md, "One step formula"): from the seeded
-// random vorticity, 100 steps of fluid-relax's default h at N = 16, 33, 64 with block sizes
+// the dense step, Ddb<Cayley<SUN>> (docs/design/distributed.md, "One step formula"): from the
+// seeded random vorticity, 100 steps of fluid-relax's default h at N = 16, 33, 64 with block sizes
 // that do not divide N, α = 0, 0.5, −0.5. The final W agrees to 1e-13 relative, the
 // products the Legendre solve takes (sweeps and frozen-solution refinements) agree step by
 // step up to a stopping test decided the other way at the tolerance's edge, and the

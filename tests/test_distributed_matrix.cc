@@ -1,4 +1,4 @@
-// The distributed matrix layer (docs/distributed.md) on 1–4 ranks: the process grid's
+// The distributed matrix layer (docs/design/distributed.md) on 1–4 ranks: the process grid's
 // shape, scatter and gather against the block-cyclic layout of ScaLAPACK's users' guide,
 // pzgemm_'s product and pzlange_'s Frobenius norm against Eigen's, the element-wise
 // operations against the dense backend's bits, and a record held by
@@ -28,7 +28,7 @@ namespace {
 using test::randomComplexMatrix;
 using test::relativeDistance;
 
-// The default: the most square grid with rows ≥ cols (docs/distributed.md, "Layouts").
+// The default: the most square grid with rows ≥ cols (docs/design/distributed.md, "Layouts").
 TEST(ProcessGrid, DefaultIsTheMostSquareFactorisationWithRowsAtLeastCols) {
   const ProcessGrid grid;
   const std::map<int, std::pair<int, int>> expected = {{1, {1, 1}}, {2, {2, 1}}, {3, {3, 1}},

@@ -1,4 +1,4 @@
-// The distributed Poisson solve (docs/distributed.md) on 1–4 ranks against the serial
+// The distributed Poisson solve (docs/design/distributed.md) on 1–4 ranks against the serial
 // HoppeYauLaplacian::solve, and the bytes each rank sends against counts derived by hand.
 #include <ddb/core/errors.h>
 #include <ddb/distributed/distributed_matrix.h>
@@ -21,7 +21,7 @@ namespace {
 using test::randomComplexMatrix;
 using test::relativeDistance;
 
-// A random skew-Hermitian matrix, the fluid's vorticity (docs/conventions.md §2).
+// A random skew-Hermitian matrix, the fluid's vorticity (docs/reference/conventions.md §2).
 Eigen::MatrixXcd randomVorticity(int n, unsigned seed) {
   const Eigen::MatrixXcd a = randomComplexMatrix(n, seed);
   return (a - a.adjoint()) / 2.0;
@@ -63,7 +63,7 @@ INSTANTIATE_TEST_SUITE_P(SizesAndBlocks, DistributedPoissonTest,
 // j mod cols = r mod cols; diagonal m goes to rank q(m) mod P with q = 0, 1, 2, 3, 4, 5, 6
 // for m = 0, 1, −1, 2, −2, 3, −3. Counting, rank by rank, the entries it holds whose
 // diagonal is owned elsewhere (sent there) plus the entries of its own diagonals that
-// another rank holds (sent back), at 16 bytes each (docs/distributed.md works 1×2 and 2×1):
+// another rank holds (sent back), at 16 bytes each (docs/design/distributed.md works 1×2 and 2×1):
 //   1×2: 2 + 4, 4 + 2;  2×1: 4 + 6, 6 + 4;
 //   1×3: 4 + 3, 2 + 3, 3 + 3;  3×1: 4 + 3, 3 + 4, 3 + 3;
 //   2×2: 1 + 3, 1 + 1, 1 + 1, 3 + 1.

@@ -1,5 +1,5 @@
-// energy_rises (docs/file-formats.md, "Energy rises"): with α > 0 a DDB run whose h is
-// too large lets the energy rise; both apps count such steps in summary.json and warn.
+// energy_rises (docs/reference/command-lines-and-files.md, "Energy rises"): with α > 0 a DDB run
+// whose h is too large lets the energy rise; both apps count such steps in summary.json and warn.
 // The count is checked against the energy column of the app's own CSV, read here and
 // counted with the documented definition, E_k − E_{k−1} > 8 ε max(|E_{k−1}|, |E_k|); a
 // resolved step size must give 0.

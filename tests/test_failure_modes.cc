@@ -1,5 +1,5 @@
 // Extreme but valid inputs end promptly in a typed error naming what went wrong
-// (docs/reliability.md): a loop out of its budget, a state or residual that overflowed,
+// (docs/reference/guarantees.md): a loop out of its budget, a state or residual that overflowed,
 // an exponential-map step past the injectivity limit π. Never an untyped exception, an
 // InvalidArgument from inside a step, or a run without bound.
 #include <ddb/core/errors.h>

@@ -1,4 +1,4 @@
-// fluid-relax's checkpoints, --resume and stop signals (docs/file-formats.md,
+// fluid-relax's checkpoints, --resume and stop signals (docs/reference/command-lines-and-files.md,
 // "Checkpoints"). The reference is the uninterrupted run: a run killed with SIGKILL at
 // whatever step it reached, or stopped by SIGINT/SIGTERM, and resumed, must end with
 // history.csv, W_final.csv, the ω files, summary.json (runtime_s aside) and the final

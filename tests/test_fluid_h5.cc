@@ -1,4 +1,4 @@
-// fluid-relax's HDF5 writer (apps/fluid_relax/fluid_h5.h, docs/file-formats.md
+// fluid-relax's HDF5 writer (apps/fluid_relax/fluid_h5.h, docs/reference/command-lines-and-files.md
 // "fluid.hdf5"): what append() writes is read back through the HDF5 C API (the frames'
 // values are made up here, each distinct); reopen(path, frames) keeps the first frames
 // and appends after them, and refuses files it cannot continue, naming them. The app's

@@ -1,7 +1,7 @@
-// fluid-relax end to end at N = 8 and 16 (docs/file-formats.md, "fluid-relax"): the files
-// against the contract (columns, rows, JSON keys, finite values), W_final.csv against the
-// library called directly, the spectrum kept to round-off, the energy monotone in the
-// direction of alpha's sign, the --init-file round trip, and every bad input (exit
+// fluid-relax end to end at N = 8 and 16 (docs/reference/command-lines-and-files.md,
+// "fluid-relax"): the files against the contract (columns, rows, JSON keys, finite values),
+// W_final.csv against the library called directly, the spectrum kept to round-off, the energy
+// monotone in the direction of alpha's sign, the --init-file round trip, and every bad input (exit
 // status 2, a message naming the flag, nothing written).
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
@@ -95,7 +95,8 @@ TEST(FluidRelax, WritesContractFilesMatchingTheLibrary) {
         EXPECT_LE(rows[i][4], 1e-12) << "spectrum drift, N = " << n;
         EXPECT_NEAR(rows[i][2], 0.5, 1e-12) << "enstrophy of ||W||_F = sqrt(N)";
         if (i > 0) {
-          // dE/dt = −α‖[P, W]‖²/(ħN) (docs/conventions.md §2): E falls for α > 0, rises for α < 0.
+          // dE/dt = −α‖[P, W]‖²/(ħN) (docs/reference/conventions.md §2): E falls for α > 0, rises
+          // for α < 0.
           EXPECT_LT(alpha * (rows[i][1] - rows[i - 1][1]), 0.0) << "N = " << n << " row " << i;
         }
       }
@@ -125,7 +126,7 @@ TEST(FluidRelax, WritesContractFilesMatchingTheLibrary) {
       EXPECT_GE(jsonNumber(summary, "iterations_max"), jsonNumber(summary, "iterations_mean"));
       EXPECT_GE(jsonNumber(summary, "iterations_mean"), 1.0);
 
-      // ω_lm of W_final: N² rows, and W_final rebuilt from them (docs/conventions.md §2).
+      // ω_lm of W_final: N² rows, and W_final rebuilt from them (docs/reference/conventions.md §2).
       const auto omega = readCsv(out / "omega_final.csv", &header);
       EXPECT_EQ(header, "l,m,omega");
       ASSERT_EQ(omega.size(), static_cast<size_t>(n * n));
@@ -257,9 +258,9 @@ TEST(FluidRelax, DefaultStepIsTwoHundredthsOfHbarOverTheStreamNorm) {
   EXPECT_EQ(readCsv(out / "history.csv", &header).size(), steps + 1);
 }
 
-// With a large α the default h is the stiffness bound h|α|‖W₀‖₂²/ħ = 4 (docs/design.md,
-// "Large N: the step's stability bound"), and the energy falls at every step; 2.5 times
-// that h (stiffness 10) is past the bound and the energy rises.
+// With a large α the default h is the stiffness bound h|α|‖W₀‖₂²/ħ = 4
+// (docs/design/architecture.md, "Large N: the step's stability bound"), and the energy falls at
+// every step; 2.5 times that h (stiffness 10) is past the bound and the energy rises.
 TEST(FluidRelax, DefaultStepKeepsTheDissipationWithinItsStabilityBound) {
   const fs::path out = freshFolder("default_h_stiff");
   ASSERT_EQ(run("--quiet --n 32 --alpha 50 --steps 100 --out " + out.string()).status, 0);
@@ -319,7 +320,7 @@ TEST(FluidRelax, InitFileRoundTripContinuesTheLongerRun) {
 TEST(FluidRelax, FailedSolveKeepsTheHistoryPrefixAndExitsOne) {
   // At h = 3 (h||P||_2/hbar about 15) the Legendre solve of step 1 does not converge. (At
   // h = 2.2 it failed too until ξ was evaluated on su(N) and projected onto it; now it
-  // converges: docs/design.md, "Systems on matrix groups".)
+  // converges: docs/design/architecture.md, "Systems on matrix groups".)
   const fs::path out = freshFolder("failure");
   const AppResult r = run("--quiet --n 8 --h 3 --steps 50 --out " + out.string());
   EXPECT_EQ(r.status, 1) << r.output;

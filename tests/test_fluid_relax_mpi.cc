@@ -1,4 +1,4 @@
-// fluid-relax-mpi end to end (docs/distributed.md, "fluid-relax-mpi") against fluid-relax,
+// fluid-relax-mpi end to end (docs/design/distributed.md, "fluid-relax-mpi") against fluid-relax,
 // the serial app: on 1, 2 and 4 ranks (oversubscribed; also on the grid shapes --grid-rows
 // asks for), N = 16 and 33 with block sizes that do not divide N, α = 0, 0.5 and −0.5, 100 steps:
 // W_final.csv equal to 1e-13 relative, history.csv row by row and summary.json key by key equal to
@@ -7,10 +7,10 @@
 // --until-steady stops at the same step; --adaptive takes the serial app's steps (the same h,
 // the same rejections) on 1, 2 and 4 ranks, to --steps and to --t-end; bad input is refused
 // by every rank with fluid-relax's message, once, exit status 2 and nothing written. Checkpoints
-// (docs/distributed.md, "Checkpoints"): a run stopped and resumed on the same ranks and block size
-// ends with every file byte for byte the uninterrupted run's (fluid.hdf5's datasets bit for bit);
-// either app resumes the other's checkpoint and agrees with the uninterrupted serial run to
-// rounding; --h5 writes fluid-relax's fluid.hdf5 to rounding; bad resumes are refused; a
+// (docs/design/distributed.md, "Checkpoints"): a run stopped and resumed on the same ranks and
+// block size ends with every file byte for byte the uninterrupted run's (fluid.hdf5's datasets bit
+// for bit); either app resumes the other's checkpoint and agrees with the uninterrupted serial run
+// to rounding; --h5 writes fluid-relax's fluid.hdf5 to rounding; bad resumes are refused; a
 // SIGTERM to one rank leaves a checkpoint and exit status 143, and the resumed run is the
 // uninterrupted one's to the bit.
 #include <ddb/integrators/methods/method_table.h>
@@ -563,7 +563,8 @@ TEST(FluidRelaxMpiCheckpoint, RefusesBadResumesOnEveryRankOnce) {
       EXPECT_EQ(folderBytes(folder), before) << arguments;
     }
   }
-  // --grid-rows may be given anew with --resume, as --block may (docs/file-formats.md).
+  // --grid-rows may be given anew with --resume, as --block may
+  // (docs/reference/command-lines-and-files.md).
   const AppResult regrid = runMpi(2, "--quiet --steps 12 --grid-rows 1 --resume " + done.string());
   EXPECT_EQ(regrid.status, 0) << regrid.output;
   for (const fs::path& folder : {done, corrupt, newton}) fs::remove_all(folder);
@@ -571,8 +572,8 @@ TEST(FluidRelaxMpiCheckpoint, RefusesBadResumesOnEveryRankOnce) {
 
 TEST(FluidRelaxMpiCheckpoint, AFolderAnotherProcessWritesIsRefusedOnEveryRank) {
   // A serial run that is going (a checkpoint every step) holds the folder's lock
-  // (docs/file-formats.md, "Run folders"): fluid-relax-mpi's rank 0 is refused, once, and
-  // every rank exits 2 without touching the folder.
+  // (docs/reference/command-lines-and-files.md, "Run folders"): fluid-relax-mpi's rank 0 is
+  // refused, once, and every rank exits 2 without touching the folder.
   const fs::path going = freshFolder("ddb_mpi_", "going");
   std::vector<std::string> words{
       FLUID_RELAX_PATH, "--quiet", "--n",   "24",          "--checkpoint-every", "1",

@@ -1,5 +1,6 @@
 // Generic group suite (one typed test list over every group): exp against Eigen's
-// matrix exponential, log∘exp = id, and the defining identities of docs/conventions.md §1.
+// matrix exponential, log∘exp = id, and the defining identities of docs/reference/conventions.md
+// §1.
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include "test_support.h"

@@ -1,6 +1,6 @@
 // The fixed-size groups on ceres::Jet as on double (Sophus's habit): every implicit solve
-// differentiates SO3 and SE3 through Jets, so the group identities of docs/conventions.md §1
-// are checked on both scalars, the Jet's derivative parts included (an identity between
+// differentiates SO3 and SE3 through Jets, so the group identities of docs/reference/conventions.md
+// §1 are checked on both scalars, the Jet's derivative parts included (an identity between
 // functions holds for their derivatives too). Then the derivatives the solves use, taken by
 // Jets, against central differences of the double formulas, at points on both sides of the
 // small-angle branches (θ² = 1e-6 in dexp^{-1}).
@@ -184,8 +184,8 @@ void checkSolveDerivatives() {
 
 // A known defect, kept visible: SO3::dexp switches to its Taylor series only below
 // θ² = 1e-8, and just above it (θ − sin θ)/θ³ cancels; the values stay good to round-off
-// (the factor multiplies θ²), their Jet derivatives do not (docs/design.md, "Jets"). The
-// closed form and its branch decide every exp trajectory on SE(3) bit for bit, so the
+// (the factor multiplies θ²), their Jet derivatives do not (docs/design/architecture.md, "Jets").
+// The closed form and its branch decide every exp trajectory on SE(3) bit for bit, so the
 // threshold moves with a release that may change trajectories; only Newton Jacobians
 // (sddb-exp on SE(3)) see the error, not results. Against the generic series on Jets
 // (accurate there), where the loss is large enough not to depend on libm's rounding:

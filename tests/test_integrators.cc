@@ -1,5 +1,5 @@
-// Integrators on the rigid body of Scenario A (docs/conventions.md §3): orders fitted against
-// the reference solver, exact Casimir preservation of DDB, agreement of its two
+// Integrators on the rigid body of Scenario A (docs/reference/conventions.md §3): orders fitted
+// against the reference solver, exact Casimir preservation of DDB, agreement of its two
 // forms, the reference against itself, and a failed solve keeping the prefix.
 #include <ddb/integrators/drivers/run.h>
 #include <ddb/integrators/methods/method_table.h>
@@ -67,7 +67,7 @@ TEST_P(OrderTest, FittedSlopeMatchesTheoreticalOrder) {
 
 const std::vector<double> kDdbSteps{0.1, 0.05, 0.025, 0.0125, 0.00625};
 // ddb-cay-implicit's first-order term is small beside its second-order one down to h = 0.0125:
-// its slope is fitted below that (docs/conventions.md §2, "Measured orders").
+// its slope is fitted below that (docs/reference/conventions.md §2, "Measured orders").
 const std::vector<double> kSmallDdbSteps{0.0125, 0.00625, 0.003125, 0.0015625, 0.00078125};
 const std::vector<double> kRkSteps{0.2, 0.1, 0.05, 0.025, 0.0125};
 const std::vector<double> kSixthOrderSteps{0.5, 0.4, 0.25, 0.2, 0.125};  // divide t_end
@@ -183,7 +183,7 @@ TEST(Reference, OneLongStepAgreesWithManyShortOnes) {
 
 // Energy ascent (α < 0) from near the minimum-energy rotation about e2: |Ω| grows from
 // 0.4 towards |M|/𝕀₃ = 1, so at h = 4 an exp step passes the injectivity limit h|ξ| = π
-// (docs/reliability.md §2) after some good steps. Cayley DDB takes every h, so it is not
+// (docs/reference/guarantees.md §2) after some good steps. Cayley DDB takes every h, so it is not
 // the probe here.
 const Eigen::Vector3d kNearMinimum(0.05, 0.5, 0.05);
 constexpr double kAscent = -0.5;
@@ -345,7 +345,7 @@ TEST(RunMethod, FailureIsRecordedWithItsStepAndThePrefixReachesTheSink) {
 }
 
 TEST(RunMethod, ExpStepPastItsLimitIsAFailureNotAnException) {
-  // h = 2 on the heavy top: the exp method's |hξ| reaches π (docs/reliability.md §2).
+  // h = 2 on the heavy top: the exp method's |hξ| reaches π (docs/reference/guarantees.md §2).
   const HeavyTopSetup top;
   auto system = top.system();
   auto method = ddb::makeMethod<SE3>("ddb-exp-exact", system);

@@ -62,7 +62,7 @@ void expectFaultsHandled(const AppCase& app, const std::string& prefix,
         expected.insert(name);
       }
       // The fluid apps' lock (run.lock) stays, empty; a journal that failed (history.csv's
-      // .partial) stays as far as it was written, for a resume (docs/reliability.md).
+      // .partial) stays as far as it was written, for a resume (docs/reference/guarantees.md).
       std::set<std::string> found;
       for (const auto& entry : fs::directory_iterator(out)) {
         const std::string name = entry.path().filename().string();

@@ -1,7 +1,8 @@
-// The small Legendre solver's two paths (integrators/solvers/legendre.h, docs/conventions.md §4):
-// fixed-point sweeps to the tolerance while they contract fast, TinySolver's Newton when they
-// do not. Each path is checked against the paper's closed form of (dcay⁻¹_x)* on SO(3),
-// written out here, and the two against each other on the states of real trajectories.
+// The small Legendre solver's two paths (integrators/solvers/legendre.h,
+// docs/reference/conventions.md §4): fixed-point sweeps to the tolerance while they contract fast,
+// TinySolver's Newton when they do not. Each path is checked against the paper's closed form of
+// (dcay⁻¹_x)* on SO(3), written out here, and the two against each other on the states of real
+// trajectories.
 #include <ddb/core/legendre_hamiltonian.h>
 #include <ddb/integrators/methods/ddb.h>
 #include <ddb/systems/paper_scenarios.h>
@@ -81,7 +82,7 @@ double compareThePaths(double alpha, double h, long steps) {
 }
 
 TEST(LegendreSolver, FastSweepsReachTheToleranceWithoutNewtonOnScenarioA) {
-  // Rate 0.02–0.03 at h = 0.1 (docs/design.md): the sweeps converge on their own.
+  // Rate 0.02–0.03 at h = 0.1 (docs/design/architecture.md): the sweeps converge on their own.
   EXPECT_GE(compareThePaths(0.5, 0.1, 300), 0.99);
   EXPECT_GE(compareThePaths(0.0, 0.1, 300), 0.99);
 }

@@ -1,4 +1,4 @@
-// LinearlyImplicitDdb (integrators/methods/linearly_implicit_ddb.h, docs/steady-states.md, "A
+// LinearlyImplicitDdb (integrators/methods/linearly_implicit_ddb.h, docs/guide/steady-states.md, "A
 // dissipative factor that lowers the energy at any h"): the DDB step whose dissipative
 // factor is one line-searched Newton step of the minimizing movement. Independent of the
 // code: the energy from the closed forms (E = Re tr(WP)/(2N) with P = Δ⁻¹W by the fluid's

@@ -1,6 +1,6 @@
-// The exponential retraction on SO(N) and SU(N) (docs/conventions.md §1, "Matrix algebras"),
-// each piece against something it did not use: the closed forms in x's eigenbasis against
-// LieGroupBase's Bernoulli series summed to round-off and Eigen's MatrixFunctions
+// The exponential retraction on SO(N) and SU(N) (docs/reference/conventions.md §1, "Matrix
+// algebras"), each piece against something it did not use: the closed forms in x's eigenbasis
+// against LieGroupBase's Bernoulli series summed to round-off and Eigen's MatrixFunctions
 // exponential; the in-place conjugations against Uᴴ μ U with U formed by Eigen; the DDB
 // methods on the Manakov body at N = 3 against the rigid body on SO(3), whose closed forms
 // are Rodrigues' (groups/so3.h); the injectivity limit.
@@ -110,8 +110,8 @@ TYPED_TEST(MatrixExponential, InPlaceConjugationsAreTheFormedOnes) {
 }
 
 // The Manakov body at N = 3 is the rigid body with 𝕀 = (J₂+J₃, J₁+J₃, J₁+J₂)
-// (docs/conventions.md §2): every DDB-family method on SO(N), through the eigenbasis, and on
-// SO(3), through Rodrigues' formulas and the small-group solver, agree over 300 steps to
+// (docs/reference/conventions.md §2): every DDB-family method on SO(N), through the eigenbasis, and
+// on SO(3), through Rodrigues' formulas and the small-group solver, agree over 300 steps to
 // what the solvers' tolerance allows.
 TEST(ManakovBody, AtN3EveryDdbMethodReproducesTheRigidBody) {
   const Eigen::Vector3d J(0.2, 0.45, 0.7);
@@ -142,8 +142,8 @@ TEST(ManakovBody, AtN3EveryDdbMethodReproducesTheRigidBody) {
   }
 }
 
-// Each step on the fluid solves its defining equations (docs/conventions.md §2), checked with
-// the series (dexp⁻¹)* summed to round-off, Eigen's exp and Eigen's inverse:
+// Each step on the fluid solves its defining equations (docs/reference/conventions.md §2), checked
+// with the series (dexp⁻¹)* summed to round-off, Eigen's exp and Eigen's inverse:
 //   DDB:  M_k = (dτ⁻¹_{hξ})* p,  M_{k+1} = Ad*_{τ(hξ) τ(hφ)} M_k;
 //   symmetric DDB:  (dτ⁻¹_{hξ})* p = Ad*_{τ(hφ/2)} M_k,  M_{k+1} = Ad*_{τ(hφ/2) τ(hξ) τ(hφ/2)} M_k,
 // with ξ = ∂H/∂μ(p) and φ = α[p, ξ] (K = α·Id).

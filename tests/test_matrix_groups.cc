@@ -1,5 +1,5 @@
 // SO(N) and SU(N) against the SO3 group through explicit isomorphisms, and the SO(N)
-// generalised rigid body against the SO3 rigid body (docs/conventions.md §2).
+// generalised rigid body against the SO3 rigid body (docs/reference/conventions.md §2).
 #include <ddb/integrators/methods/ddb.h>
 #include <ddb/systems/manakov_body.h>
 #include <ddb/systems/rigid_body.h>

@@ -1,5 +1,5 @@
-// Fitted orders of every method of the table on the matrix groups (docs/conventions.md §2):
-// the Manakov body on SO(4) and the fluid on SU(8), α = 0.5 and α = 0, each final state at
+// Fitted orders of every method of the table on the matrix groups (docs/reference/conventions.md
+// §2): the Manakov body on SO(4) and the fluid on SU(8), α = 0.5 and α = 0, each final state at
 // t = 1 against the adaptive reference; least-squares log–log slope over five to eight step sizes,
 // the round-off plateau dropped (order_fit.h). The expected order is the table's own row:
 // `order` with dissipation, `order_without_dissipation` without.

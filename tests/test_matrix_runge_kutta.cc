@@ -1,6 +1,6 @@
 // Lobatto IIIC on the matrix groups, its stage equations solved matrix-free
-// (integrators/methods/matrix_free_runge_kutta.h, docs/conventions.md §2 and §4): fitted order 4
-// against the adaptive reference on the Manakov body and on Zeitlin's fluid, the fixed-size
+// (integrators/methods/matrix_free_runge_kutta.h, docs/reference/conventions.md §2 and §4): fitted
+// order 4 against the adaptive reference on the Manakov body and on Zeitlin's fluid, the fixed-size
 // Lobatto IIIC through so(3) ≅ R³, Newton–Krylov's Jacobian against central differences, and
 // a failed solve reported like the others.
 #include <ddb/integrators/methods/method_table.h>
@@ -68,8 +68,8 @@ TEST(Lobatto3cOnMatrixGroups, FittedOrderFourOnTheFluidN8) {
 }
 
 // At N = 3 the Manakov body is the rigid body with 𝕀 = (J₂+J₃, J₁+J₃, J₁+J₂) under
-// so(3) ≅ R³ (docs/conventions.md §2): the same vector field, so the fixed-size Lobatto IIIC
-// (TinySolver on 9 unknowns) and the matrix-free one give the same steps.
+// so(3) ≅ R³ (docs/reference/conventions.md §2): the same vector field, so the fixed-size Lobatto
+// IIIC (TinySolver on 9 unknowns) and the matrix-free one give the same steps.
 TEST(Lobatto3cOnMatrixGroups, AtN3ReproducesTheFixedSizeLobattoOnTheRigidBody) {
   const Eigen::Vector3d J(0.2, 0.45, 0.7);
   const Eigen::Vector3d inertia(J(1) + J(2), J(0) + J(2), J(0) + J(1));

@@ -109,7 +109,7 @@ TEST(MethodTable, RowsMatchWhatTheMethodsDoOnSON) {
   const Eigen::Matrix4d a = sampler.vector<Eigen::Matrix4d>();
   const Eigen::MatrixXd M0 = a - a.transpose();
   // h = 0.3: at 0.2 Lobatto IIIC is accurate enough that its drift falls between the two
-  // bounds (docs/design.md, "Lobatto IIIC on matrix groups").
+  // bounds (docs/design/architecture.md, "Lobatto IIIC on matrix groups").
   checkRows<SON>(makeManakovBody(J, 0.5), M0, 0.3);
 }
 

@@ -1,4 +1,4 @@
-// A matrix backend without element access (docs/matrix-backend.md): OpaqueMatrix keeps its
+// A matrix backend without element access (docs/design/matrix-backend.md): OpaqueMatrix keeps its
 // entries private and MatrixBackend<OpaqueMatrix> implements the contract by the dense
 // backend's functions on them, so a formula that reached past the backend to an entry would
 // not compile. On SU(N) with these matrices (SUNOn<OpaqueMatrix>) the library's own classes

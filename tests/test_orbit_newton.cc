@@ -1,4 +1,4 @@
-// The Newton search on the orbit (OrbitNewton through Relaxation; docs/steady-states.md,
+// The Newton search on the orbit (OrbitNewton through Relaxation; docs/guide/steady-states.md,
 // "Newton on the orbit"), against closed forms: the rigid body's steady states of least and
 // largest energy on the sphere |M| = |M₀| are ±|M₀| along the axes of largest and smallest
 // inertia; the fluid's and the Manakov body's residuals recomputed from their matrices, their

@@ -1,4 +1,4 @@
-// The paper's Section 5 claims on its own scenarios (docs/conventions.md §3), at h = 0.1:
+// The paper's Section 5 claims on its own scenarios (docs/reference/conventions.md §3), at h = 0.1:
 // A: DDB keeps the Casimir to round-off while RK4 and Lobatto IIIC drift;
 // B: DDB ends closer to the limit point and to the reference than RK4;
 // C: DDB ends on the sphere |M| = |M0| to round-off and converges to the great circle.

@@ -1,4 +1,4 @@
-// --plot without a shell (docs/bad-inputs.md): the plotter's failure messages name what
+// --plot without a shell (docs/reference/bad-inputs.md): the plotter's failure messages name what
 // failed (a missing interpreter, the script's own error), and an output folder whose name
 // a shell would read as commands reaches the script as one argument in both apps.
 #include <gmock/gmock.h>

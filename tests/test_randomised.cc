@@ -1,4 +1,4 @@
-// Randomised checks (docs/reliability.md §3): seeded random valid parameter sets per
+// Randomised checks (docs/reference/guarantees.md §3): seeded random valid parameter sets per
 // system — inertia over four decades, α of both signs over five decades, h over three,
 // random momenta and a random DDB method. Every run either keeps the Casimirs to 1e-13
 // relative with finite states, or stops with a typed ddb error (SolveFailure and its
@@ -59,7 +59,7 @@ class Draw {
 };
 
 /// At least this share of the runs must complete: every system completes 64% to 83% of its
-/// sets (docs/reliability.md §3), so a regression to "every run throws a SolveFailure",
+/// sets (docs/reference/guarantees.md §3), so a regression to "every run throws a SolveFailure",
 /// which each run alone would accept, fails the suite.
 constexpr double kMinimumCompletedShare = 0.5;
 

@@ -1,5 +1,5 @@
-// relax() and its step control (integrators/drivers/relax.h, docs/steady-states.md): the reason a
-// run stops, the energy and Casimirs of every accepted state, the steady state reached.
+// relax() and its step control (integrators/drivers/relax.h, docs/guide/steady-states.md): the
+// reason a run stops, the energy and Casimirs of every accepted state, the steady state reached.
 // Independent of the code: the residual from the closed forms (Ω = 𝕀⁻¹M on the rigid body,
 // P = Δ⁻¹W on the fluid), |M|² and the spectrum by Eigen's eigensolver (G::casimirs) as
 // the Casimirs, the limit point ±|M₀| e₂ of Scenario B in closed form.
@@ -102,7 +102,7 @@ TEST(Relax, ScenarioBReachesTheLimitPointInClosedForm) {
   std::cout << "|M - M*| = " << (M - limit).norm() << " <= " << bound << "\n";
   EXPECT_LE((M - limit).norm(), bound);
   EXPECT_LE((M - limit).norm(), 1e-10);
-  // Against h = 0.1 fixed, which needs 2500 steps for 2.1e-10 (docs/steady-states.md).
+  // Against h = 0.1 fixed, which needs 2500 steps for 2.1e-10 (docs/guide/steady-states.md).
   EXPECT_LT(run.last.k + run.steps_rejected, 250);
 }
 
@@ -119,7 +119,7 @@ TEST(Relax, ScenarioCReachesTheGreatCircle) {
 
 TEST(Relax, FluidStopsSteadyWithEveryAcceptedStepDissipatingOnTheOrbit) {
   // ddb-exp-exact: ddb-cay's fixed points at a given h are not steady (at N = 4 and h = 0.1
-  // it stalls at r = 6e-5; docs/steady-states.md), so it would reach 1e-9 only at small h.
+  // it stalls at r = 6e-5; docs/guide/steady-states.md), so it would reach 1e-9 only at small h.
   constexpr Eigen::Index kN = 4;
   for (const double alpha : {0.5, 50.0}) {
     SCOPED_TRACE("alpha = " + std::to_string(alpha));

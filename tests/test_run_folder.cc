@@ -1,8 +1,8 @@
-// A fluid-relax run folder keeps what a user made (docs/reliability.md, "Nothing finished is
-// lost"; docs/file-formats.md, "Run folders"): one writer at a time (run.lock), a new run
-// that would mix with another run's files refused unless --overwrite, every check of a
-// --resume (checkpoint, history.csv, fluid.hdf5, their agreement) made before anything is
-// touched, special files refused by kind, a checkpoint's sizes checked against its length,
+// A fluid-relax run folder keeps what a user made (docs/reference/guarantees.md, "Nothing finished
+// is lost"; docs/reference/command-lines-and-files.md, "Run folders"): one writer at a time
+// (run.lock), a new run that would mix with another run's files refused unless --overwrite, every
+// check of a --resume (checkpoint, history.csv, fluid.hdf5, their agreement) made before anything
+// is touched, special files refused by kind, a checkpoint's sizes checked against its length,
 // and a run stopped by a full disk resumable once there is space. Each refusal is checked
 // with the folder's bytes before and after, and each repaired folder by resuming it to the
 // bytes of the uninterrupted run.

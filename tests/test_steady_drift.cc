@@ -1,9 +1,9 @@
-// No drift at steady state on matrix groups (docs/long-run.md, "Matrix groups"): once a
-// dissipative flow is steady, the dissipative factor cay(2b) is nearly the same at every
+// No drift at steady state on matrix groups (docs/results/casimir-drift.md, "Matrix groups"): once
+// a dissipative flow is steady, the dissipative factor cay(2b) is nearly the same at every
 // step, and conjugating by the formed matrix put the same rounding into every step, so the
 // spectrum drifted linearly (1.3e-12 after 2·10⁴ steps of SO(6), 2.0e-12 on the fluid at
-// N = 16). Applied as the increment M − 2[b, q] (docs/conventions.md §2) the drift stays at
-// random-walk size, about √K·ε; these bounds sit well above that and well below the linear
+// N = 16). Applied as the increment M − 2[b, q] (docs/reference/conventions.md §2) the drift stays
+// at random-walk size, about √K·ε; these bounds sit well above that and well below the linear
 // drift. Independent of the code: the spectrum by Eigen's eigensolver (G::casimirs).
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/manakov_body.h>
@@ -51,7 +51,7 @@ TEST(SteadyDrift, ManakovBodySO6StaysAtRandomWalkSize) {
 
 // Larger steps make the conservative factor's product bq larger: applied in two passes,
 // μ − 2bq then + 2(bq)ᴴ, its full-size rounding came back as a linear drift
-// (docs/long-run.md, "A regression, and its test"); the implicit factor's steps too.
+// (docs/results/casimir-drift.md, "A regression, and its test"); the implicit factor's steps too.
 TEST(SteadyDrift, ZeitlinFluidN16LargeStepsStayAtRandomWalkSize) {
   for (const char* name : {"ddb-cay", "ddb-cay-implicit"}) {
     const double drift =

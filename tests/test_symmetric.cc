@@ -1,6 +1,6 @@
 // Symmetric DDB variants and their compositions on the rigid body of Scenario A:
-// orders fitted against the reference (docs/conventions.md §2 facts), symmetry Φ_{-h}∘Φ_h = id,
-// and exact Casimir preservation by every stage.
+// orders fitted against the reference (docs/reference/conventions.md §2 facts), symmetry Φ_{-h}∘Φ_h
+// = id, and exact Casimir preservation by every stage.
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>

@@ -1,6 +1,6 @@
 // Systems a user writes on the matrix groups by subclassing Hamiltonian<G> (README,
-// "Defining a system"; docs/conventions.md §2, "Systems on matrix groups"): the system hands
-// the Hamiltonian an element of the algebra and projects the ξ it returns, so how a user
+// "Defining a system"; docs/reference/conventions.md §2, "Systems on matrix groups"): the system
+// hands the Hamiltonian an element of the algebra and projects the ξ it returns, so how a user
 // writes H off the algebra does not change a trajectory, and the default hessianTimes
 // serves Newton–Krylov.
 #include <ddb/integrators/methods/ddb.h>

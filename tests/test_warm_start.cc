@@ -1,6 +1,6 @@
 // Warm starts and resumed relaxations (OneStepMethod::saveWarmStart, Relaxation::save,
-// core/binary_record.h; docs/file-formats.md, "Checkpoints"). The reference is the
-// uninterrupted run itself: a method (or a relaxation) stopped after K steps, saved, and
+// core/binary_record.h; docs/reference/command-lines-and-files.md, "Checkpoints"). The reference is
+// the uninterrupted run itself: a method (or a relaxation) stopped after K steps, saved, and
 // loaded into a fresh instance must take the remaining steps to the bit; a fresh instance
 // that is not loaded must not (so the check can fail: the warm start changes the rounding
 // of a Legendre solve). A corrupted or truncated record is refused.

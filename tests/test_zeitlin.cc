@@ -1,4 +1,4 @@
-// Zeitlin's SU(N) fluid (docs/conventions.md §2), each property against something the
+// Zeitlin's SU(N) fluid (docs/reference/conventions.md §2), each property against something the
 // library did not use to compute it: Eigen's eigensolver on the dense Laplacian, the
 // defining orthonormality of T_lm, central differences along the flow, the isospectral
 // midpoint rule written here from its own formula, the adaptive reference solver.
@@ -79,7 +79,7 @@ TEST(HoppeYauLaplacian, PoissonSolveInvertsTheLaplacianOnSuN) {
   }
 }
 
-// One diagonal at a time (the distributed solve's path, docs/distributed.md): the diagonals
+// One diagonal at a time (the distributed solve's path, docs/design/distributed.md): the diagonals
 // solved separately and put back together are inverted by apply, as solve's are.
 TEST(HoppeYauLaplacian, SolvingEachDiagonalAloneInvertsTheLaplacian) {
   for (int n : {2, 3, 8, 33}) {
@@ -130,7 +130,7 @@ TEST(SphericalHarmonicBasis, OrthonormalEigenmatricesWithT10EqualRoot3X3) {
 }
 
 // The transform against one built on Eigen's QR eigenvectors of each diagonal block (the
-// eigensolver the basis used before its twisted factorisations; docs/conventions.md §2's
+// eigensolver the basis used before its twisted factorisations; docs/reference/conventions.md §2's
 // conventions, written out here), and the round trip at sizes where the blocks' eigenvalues
 // spread over four orders of magnitude.
 TEST(SphericalHarmonicBasis, CoefficientsMatchEigensEigenvectorsOfEachBlock) {
@@ -217,7 +217,7 @@ TEST(ZeitlinFluid, DdbKeepsTheSpectrumAndMovesTheEnergyOneWay) {
     auto method = makeMethod<SUN>("ddb-cay", fluid);
     // h = 0.02 ħ/‖P₀‖₂ (the benchmark's step). With α < 0 the energy grows 50-fold and
     // ‖[P, W]‖ 18-fold from this state; at 0.1 ħ/‖P₀‖₂ the step then no longer resolves
-    // the flow and the energy reverses by up to 7.5% (docs/design.md, "Measured").
+    // the flow and the energy reverses by up to 7.5% (docs/design/architecture.md, "Measured").
     const double h = stepSize(W0, 0.02);
     double drift = 0.0, previous = diagnostics.energy(W0);
     int wrong_way = 0;
@@ -239,8 +239,8 @@ TEST(ZeitlinFluid, DdbKeepsTheSpectrumAndMovesTheEnergyOneWay) {
 // DDB Cayley within the stability bound of its dissipative factor, which is explicit in
 // the state: the stiffness s = h|α|‖W‖₂²/ħ (‖W‖₂ a Casimir) must stay below about 6. At
 // s = 4 the energy falls at every step, at s = 10 a period-2 mode of the large scales
-// grows and the energy rises (docs/design.md, "Large N: the step's stability bound"; the
-// benchmark's h = 0.02 ħ/‖P₀‖₂ reaches s = 8.5 at N = 512).
+// grows and the energy rises (docs/design/architecture.md, "Large N: the step's stability bound";
+// the benchmark's h = 0.02 ħ/‖P₀‖₂ reaches s = 8.5 at N = 512).
 TEST(ZeitlinFluid, DdbCayleysEnergyFallsWithinTheDissipationsStabilityBound) {
   const double alpha = 0.5;
   for (int n : {32, 64}) {
@@ -367,7 +367,7 @@ TEST(MatrixLegendreSolver, FixedPointNewtonKrylovAndCeresAgree) {
 }
 
 TEST(MatrixLegendreSolver, NewtonKrylovTakesOverWhereTheFixedPointStalls) {
-  // h‖P‖₂/ħ ≈ 1.5: the fixed point contracts too slowly (docs/conventions.md §2).
+  // h‖P‖₂/ħ ≈ 1.5: the fixed point contracts too slowly (docs/reference/conventions.md §2).
   const int n = 12;
   const auto fluid = makeZeitlinFluid(n, 0.5);
   const Matrix W = randomVorticity(n, 8);
@@ -481,7 +481,7 @@ TEST(MatrixCayleyTransport, TheCertifiedOneProductUpdateIsTheCayleyConjugation) 
   }
 }
 
-// Orders against the adaptive reference, N = 8, t in [0, 1] (docs/conventions.md §2).
+// Orders against the adaptive reference, N = 8, t in [0, 1] (docs/reference/conventions.md §2).
 struct FluidOrderCase {
   const char* method;
   double alpha;

@@ -46,7 +46,7 @@ void writeFileAtomically(const std::filesystem::path& target, std::string_view c
 
 /// Creates the output folder `folder` (given as `text` to `flag`) if missing and checks
 /// that it is writable, or throws UsageError: apps call it after every other check, so
-/// that bad input creates nothing (docs/file-formats.md).
+/// that bad input creates nothing (docs/reference/command-lines-and-files.md).
 void prepareOutputFolder(const std::string& flag, const std::string& text,
                          const std::filesystem::path& folder);
 

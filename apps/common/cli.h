@@ -1,7 +1,7 @@
 // Command-line helpers shared by the apps: parsing numbers and vectors with messages
 // that name the flag and its value, choices that list the valid names, flags that do
 // not apply, --version, and CLI11's own errors turned into usage errors (exit 2;
-// docs/file-formats.md).
+// docs/reference/command-lines-and-files.md).
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -1,6 +1,6 @@
-// One row of numbers of the apps' CSV files (docs/file-formats.md): comma-separated, 17
-// significant digits (format.h), formatted into a buffer allocated once for the file, so
-// that writing a row allocates nothing however long the run.
+// One row of numbers of the apps' CSV files (docs/reference/command-lines-and-files.md):
+// comma-separated, 17 significant digits (format.h), formatted into a buffer allocated once for the
+// file, so that writing a row allocates nothing however long the run.
 #pragma once
 
 #include <cstddef>

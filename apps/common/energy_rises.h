@@ -1,5 +1,5 @@
-// Energy rises of a dissipative run (docs/file-formats.md, "Energy rises"). With α > 0
-// the flow lowers the energy (dH/dt = −k(ad*_ξ μ, ad*_ξ μ) ≤ 0) and a DDB step does too
+// Energy rises of a dissipative run (docs/reference/command-lines-and-files.md, "Energy rises").
+// With α > 0 the flow lowers the energy (dH/dt = −k(ad*_ξ μ, ad*_ξ μ) ≤ 0) and a DDB step does too
 // when h resolves the flow; a rise beyond round-off is a sign that h is too large, which
 // the apps count and report instead of passing over in silence.
 #pragma once

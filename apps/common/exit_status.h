@@ -1,5 +1,5 @@
-// The exit statuses every app uses (docs/file-formats.md) and the one place that maps
-// exceptions to them, so that no error reaches std::terminate:
+// The exit statuses every app uses (docs/reference/command-lines-and-files.md) and the one place
+// that maps exceptions to them, so that no error reaches std::terminate:
 //   0  success;
 //   1  a run failed, or an I/O error (the message names the file); files of the runs
 //      that succeeded are written, a file that could not be completed is not;

@@ -1,7 +1,7 @@
-// Numbers as the apps print them: 17 significant digits (docs/file-formats.md), and
-// non-finite values as nan, inf, -inf in messages and CSV cells (JSON writes null
-// instead: see json.h). Formatting goes through std::to_chars, which ignores the locale:
-// a comma-decimal LC_NUMERIC never reaches a file.
+// Numbers as the apps print them: 17 significant digits
+// (docs/reference/command-lines-and-files.md), and non-finite values as nan, inf, -inf in messages
+// and CSV cells (JSON writes null instead: see json.h). Formatting goes through std::to_chars,
+// which ignores the locale: a comma-decimal LC_NUMERIC never reaches a file.
 #pragma once
 
 #include <charconv>

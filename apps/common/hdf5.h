@@ -1,7 +1,8 @@
-// The HDF5 C API (Debian's libhdf5, 1.10) for the apps' HDF5 files (docs/file-formats.md,
-// "fluid.hdf5"): an owning handle per identifier, and failures as IoError naming the file
-// with HDF5's own reason. HDF5's automatic printing of its error stack to stderr is off
-// (quiet()), so that a failure is reported once, through the app's message.
+// The HDF5 C API (Debian's libhdf5, 1.10) for the apps' HDF5 files
+// (docs/reference/command-lines-and-files.md, "fluid.hdf5"): an owning handle per identifier, and
+// failures as IoError naming the file with HDF5's own reason. HDF5's automatic printing of its
+// error stack to stderr is off (quiet()), so that a failure is reported once, through the app's
+// message.
 #pragma once
 
 #include <hdf5.h>

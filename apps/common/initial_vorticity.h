@@ -1,7 +1,8 @@
-// The initial vorticity of Zeitlin's fluid as both apps take it (docs/file-formats.md,
-// fluid-relax and ddb-compare --system zeitlin): --init random|l1|zonal with --seed at
-// resolution --n, or --init-file, a CSV of N rows × 2N columns (row j: Re W[j, :] then
-// Im W[j, :]). Bad input is a UsageError naming the flag (docs/bad-inputs.md).
+// The initial vorticity of Zeitlin's fluid as both apps take it
+// (docs/reference/command-lines-and-files.md, fluid-relax and ddb-compare --system zeitlin): --init
+// random|l1|zonal with --seed at resolution --n, or --init-file, a CSV of N rows × 2N columns (row
+// j: Re W[j, :] then Im W[j, :]). Bad input is a UsageError naming the flag
+// (docs/reference/bad-inputs.md).
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -1,12 +1,12 @@
 // A file that grows while a long run goes and outlives the run's death, for the files a
-// resumed run continues (history.csv; docs/file-formats.md, "Checkpoints"). It is written
-// under the fixed name `<target>.partial`, so that a run resumed from a checkpoint finds
+// resumed run continues (history.csv; docs/reference/command-lines-and-files.md, "Checkpoints"). It
+// is written under the fixed name `<target>.partial`, so that a run resumed from a checkpoint finds
 // it, and renamed onto the target by commit(), so that a file under its final name is
 // complete. sync() makes what was written durable and returns its length, which the
 // checkpoint records with the FNV-1a hash of those bytes (digest()); the resumed run checks
 // both before it opens the file again cut back to that length. No failure removes the file:
 // a checkpoint may refer to it, and a run that failed (a full disk, say) must resume once
-// the cause is gone (docs/reliability.md, "Nothing finished is lost").
+// the cause is gone (docs/reference/guarantees.md, "Nothing finished is lost").
 #pragma once
 
 #include <ddb/core/binary_record.h>

@@ -1,6 +1,6 @@
-// summary.json (docs/file-formats.md) through nlohmann-json: ordered_json keeps the keys in
-// the order the apps add them, and a non-finite double is dumped as null (JSON has no
-// NaN or infinity; a failed method's err_final, for instance).
+// summary.json (docs/reference/command-lines-and-files.md) through nlohmann-json: ordered_json
+// keeps the keys in the order the apps add them, and a non-finite double is dumped as null (JSON
+// has no NaN or infinity; a failed method's err_final, for instance).
 #pragma once
 
 #include <Eigen/Core>

@@ -1,7 +1,7 @@
 // A CSV file of numbers given on the command line (--init-file, --mu0-file;
-// docs/file-formats.md): rows of comma-separated finite numbers, blank lines skipped,
-// cells trimmed, CRLF accepted. Any fault is bad input naming the flag and the path
-// (docs/bad-inputs.md).
+// docs/reference/command-lines-and-files.md): rows of comma-separated finite numbers, blank lines
+// skipped, cells trimmed, CRLF accepted. Any fault is bad input naming the flag and the path
+// (docs/reference/bad-inputs.md).
 #pragma once
 
 #include <cstddef>

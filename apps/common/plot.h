@@ -1,7 +1,7 @@
 // Figures: the apps render PNGs by running a matplotlib script of scripts/ on their
-// output folder (docs/file-formats.md, --plot), with the interpreter CMake found. The
-// script runs from an argument vector, never through a shell, so that no output folder
-// name is ever read as a command (docs/bad-inputs.md).
+// output folder (docs/reference/command-lines-and-files.md, --plot), with the interpreter CMake
+// found. The script runs from an argument vector, never through a shell, so that no output folder
+// name is ever read as a command (docs/reference/bad-inputs.md).
 #pragma once
 
 #include <filesystem>

@@ -1,6 +1,7 @@
-// The flags of relax() that the apps share (docs/file-formats.md, docs/steady-states.md):
-// --until-steady TOL, --adaptive and --adaptive-tol E, read into RelaxOptions with the
-// checks of docs/bad-inputs.md. What --adaptive applies to and the caps are the app's.
+// The flags of relax() that the apps share (docs/reference/command-lines-and-files.md,
+// docs/guide/steady-states.md): --until-steady TOL, --adaptive and --adaptive-tol E, read into
+// RelaxOptions with the checks of docs/reference/bad-inputs.md. What --adaptive applies to and the
+// caps are the app's.
 #pragma once
 
 #include <ddb/integrators/drivers/relax.h>

@@ -1,6 +1,6 @@
-// A run folder (--out, --resume) has one writer (docs/file-formats.md, "Run folders"): the
-// process that holds FOLDER/run.lock, a POSIX record lock (fcntl) that the kernel releases
-// when its process ends however it ends, SIGKILL included, so that no lock is ever left
+// A run folder (--out, --resume) has one writer (docs/reference/command-lines-and-files.md, "Run
+// folders"): the process that holds FOLDER/run.lock, a POSIX record lock (fcntl) that the kernel
+// releases when its process ends however it ends, SIGKILL included, so that no lock is ever left
 // stale. A second process is refused (exit status 2) naming the holder's pid, and changes
 // nothing: the lock file is empty and never written. A new run into a folder that holds
 // another run's files is refused unless the user says to replace that run, and then none

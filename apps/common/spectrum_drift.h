@@ -1,5 +1,5 @@
-// The Casimir drift of a matrix state (SO(N), SU(N); docs/conventions.md §2): the relative
-// change of its whole spectrum, ‖λ(μ) − λ(μ₀)‖₂ / ‖λ(μ₀)‖₂, spectra sorted (G::casimirs).
+// The Casimir drift of a matrix state (SO(N), SU(N); docs/reference/conventions.md §2): the
+// relative change of its whole spectrum, ‖λ(μ) − λ(μ₀)‖₂ / ‖λ(μ₀)‖₂, spectra sorted (G::casimirs).
 // Not eigenvalue by eigenvalue: for odd N one eigenvalue of a real skew matrix is zero
 // up to round-off, and its own relative change would be noise of order 1.
 #pragma once

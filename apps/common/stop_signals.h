@@ -1,7 +1,7 @@
 // SIGINT and SIGTERM as requests to stop a long run after its current step, so that it
-// can write its outputs and a checkpoint (docs/file-formats.md, "Checkpoints"). While a
-// StopSignals lives, the first such signal is only recorded; the run polls received()
-// between steps. A second SIGINT ends the process at once (exit status 130) without
+// can write its outputs and a checkpoint (docs/reference/command-lines-and-files.md,
+// "Checkpoints"). While a StopSignals lives, the first such signal is only recorded; the run polls
+// received() between steps. A second SIGINT ends the process at once (exit status 130) without
 // touching a file: the last checkpoint, which is only ever replaced by a rename, stays
 // intact.
 #pragma once

@@ -37,7 +37,7 @@ int orderAt(const std::string& name, double alpha) {
   return alpha == 0.0 ? method->order_without_dissipation : method->order;
 }
 
-/// casimir_drift as docs/file-formats.md defines it, over every state shown to
+/// casimir_drift as docs/reference/command-lines-and-files.md defines it, over every state shown to
 /// observe(): on fixed-size groups Casimir by Casimir (CasimirDrift, runMethod's own).
 template <class G, bool = isDynamicGroup<G>>
 class DriftWatch {
@@ -73,7 +73,7 @@ class DriftWatch<G, true> {
   double current_ = 0.0, max_ = 0.0;
 };
 
-/// --adaptive's checks that need the problem (docs/bad-inputs.md): the step control
+/// --adaptive's checks that need the problem (docs/reference/bad-inputs.md): the step control
 /// judges steps by the energy's change, which dissipation must drive.
 template <class G>
 void requireDissipation(const Options& o, const Settings& s, const Problem<G>& problem) {
@@ -95,7 +95,7 @@ template <class G>
 int runComparison(const Options& o, const Settings& s, const Problem<G>& problem) {
   // Default: every method that applies; an explicit method that does not is bad input.
   // With --adaptive: every one that applies and keeps the Casimirs (the step control's
-  // premise, docs/steady-states.md); an explicit one that does not is bad input.
+  // premise, docs/guide/steady-states.md); an explicit one that does not is bad input.
   std::vector<std::string> names;
   for (const auto& name : s.methods) {
     if (!methodApplies(name, *problem.system)) {

@@ -1,5 +1,5 @@
-// ddb-compare's comparison (docs/file-formats.md, "ddb-compare"): every method that
-// applies runs from μ0 with the trajectory written as it goes, is timed (a median of
+// ddb-compare's comparison (docs/reference/command-lines-and-files.md, "ddb-compare"): every method
+// that applies runs from μ0 with the trajectory written as it goes, is timed (a median of
 // --repeat runs when short), compared with the adaptive reference at the final time and,
 // with --sweep-h, over a range of step sizes.
 #pragma once

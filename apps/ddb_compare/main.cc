@@ -1,10 +1,10 @@
 // ddb-compare: compares integrators on the systems of its table (system_table.h): the
-// paper's rigid-body scenarios (Section 5; docs/conventions.md §3), the heavy top and
-// Kirchhoff body, and the matrix groups' Manakov body and Zeitlin fluid (docs/conventions.md
-// §2), with the command line and files of docs/file-formats.md. Exit status
-// (apps/common/exit_status.h): 2 for bad input, checked in full before anything is written;
-// 1 if a method failed (its valid prefix is still written and it is marked FAILED) or a file
-// could not be written.
+// paper's rigid-body scenarios (Section 5; docs/reference/conventions.md §3), the heavy top and
+// Kirchhoff body, and the matrix groups' Manakov body and Zeitlin fluid
+// (docs/reference/conventions.md §2), with the command line and files of
+// docs/reference/command-lines-and-files.md. Exit status (apps/common/exit_status.h): 2 for bad
+// input, checked in full before anything is written; 1 if a method failed (its valid prefix is
+// still written and it is marked FAILED) or a file could not be written.
 #include <algorithm>
 
 #include "common/cli.h"

@@ -1,8 +1,8 @@
 // The flow's rate on a matrix group (SO(N), SU(N)), for ddb-compare's check that the
-// reference can follow it (docs/bad-inputs.md, "Decisions"). flowRate() differentiates
+// reference can follow it (docs/reference/bad-inputs.md, "Decisions"). flowRate() differentiates
 // the vector field by Jets, one per coordinate: N² of them here, each an N×N matrix,
 // O(N⁵) work. This is a bound of the same scale instead, from the form of the field
-// (docs/conventions.md §2): f(μ) = [μ, ξ + φ], φ = α[μ, ξ], ξ = ∂H/∂μ = Lμ linear for
+// (docs/reference/conventions.md §2): f(μ) = [μ, ξ + φ], φ = α[μ, ξ], ξ = ∂H/∂μ = Lμ linear for
 // both systems, so ∂f/∂μ δ = [δ, ξ + φ] + [μ, Lδ + α([δ, ξ] + [μ, Lδ])] and, with
 // ‖[A, B]‖ ≤ 2‖A‖‖B‖ and ‖L‖‖μ₀‖ taken as ‖ξ₀‖, ‖∂f/∂μ‖ ≲ 4‖ξ₀‖₂ (1 + 3|α|‖μ₀‖₂).
 #pragma once

@@ -1,6 +1,7 @@
-// ddb-compare's problems on matrix groups (docs/file-formats.md, "ddb-compare"): the SO(N)
-// generalised rigid body (Manakov) and Zeitlin's SU(N) fluid (docs/conventions.md §2),
-// with the app's defaults and the largest N its reference can follow.
+// ddb-compare's problems on matrix groups (docs/reference/command-lines-and-files.md,
+// "ddb-compare"): the SO(N) generalised rigid body (Manakov) and Zeitlin's SU(N) fluid
+// (docs/reference/conventions.md §2), with the app's defaults and the largest N its reference can
+// follow.
 #pragma once
 
 #include <ddb/groups/son.h>
@@ -16,11 +17,11 @@ namespace ddb::compare {
 
 /// The largest N of the matrix systems: the reference (adaptive RKF 7(8) at tolerance
 /// 1e-13) costs O(N³) per evaluation of the field over thousands of steps, and every
-/// state's spectrum is computed for casimir_drift; docs/file-formats.md gives the times
-/// measured that set it.
+/// state's spectrum is computed for casimir_drift; docs/reference/command-lines-and-files.md gives
+/// the times measured that set it.
 constexpr Eigen::Index kMaxMatrixN = 64;
 
-/// Defaults (docs/file-formats.md): N, the horizon, α.
+/// Defaults (docs/reference/command-lines-and-files.md): N, the horizon, α.
 constexpr long kManakovDefaultN = 5;
 constexpr long kZeitlinDefaultN = 16;
 constexpr double kMatrixDefaultTEnd = 10.0;

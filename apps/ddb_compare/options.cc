@@ -96,8 +96,9 @@ void addOptions(CLI::App& cli, Options& o) {
                      "); rounded to a whole number of steps, with a warning");
   app::addRelaxFlags(cli, o.relax,
                      "stop each method at the first state with r = |ad*_xi mu|/(|xi| |mu|) <= "
-                     "TOL, 0 < TOL < 1 (docs/steady-states.md); --t-end is then the cap",
-                     "choose h by the energy (docs/steady-states.md): the methods that keep the "
+                     "TOL, 0 < TOL < 1 (docs/guide/steady-states.md); --t-end is then the cap",
+                     "choose h by the energy (docs/guide/steady-states.md): the methods that keep "
+                     "the "
                      "Casimirs, alpha != 0; --h is the first step, --t-end caps the time");
   cli.add_option("--every", o.every, "write every K-th state and the last one to <method>.csv")
       ->capture_default_str()
@@ -173,8 +174,8 @@ double optionalNumber(const std::string& flag, const std::string& text, double f
 namespace {
 
 /// --until-steady, --adaptive and --adaptive-tol into s.relax, with the caps, as
-/// fluid-relax reads them (docs/file-formats.md); the checks that need the problem (the
-/// methods, alpha) are runComparison's.
+/// fluid-relax reads them (docs/reference/command-lines-and-files.md); the checks that need the
+/// problem (the methods, alpha) are runComparison's.
 void readRelaxOptions(const Options& o, Settings& s) {
   app::readRelaxFlags(o.relax, s.relax);
   // The sweep compares fixed steps at equal times; a relaxed run ends at its own time.

@@ -1,6 +1,6 @@
-// ddb-compare's command line (docs/file-formats.md, "ddb-compare"): the options, --help
-// with every system, scenario and method, and the settings every system shares,
-// validated (bad input is a UsageError naming the flag, docs/bad-inputs.md).
+// ddb-compare's command line (docs/reference/command-lines-and-files.md, "ddb-compare"): the
+// options, --help with every system, scenario and method, and the settings every system shares,
+// validated (bad input is a UsageError naming the flag, docs/reference/bad-inputs.md).
 #pragma once
 
 #include <ddb/integrators/drivers/relax.h>
@@ -21,7 +21,8 @@ namespace ddb::compare {
 
 constexpr const char* kApp = "ddb-compare";
 
-/// The most steps a run or the reference may take (docs/bad-inputs.md): more is bad input.
+/// The most steps a run or the reference may take (docs/reference/bad-inputs.md): more is bad
+/// input.
 constexpr long kMaxSteps = 1000000000L;
 // Each timed run is shorter than 1 s: 1000 of them per method bound the timing to
 // minutes, where 1e9 would take years.
@@ -66,7 +67,7 @@ struct Settings {
   Sweep sweep;
   std::vector<std::string> methods;
   std::filesystem::path out;
-  /// Every run is relax()'s (docs/steady-states.md): --until-steady, --adaptive and
+  /// Every run is relax()'s (docs/guide/steady-states.md): --until-steady, --adaptive and
   /// --adaptive-tol, capped by the step count or, with --adaptive, by t_end.
   RelaxOptions relax;
 

@@ -1,7 +1,7 @@
-// ddb-compare's problems (docs/file-formats.md, "ddb-compare"): the rigid body of a paper
-// scenario (docs/conventions.md §3) or the heavy top or Kirchhoff body, with the
-// parameters given on the command line, and the check that the reference can resolve the
-// flow (docs/bad-inputs.md, "Decisions").
+// ddb-compare's problems (docs/reference/command-lines-and-files.md, "ddb-compare"): the rigid body
+// of a paper scenario (docs/reference/conventions.md §3) or the heavy top or Kirchhoff body, with
+// the parameters given on the command line, and the check that the reference can resolve the
+// flow (docs/reference/bad-inputs.md, "Decisions").
 #pragma once
 
 #include <ddb/core/group_traits.h>

@@ -1,5 +1,5 @@
-// ddb-compare's files (docs/file-formats.md, "Output files"): <method>.csv as the run
-// goes, summary.json and runtime_table.md from every method's result, error_vs_h.csv
+// ddb-compare's files (docs/reference/command-lines-and-files.md, "Output files"): <method>.csv as
+// the run goes, summary.json and runtime_table.md from every method's result, error_vs_h.csv
 // from the sweep.
 #pragma once
 
@@ -19,8 +19,8 @@
 
 namespace ddb::compare {
 
-/// <method>.csv rows as they are computed (docs/file-formats.md): t, μ, energy,
-/// Casimirs, the step h that reached the state and its residual r (SteadyStateProbe).
+/// <method>.csv rows as they are computed (docs/reference/command-lines-and-files.md): t, μ,
+/// energy, Casimirs, the step h that reached the state and its residual r (SteadyStateProbe).
 template <class G>
 class TrajectoryCsv {
  public:
@@ -61,8 +61,8 @@ class TrajectoryCsv {
   app::CsvRow row_;
 };
 
-/// <method>.csv rows of a matrix state (SO(N), SU(N); docs/file-formats.md): t, energy,
-/// the spectrum's relative drift, ‖μ‖_F, the step h that reached the state and its
+/// <method>.csv rows of a matrix state (SO(N), SU(N); docs/reference/command-lines-and-files.md):
+/// t, energy, the spectrum's relative drift, ‖μ‖_F, the step h that reached the state and its
 /// residual r. The N² entries are not written: the final state is in summary.json.
 template <class G>
 class MatrixTrajectoryCsv {
@@ -112,7 +112,7 @@ struct MethodResult {
   long failed_step = 0;
   double err_final = 0.0, casimir_drift = 0.0, runtime_s = 0.0;
   int timed_runs = 1;
-  // relax()'s account (docs/steady-states.md): why the run stopped, r at the final state,
+  // relax()'s account (docs/guide/steady-states.md): why the run stopped, r at the final state,
   // the steps the step control rejected and the last step taken.
   std::string stop;
   bool steady = false;

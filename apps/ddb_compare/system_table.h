@@ -1,6 +1,6 @@
-// ddb-compare's systems by their --system names (docs/file-formats.md, "ddb-compare"): one
-// table, as integrators/methods/method_table.h is for the methods. A row holds a system's
-// name, its description, the system flags it takes and how the comparison runs on it;
+// ddb-compare's systems by their --system names (docs/reference/command-lines-and-files.md,
+// "ddb-compare"): one table, as integrators/methods/method_table.h is for the methods. A row holds
+// a system's name, its description, the system flags it takes and how the comparison runs on it;
 // --system's choices, --help, the flags' help, the messages refusing a flag a system does not
 // take, the flags a bad-input message may blame and the tests all read it. Adding a system is
 // one row here plus its problem (problems.h, matrix_problems.h), and a new flag one entry of

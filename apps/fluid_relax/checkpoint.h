@@ -1,6 +1,6 @@
-// fluid-relax's checkpoints (docs/file-formats.md, "Checkpoints"): OUT/checkpoint.ddb, one
-// checksummed BinaryRecord (core/binary_record.h) written atomically (AtomicFile: a
-// temporary, fsync, rename), holding everything a resumed run needs to continue the
+// fluid-relax's checkpoints (docs/reference/command-lines-and-files.md, "Checkpoints"):
+// OUT/checkpoint.ddb, one checksummed BinaryRecord (core/binary_record.h) written atomically
+// (AtomicFile: a temporary, fsync, rename), holding everything a resumed run needs to continue the
 // uninterrupted one to the bit: the command line as given, the validated settings (W₀
 // included, so that a changed --init-file cannot change a resumed run), what the summary
 // accumulates, the lengths of the files that grow (history.csv with the hash of its bytes,
@@ -72,7 +72,7 @@ void writeCheckpoint(const std::filesystem::path& out, const BinaryRecordWriter&
 
 /// The options, the given flags and the settings but W₀, written and read as the checkpoint
 /// writes and reads them: what fluid-relax-mpi's rank 0 sends the other ranks, which hold
-/// no W₀ (docs/distributed.md, "Memory per rank").
+/// no W₀ (docs/design/distributed.md, "Memory per rank").
 void putRunDefinition(BinaryRecordWriter& out, const Options& o, const GivenFlags& given,
                       const Settings& s);
 void getRunDefinition(BinaryRecordReader& in, Options& o, GivenFlags& given, Settings& s);

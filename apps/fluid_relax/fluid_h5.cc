@@ -130,7 +130,7 @@ FluidH5 FluidH5::create(const std::filesystem::path& path, const FluidH5Attribut
                       "create the file");
     h5.writeLayout(attributes);
   } catch (const app::IoError&) {
-    // No half-written file (docs/bad-inputs.md): the file goes if it was created.
+    // No half-written file (docs/reference/bad-inputs.md): the file goes if it was created.
     const bool created = static_cast<bool>(h5.file_);
     h5.file_ = Handle();
     std::error_code ignored;

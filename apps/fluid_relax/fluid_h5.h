@@ -1,5 +1,5 @@
-// fluid.hdf5 (docs/file-formats.md, "fluid.hdf5"): fluid-relax's frames in the layout of
-// quflow's HDF5 files (quflow.io.save: `state` of qtype "shr", `time`, `qtime`), so that
+// fluid.hdf5 (docs/reference/command-lines-and-files.md, "fluid.hdf5"): fluid-relax's frames in the
+// layout of quflow's HDF5 files (quflow.io.save: `state` of qtype "shr", `time`, `qtime`), so that
 // quflow.load opens it, plus the matrix W and history.csv's numbers per frame. Every
 // per-frame dataset is chunked and extendable; a frame is one row of each.
 #pragma once
@@ -19,7 +19,7 @@ namespace ddb::fluid {
 struct FluidH5Attributes {
   long n = 0;
   double alpha = 0.0, h = 0.0;
-  /// ħ = 2/√(N² − 1) of the run (docs/conventions.md §2): qtime = t/ħ.
+  /// ħ = 2/√(N² − 1) of the run (docs/reference/conventions.md §2): qtime = t/ħ.
   double hbar = 0.0;
   std::string method, init;
   std::optional<std::uint64_t> seed;  // the generated inits

@@ -47,9 +47,9 @@ void requireRepresentableStep(const CLI::App& cli, const Options& o, const Setti
   throw std::logic_error("a generated vorticity overflows: " + why);
 }
 
-/// zeitlinDefaultStep (docs/file-formats.md, "fluid-relax"), which must be a normal double:
-/// a huge α or W₀ makes its stiffness limit underflow. The flag named is --alpha if the
-/// default α would give a normal step, else the initial vorticity.
+/// zeitlinDefaultStep (docs/reference/command-lines-and-files.md, "fluid-relax"), which must be a
+/// normal double: a huge α or W₀ makes its stiffness limit underflow. The flag named is --alpha if
+/// the default α would give a normal step, else the initial vorticity.
 double defaultStep(const Options& o, const Settings& s) {
   const auto normal = [](double h) { return h >= std::numeric_limits<double>::min(); };
   const double h = zeitlinDefaultStep(s.W0, s.alpha);

@@ -1,6 +1,6 @@
 // fluid-relax's input, validated: the numbers of the command line, the initial
 // vorticity (generated, or read from --init-file) and the step, or a UsageError naming
-// the flag (docs/bad-inputs.md).
+// the flag (docs/reference/bad-inputs.md).
 #pragma once
 
 #include <ddb/integrators/drivers/relax.h>
@@ -29,7 +29,7 @@ struct Settings {
   std::filesystem::path out;
 };
 
-/// Every check of the input (docs/bad-inputs.md) in the order the messages name them:
+/// Every check of the input (docs/reference/bad-inputs.md) in the order the messages name them:
 /// the method, α, --steps or --t-end, --until-steady, --adaptive and --adaptive-tol, W0
 /// (--init-file read and checked, or generated), h (given or the default) and a first step that
 /// does not overflow.

@@ -1,9 +1,9 @@
-// fluid-relax: relaxes Zeitlin's SU(N) fluid on the sphere (docs/conventions.md §2) with
+// fluid-relax: relaxes Zeitlin's SU(N) fluid on the sphere (docs/reference/conventions.md §2) with
 // double-bracket dissipation towards a steady flow, with the command line and files of
-// docs/file-formats.md ("fluid-relax"). Exit status (apps/common/exit_status.h): 2 for
-// bad input, checked in full before anything is written; 1 if a step failed (history.csv
-// keeps every state before it) or a file could not be written; 130/143 if SIGINT/SIGTERM
-// stopped it (after its step, with outputs and a checkpoint: "Checkpoints" there).
+// docs/reference/command-lines-and-files.md ("fluid-relax"). Exit status
+// (apps/common/exit_status.h): 2 for bad input, checked in full before anything is written; 1 if a
+// step failed (history.csv keeps every state before it) or a file could not be written; 130/143 if
+// SIGINT/SIGTERM stopped it (after its step, with outputs and a checkpoint: "Checkpoints" there).
 #include <ddb/integrators/drivers/relax.h>
 #include <ddb/integrators/drivers/run.h>
 #include <ddb/integrators/methods/method_table.h>
@@ -162,7 +162,7 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   const bool interrupted = result.stop == RelaxStop::kInterrupted;
   if (!result.ok()) {
     // A failed run writes no final state: W_final.csv and omega_final.csv would claim a
-    // time the run did not reach (docs/file-formats.md).
+    // time the run did not reach (docs/reference/command-lines-and-files.md).
     app::writeJsonFile(s.out / "summary.json", summary);
     spdlog::error("{}", result.failure);
     spdlog::error("history.csv holds the {} steps before the failure; wrote {}", result.last.k,

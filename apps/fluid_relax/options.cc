@@ -39,11 +39,13 @@ void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n) {
   app::addRelaxFlags(cli, o.relax,
                      "stop when r = ||[P,W]||_F/(||P||_F ||W||_F) <= TOL, 0 < TOL < 1 (--steps or "
                      "--t-end is then the cap; summary.json says which stopped the run)",
-                     "choose h by the energy (docs/steady-states.md): a DDB-family method with "
+                     "choose h by the energy (docs/guide/steady-states.md): a DDB-family method "
+                     "with "
                      "alpha != 0; --h is the first step, --steps caps accepted steps");
   cli.add_flag("--newton", o.newton,
                "instead of time steps, Newton's method on the orbit for a steady state "
-               "(docs/steady-states.md): needs --until-steady, --steps caps its iterations; no "
+               "(docs/guide/steady-states.md): needs --until-steady, --steps caps its iterations; "
+               "no "
                "--method, --h, --t-end or --adaptive");
   app::addSeedOption(cli, o.seed, "seed of the initial vorticity");
   cli.add_option("--init", o.init, "initial vorticity (listed below)")->capture_default_str();
@@ -72,7 +74,7 @@ void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n) {
   cli.add_flag("--plot", o.plot, "render PNG figures (python3 with matplotlib and scipy)");
   cli.add_flag("--h5", o.h5,
                "write every history.csv row's state to fluid.hdf5 (quflow's layout, "
-               "docs/file-formats.md)");
+               "docs/reference/command-lines-and-files.md)");
   cli.add_flag("--animate", o.animate,
                "render fluid.mp4 from fluid.hdf5 after the run (implies --h5; python3 with "
                "matplotlib, scipy, h5py and ffmpeg)");
@@ -84,7 +86,8 @@ void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n) {
       app::describeChoices(fluidMethods()) +
       "\nFiles in --out: history.csv, W_final.csv, omega_initial.csv, omega_final.csv, "
       "summary.json, checkpoint.ddb,\nfluid.hdf5 with --h5, fluid.mp4 with --animate "
-      "(docs/file-formats.md).\nExit status: 0 ok, 1 a step failed or a file could not be "
+      "(docs/reference/command-lines-and-files.md).\nExit status: 0 ok, 1 a step failed or a "
+      "file could not be "
       "written, 2 bad input (nothing written), 130/143 stopped by SIGINT/SIGTERM (outputs "
       "and a checkpoint written; --resume continues).\n");
 }

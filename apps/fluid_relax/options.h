@@ -1,5 +1,5 @@
-// fluid-relax's command line (docs/file-formats.md, "fluid-relax"): the options and --help
-// with the initial vorticities and methods.
+// fluid-relax's command line (docs/reference/command-lines-and-files.md, "fluid-relax"): the
+// options and --help with the initial vorticities and methods.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -16,7 +16,7 @@ namespace ddb::fluid {
 
 constexpr const char* kApp = "fluid-relax";
 // The app's largest N, below SUN::kMaxN: a DDB step costs about 20 complex N×N products
-// (docs/conventions.md §4), some seconds each step at N = 1024 on two cores, and every
+// (docs/reference/conventions.md §4), some seconds each step at N = 1024 on two cores, and every
 // state's spectrum is computed for spectrum_drift.
 constexpr Eigen::Index kMaxN = 1024;
 constexpr long kMaxSteps = 1000000000L;

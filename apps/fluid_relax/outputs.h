@@ -1,6 +1,6 @@
-// fluid-relax's CSV files (docs/file-formats.md, "fluid-relax"): history.csv as the run
-// goes (continued by a resumed run) with fluid.hdf5's frames beside it, W_final.csv in the
-// layout of --init-file, omega_initial.csv and omega_final.csv.
+// fluid-relax's CSV files (docs/reference/command-lines-and-files.md, "fluid-relax"): history.csv
+// as the run goes (continued by a resumed run) with fluid.hdf5's frames beside it, W_final.csv in
+// the layout of --init-file, omega_initial.csv and omega_final.csv.
 #pragma once
 
 #include <ddb/integrators/drivers/steady_state_probe.h>
@@ -92,7 +92,7 @@ int makeFigures(const Options& o, const std::filesystem::path& out, int status,
 /// W in the layout of --init-file: row j is Re W[j, :] then Im W[j, :].
 void writeMatrixCsv(const std::filesystem::path& path, const Eigen::MatrixXcd& W);
 
-/// The real spherical-harmonic coefficients ω_lm of W (docs/conventions.md §2), one row
+/// The real spherical-harmonic coefficients ω_lm of W (docs/reference/conventions.md §2), one row
 /// "l,m,omega" each, for the figures.
 void writeOmegaCsv(const std::filesystem::path& path, const SphericalHarmonicBasis& basis,
                    const Eigen::MatrixXcd& W);

@@ -1,7 +1,7 @@
-// The files of a fluid-relax run folder (docs/file-formats.md, "Run folders"), shared by
-// fluid-relax and fluid-relax-mpi: which names make a folder another run's (and go with
+// The files of a fluid-relax run folder (docs/reference/command-lines-and-files.md, "Run folders"),
+// shared by fluid-relax and fluid-relax-mpi: which names make a folder another run's (and go with
 // --overwrite), and every check a --resume makes of the folder against its checkpoint before
-// the resumed run touches anything (docs/reliability.md, "Nothing finished is lost").
+// the resumed run touches anything (docs/reference/guarantees.md, "Nothing finished is lost").
 #pragma once
 
 #include <string>

@@ -1,5 +1,5 @@
-// fluid-relax's summary.json (docs/file-formats.md, "fluid-relax"): the fields of a run,
-// whichever app ran it (fluid-relax, or fluid-relax-mpi, which adds its own).
+// fluid-relax's summary.json (docs/reference/command-lines-and-files.md, "fluid-relax"): the fields
+// of a run, whichever app ran it (fluid-relax, or fluid-relax-mpi, which adds its own).
 #pragma once
 
 #include <ddb/groups/sun.h>

@@ -1,15 +1,15 @@
 // fluid-relax-mpi: fluid-relax's relaxation with every N×N matrix distributed block-cyclically
-// over the ranks of an MPI job (docs/distributed.md, "fluid-relax-mpi"). The run is the
+// over the ranks of an MPI job (docs/design/distributed.md, "fluid-relax-mpi"). The run is the
 // library's own: the distributed fluid (makeDistributedZeitlinFluid, a LiePoissonSystem on
 // DistributedSUN), the method of --method built by makeMethod (the method table's methods for
 // any backend) and Relaxation (fixed steps, --adaptive's energy step control, --until-steady),
 // as fluid-relax calls them; the command line, its checks and the files are fluid-relax's
-// (docs/file-formats.md), written by rank 0 from the states gathered there for the history
-// rows and at the end; summary.json adds mpi_ranks, process_grid and block_size. Exit
+// (docs/reference/command-lines-and-files.md), written by rank 0 from the states gathered there for
+// the history rows and at the end; summary.json adds mpi_ranks, process_grid and block_size. Exit
 // statuses as fluid-relax's, agreed by every rank: 2 bad input on any rank (nothing written),
 // 1 a failed step or a file rank 0 could not write, 130/143 a SIGINT/SIGTERM on any rank
 // (outputs and a checkpoint written); anything unexpected on one rank ends the job
-// (MPI_Abort). Checkpoints are Relaxation's record (docs/distributed.md, "Checkpoints"), so
+// (MPI_Abort). Checkpoints are Relaxation's record (docs/design/distributed.md, "Checkpoints"), so
 // either app resumes the other's; with --h5, rank 0 appends fluid.hdf5's frames as fluid-relax
 // does.
 #include <ddb/distributed/distributed_zeitlin_fluid.h>
@@ -116,7 +116,7 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   const Eigen::Index n = run.n;
 
   // fluid-relax's run, on distributed states: the library's fluid, method and Relaxation
-  // (docs/distributed.md, "One step formula"). A resumed run starts from the zero matrix of
+  // (docs/design/distributed.md, "One step formula"). A resumed run starts from the zero matrix of
   // the layout, which the checkpoint's state replaces.
   DistributedMatrix W0(grid, static_cast<int>(n), run.block);
   if (resume == nullptr) W0.scatterFrom(s.W0);  // rank 0's
@@ -139,7 +139,7 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   if (resume != nullptr) {
     // Rank 0's record, read on every rank in step: its numbers broadcast, its matrices (the
     // state, the warm start's corrections) scattered, so that every rank fails alike and
-    // only rank 0 holds them whole (docs/distributed.md, "Checkpoints").
+    // only rank 0 holds them whole (docs/design/distributed.md, "Checkpoints").
     RankZeroRecordReader record(grid, std::move(resume->relaxation));
     const int status = onEveryRank(grid, [&] {
       resumeRelaxation(record, s.relax, o.resume, [&](BinaryRecordReader& in) {
@@ -271,7 +271,8 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
     summary["mpi_ranks"] = grid.size();
     summary["process_grid"] = {grid.rows(), grid.cols()};
     summary["block_size"] = run.block;
-    // A failed run writes no final state (docs/file-formats.md), as fluid-relax.
+    // A failed run writes no final state (docs/reference/command-lines-and-files.md), as
+    // fluid-relax.
     if (result.ok()) outputs->writeFinalState(s, result.final);
     app::writeJsonFile(s.out / "summary.json", summary);
   });
@@ -289,7 +290,7 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
     return app::kExitFailed;
   }
   if (result.stop == RelaxStop::kInterrupted) {
-    // The same grid shape continues the run to the bit (docs/distributed.md, "Checkpoints").
+    // The same grid shape continues the run to the bit (docs/design/distributed.md, "Checkpoints").
     const std::string shape = grid.rows() == ProcessGrid::defaultRows(grid.size())
                                   ? ""
                                   : " --grid-rows " + std::to_string(grid.rows());

@@ -25,17 +25,18 @@ bool runsDistributed(const std::string& method) {
   return info != nullptr && (info->groups & kBackendMatrixGroups) != 0;
 }
 
-// What fluid-relax has and this app does not yet (docs/distributed.md, "Not done yet").
+// What fluid-relax has and this app does not yet (docs/design/distributed.md, "Not done yet").
 void refuseUnsupported(const CLI::App& cli, const fluid::Options& o) {
   if (!runsDistributed(o.method)) {
     app::usageError("--method", o.method,
                     "fluid-relax-mpi runs the methods whose step is written against the matrix "
                     "backend alone: " +
-                        methodList(kBackendMatrixGroups) + " (docs/matrix-backend.md)");
+                        methodList(kBackendMatrixGroups) + " (docs/design/matrix-backend.md)");
   }
   if (cli.count("--newton") > 0) {
     throw app::UsageError(
-        "--newton: not available in fluid-relax-mpi (docs/distributed.md); run fluid-relax for "
+        "--newton: not available in fluid-relax-mpi (docs/design/distributed.md); run "
+        "fluid-relax for "
         "it");
   }
 }
@@ -52,7 +53,8 @@ void refuseForeignRun(const std::string& dir, const fluid::Checkpoint& c) {
   if (!what.empty()) {
     app::usageError("--resume", dir,
                     "its run used " + what +
-                        ", which fluid-relax-mpi does not have (docs/distributed.md); resume it "
+                        ", which fluid-relax-mpi does not have (docs/design/distributed.md); "
+                        "resume it "
                         "with fluid-relax");
   }
 }
@@ -148,7 +150,7 @@ void addMpiOptions(CLI::App& cli, MpiOptions& o) {
                  "square grid with rows >= columns)");
   cli.footer(
       "\nfluid-relax-mpi is fluid-relax's relaxation with every N x N matrix "
-      "distributed over the MPI ranks\n(docs/distributed.md): start it with mpirun -np P. "
+      "distributed over the MPI ranks\n(docs/design/distributed.md): start it with mpirun -np P. "
       "Methods here: " +
       methodList(kBackendMatrixGroups) +
       "; not available: the other methods, --newton.\n\nInitial "
@@ -157,7 +159,8 @@ void addMpiOptions(CLI::App& cli, MpiOptions& o) {
       app::describeChoices(app::initDescriptions()) +
       "\nFiles in --out (written by rank 0): history.csv, W_final.csv, omega_initial.csv, "
       "omega_final.csv, summary.json,\ncheckpoint.ddb (fluid-relax's: either app resumes "
-      "it), fluid.hdf5 with --h5 or --animate\n(docs/file-formats.md). Exit status: 0 ok, 1 "
+      "it), fluid.hdf5 with --h5 or --animate\n(docs/reference/command-lines-and-files.md). "
+      "Exit status: 0 ok, 1 "
       "a step failed or a file could not be written, 2 bad input\n(nothing written), 130/143 "
       "stopped by SIGINT/SIGTERM (outputs and a checkpoint written).\n");
 }

@@ -1,4 +1,4 @@
-// fluid-relax-mpi's input (docs/distributed.md, "fluid-relax-mpi"): fluid-relax's command
+// fluid-relax-mpi's input (docs/design/distributed.md, "fluid-relax-mpi"): fluid-relax's command
 // line and checks (fluid_relax/input.h, and fluid_relax/checkpoint.h for --resume) with
 // --block and --grid-rows, less the flags it refuses, and the agreement of all ranks on the
 // outcome: rank 0 alone makes W₀ or reads the checkpoint and checks what depends on them, every
@@ -45,7 +45,7 @@ struct MpiOptions {
 void addMpiOptions(CLI::App& cli, MpiOptions& o);
 
 /// The run a command line asks for, the same on every rank but for the whole matrices,
-/// which only rank 0 holds (docs/distributed.md, "Memory per rank"): a new run's options and
+/// which only rank 0 holds (docs/design/distributed.md, "Memory per rank"): a new run's options and
 /// settings, or (--resume DIR) the resumed run's recorded ones with its checkpoint, as
 /// fluid-relax makes them (fluid::resumeSettings).
 struct MpiRun {
@@ -61,8 +61,9 @@ struct MpiRun {
   int block = 0;
   /// The process grid's rows (--grid-rows, or the default shape's), a divisor of the ranks.
   int grid_rows = 0;
-  /// Rank 0's lock of the run folder (docs/file-formats.md, "Run folders"), held to the end:
-  /// taken before the checkpoint is read (--resume) or once the input is checked (a new run).
+  /// Rank 0's lock of the run folder (docs/reference/command-lines-and-files.md, "Run folders"),
+  /// held to the end: taken before the checkpoint is read (--resume) or once the input is checked
+  /// (a new run).
   std::optional<app::RunFolderLock> lock;
 };
 

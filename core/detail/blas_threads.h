@@ -2,8 +2,8 @@
 // openblas_get_num_threads(), looked up as weak symbols so that any other BLAS links too
 // (it then reports 0, unknown). The library splits a product among its own threads only
 // under a single-threaded BLAS (core/matrix_backend.h): two thread pools on the same cores
-// slow each other (docs/design.md, "Threads"). And only under OpenBLAS's pthreads build
-// (openblas_get_parallel() == 1), which may be called from several threads at once; its
+// slow each other (docs/design/architecture.md, "Threads"). And only under OpenBLAS's pthreads
+// build (openblas_get_parallel() == 1), which may be called from several threads at once; its
 // serial and OpenMP builds are reported as unknown.
 #pragma once
 

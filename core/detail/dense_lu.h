@@ -3,9 +3,10 @@
 // (no allocation per call). The Cayley conjugation
 // (integrators/matrix_kernels/matrix_conjugation.h) factors I + b once per step and solves with it
 // twice: with Debian's OpenBLAS that costs less than forming the inverse and multiplying by it
-// (docs/design.md, "The Cayley conjugation by solves"). With DDB_USE_LAPACK (set by the build when
-// a LAPACK and LAPACKE are found next to the BLAS) it calls ?getrf + ?getrs, which cost half of
-// Eigen's own LU, the fallback (docs/design.md, "Measured, and what it decided").
+// (docs/design/architecture.md, "The Cayley conjugation by solves"). With DDB_USE_LAPACK (set by
+// the build when a LAPACK and LAPACKE are found next to the BLAS) it calls ?getrf + ?getrs, which
+// cost half of Eigen's own LU, the fallback (docs/design/architecture.md, "Measured, and what it
+// decided").
 #pragma once
 
 #include <ddb/core/detail/blas_threads.h>

@@ -1,7 +1,7 @@
 // HermitianEigensolver: the eigenvalues (ascending) and orthonormal eigenvectors of a complex
 // Hermitian matrix, with its workspace allocated when a size first appears, then reused (no
 // allocation per call). The exponential retraction of the matrix groups decomposes one or
-// two skew-Hermitian matrices per sweep and step (docs/conventions.md §1, "Matrix
+// two skew-Hermitian matrices per sweep and step (docs/reference/conventions.md §1, "Matrix
 // algebras"). With DDB_USE_LAPACK it calls ?heevd (divide and conquer) through LAPACKE's
 // _work variant; the fallback is Eigen's SelfAdjointEigenSolver, whose Householder
 // back-transformation allocates on every call.

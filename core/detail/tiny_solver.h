@@ -1,5 +1,5 @@
 // Solves the small fixed-size implicit equations r(x) = 0 with ceres::TinySolver
-// (docs/conventions.md §4), the Jacobian either supplied by the equation (analytic) or
+// (docs/reference/conventions.md §4), the Jacobian either supplied by the equation (analytic) or
 // from Jet autodiff. TinySolver has no converged flag and an absolute function
 // tolerance, so convergence is decided here on the final residual:
 //   ‖r(x)‖ <= relative_tolerance · scale,
@@ -55,7 +55,8 @@ struct SmallInverseSolver {
 /// closed-form inverses of A and of the Schur complement S = C − Bᵀ A⁻¹ B (both SPD as a is):
 /// two divisions and independent multiply-adds. A Cholesky factorisation chains six square
 /// roots and divisions with its substitutions, and Eigen's LLT is out of line at run-time
-/// block sizes; both cost a heavy-top DDB step more (docs/design.md, "Small Legendre solves").
+/// block sizes; both cost a heavy-top DDB step more (docs/design/architecture.md, "Small Legendre
+/// solves").
 template <int N>
 struct SchurComplementSolver {
   static constexpr int kHalf = N / 2;
@@ -150,7 +151,7 @@ TinySolveStats solveTinyWith(const Function& function, Eigen::Matrix<double, N, 
                              const SolverOptions& options, const char* what, double t, double h) {
   const double target = options.relative_tolerance * scale;
   const TinySolveStats stats = runTinySolver(function, x, target, options.max_iterations);
-  if (!std::isfinite(stats.residual)) {  // overflow, named as such (docs/reliability.md)
+  if (!std::isfinite(stats.residual)) {  // overflow, named as such (docs/reference/guarantees.md)
     Eigen::Matrix<double, N, 1> r;
     function(x.data(), r.data(), nullptr);
     throw NonFiniteState(what, -1, t, h, r, "residual");
@@ -191,7 +192,7 @@ class FrozenJacobian {
       Eigen::Map<Square> out(jacobian);
       out = jacobian_;
     }
-    return true;  // TinySolver ignores the return (docs/conventions.md §4)
+    return true;  // TinySolver ignores the return (docs/reference/conventions.md §4)
   }
 
  private:

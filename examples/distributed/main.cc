@@ -1,4 +1,4 @@
-// Zeitlin's fluid on SU(N) over the ranks of an MPI job (docs/distributed.md): a seeded
+// Zeitlin's fluid on SU(N) over the ranks of an MPI job (docs/design/distributed.md): a seeded
 // random vorticity W₀ is scattered block-cyclically over a process grid of MPI_COMM_WORLD,
 // a few DDB Cayley steps (α = 0.5) are taken on the distributed matrices, and the gathered
 // W is checked on rank 0 against the dense step of the same library from the same W₀ (to

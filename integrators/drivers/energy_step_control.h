@@ -1,5 +1,5 @@
 // EnergyStepControl: step-size control for the Casimir-keeping (DDB) methods, driven by
-// the one quantity they do not keep, the energy (docs/steady-states.md).
+// the one quantity they do not keep, the energy (docs/guide/steady-states.md).
 // A DDB step keeps every state on the coadjoint orbit whatever h is, so the Casimirs need
 // no control; what a too large h spoils is the dissipation. The controller therefore
 // accepts a step of size h from μ to μ' only if

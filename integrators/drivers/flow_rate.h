@@ -1,8 +1,8 @@
 // The stiffness of a flow at a point: ‖∂f/∂μ‖∞ of the vector field μ̇ = f(μ) =
-// ad*_{ξ+φ(ξ)} μ (docs/conventions.md §2), by Jets (exact to round-off, no step size to
+// ad*_{ξ+φ(ξ)} μ (docs/reference/conventions.md §2), by Jets (exact to round-off, no step size to
 // choose). Its inverse is the flow's fastest time scale there, which an explicit adaptive
 // solver such as the reference must resolve; ddb-compare refuses a problem whose rate
-// times the horizon exceeds what 1e9 steps can follow (docs/bad-inputs.md).
+// times the horizon exceeds what 1e9 steps can follow (docs/reference/bad-inputs.md).
 #pragma once
 
 #include <ddb/core/lie_poisson_system.h>

@@ -1,6 +1,6 @@
-// relax() and Relaxation: integrate a system until it is steady (docs/steady-states.md). The run
-// stops at the first state whose residual r = ‖ad*_ξ μ‖/(‖ξ‖ ‖μ‖) (SteadyStateProbe) is at most the
-// tolerance, or at a cap on the accepted steps or on the time, or at a failure, and says which.
+// relax() and Relaxation: integrate a system until it is steady (docs/guide/steady-states.md). The
+// run stops at the first state whose residual r = ‖ad*_ξ μ‖/(‖ξ‖ ‖μ‖) (SteadyStateProbe) is at most
+// the tolerance, or at a cap on the accepted steps or on the time, or at a failure, and says which.
 // With StepSizeControl::adaptive the steps are chosen by EnergyStepControl (for the Casimir-keeping
 // methods: every accepted step keeps the state on the orbit and moves the energy the way the flow
 // does); without, every step has the first h, as in runMethod(). With RelaxOptions::newton there is
@@ -108,7 +108,7 @@ struct StepTimes {
 /// record, the state, the steps rejected and the step times. A caller that takes the steps
 /// itself (fluid-relax-mpi, on distributed states, which MatrixBackend::save gathers whole)
 /// writes it, then EnergyStepControl::save and the method's warm start, and so writes
-/// Relaxation's record (docs/file-formats.md, "Checkpoints").
+/// Relaxation's record (docs/reference/command-lines-and-files.md, "Checkpoints").
 template <class Dual>
 void saveRelaxCursor(BinaryRecordWriter& out, const RelaxState& s, const Dual& state,
                      long steps_rejected, const StepTimes& times) {
@@ -218,14 +218,14 @@ StepAttempt attemptStep(EnergyStepControl& control, bool adaptive, long k, doubl
 /// integrators keep problem, method and cursor apart likewise): advance() takes one
 /// accepted step at a time, and save()/load() carry the whole cursor (state, time, step
 /// control, the method's warm start) so that a run resumed from a checkpoint takes the
-/// uninterrupted run's steps to the bit (docs/file-formats.md, "Checkpoints").
+/// uninterrupted run's steps to the bit (docs/reference/command-lines-and-files.md, "Checkpoints").
 template <class G>
 class Relaxation {
  public:
   using Dual = typename G::template Dual<double>;
 
   /// Whether the Newton search runs on G's states: OrbitNewton and its preconditioner are
-  /// written on dense matrices (docs/matrix-backend.md, "What runs on any backend").
+  /// written on dense matrices (docs/design/matrix-backend.md, "What runs on any backend").
   static constexpr bool kNewtonSearch = !isDynamicGroup<G> || isEigenMatrix<Dual>;
 
   /// Starts at mu0 with the step h0 (options: when to stop, how to choose h). Bad arguments

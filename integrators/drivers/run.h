@@ -18,7 +18,7 @@
 namespace ddb {
 
 /// max over observed states and i of |C_i(μ) − C_i(μ₀)| / |C_i(μ₀)| (absolute where
-/// C_i(μ₀) = 0): the casimir_drift of docs/file-formats.md.
+/// C_i(μ₀) = 0): the casimir_drift of docs/reference/command-lines-and-files.md.
 template <class G>
 class CasimirDrift {
  public:
@@ -107,7 +107,7 @@ struct RunOptions {
 /// Integrates `steps` steps of size h from (0, mu0) with `method`, showing `sink(k, t, mu)`
 /// the states chosen by options.every. A SolveFailure raised inside a step (a solver or a
 /// series out of its budget, a non-finite state, an exp step past its injectivity limit:
-/// docs/reliability.md) ends the run and is recorded in the result; bad arguments to
+/// docs/reference/guarantees.md) ends the run and is recorded in the result; bad arguments to
 /// runMethod itself throw InvalidArgument.
 template <class G, class Sink>
 RunResult<G> runMethod(OneStepMethod<G>& method, const LiePoissonSystem<G>& system,

@@ -1,4 +1,4 @@
-// The update of a DDB Cayley step on a matrix group, in place (docs/conventions.md §2):
+// The update of a DDB Cayley step on a matrix group, in place (docs/reference/conventions.md §2):
 //   M_{k+1} = Ad*_U M_k = Uᴴ M_k U,  U = cay(hξ) cay(hφ),  cay(2x) = (I − x)⁻¹(I + x),
 // with a = hξ/2 from the Legendre solution p and b = hφ/2 = k♯(ad*_{hξ/2} p) = k♯([p, a]).
 // M_{k+1} is formed by conjugating M_k, not read out as (I − a) p (I + a): the read-out is
@@ -13,7 +13,7 @@
 // second, with dissipation: [p, a] = (ap)ᴴ − ap from the solver's a p, b = k♯([p, a]), and
 // the identity with b, M − 2[b, q]. The workspaces are allocated when the size first
 // appears, then reused. Written against the matrix backend (core/matrix_backend.h) and the
-// system's type: the distributed step uses it unchanged (docs/distributed.md).
+// system's type: the distributed step uses it unchanged (docs/design/distributed.md).
 #pragma once
 
 #include <ddb/core/errors.h>

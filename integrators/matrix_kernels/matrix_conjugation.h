@@ -1,9 +1,9 @@
 // The conjugations μ ← Ad*_{τ(x)} μ = τ(x)ᴴ μ τ(x) on a matrix group (SO(N), SU(N)),
-// in place and as an increment of μ (docs/conventions.md §1, "Matrix algebras"):
+// in place and as an increment of μ (docs/reference/conventions.md §1, "Matrix algebras"):
 // prepare(x) once, then apply(μ) to any number of momenta. Conjugating by a formed τ(x)
 // puts the same rounding of τ(x) into every step of a steady flow and the spectrum drifts
 // linearly; the increment's rounding is relative to the change, which vanishes at a steady
-// state (docs/long-run.md, "Matrix groups").
+// state (docs/results/casimir-drift.md, "Matrix groups").
 //   Cayley, τ(x) = cay(2b), b = x/2: with q = (I + b)⁻¹ μ (I − b)⁻¹,
 //     Ad*_{cay(2b)} μ = (I − b) q (I + b) = μ − 2[b, q]      (an LU, two solves, a product);
 //   exp: Ad*_{exp x} multiplies entry (a, b) of x's eigenbasis by e^{−iδ}, δ = θ_a − θ_b:
@@ -44,7 +44,7 @@ class MatrixCayleyConjugation {
   /// μ ← μ − 2[b, q], q = (I + b)⁻¹ μ (I − b)⁻¹. As b and μ are skew-Hermitian,
   /// μ (I − b)⁻¹ = −((I + b)⁻¹ μ)ᴴ, so q = (I + b)⁻¹ (−((I + b)⁻¹ μ)ᴴ): two solves with the
   /// factors of I + b, cheaper than forming the inverse and multiplying by it twice
-  /// (docs/design.md, "The Cayley conjugation by solves").
+  /// (docs/design/architecture.md, "The Cayley conjugation by solves").
   void apply(Dual& mu) {
     B::copy(mu, product_);
     lu_.solve(resolvent_, product_);  // (I + b)⁻¹ μ
@@ -63,7 +63,8 @@ class MatrixCayleyConjugation {
     B::multiply(b, q, product_);
     // The commutator first, then one sum into μ: bq itself does not vanish at a steady state,
     // and μ − 2bq + 2(bq)ᴴ in two passes rounds μ − 2bq to full size, with the same rounding
-    // at every step of a steady flow (a linear drift of the spectrum, docs/long-run.md).
+    // at every step of a steady flow (a linear drift of the spectrum,
+    // docs/results/casimir-drift.md).
     G::commutatorFromProduct(product_, commutator_);  // (bq)ᴴ − bq = −[b, q]
     B::axpy(2.0, commutator_, mu);
   }

@@ -1,5 +1,5 @@
 // The update of a DDB step with the exponential retraction on a matrix group, in place
-// (docs/conventions.md §1, "Matrix algebras"):
+// (docs/reference/conventions.md §1, "Matrix algebras"):
 //   M_{k+1} = Ad*_{exp(hξ) exp(hφ)} M_k = Ad*_{exp(hφ)} Ad*_{exp(hξ)} M_k,  φ = k♯([p, ξ]),
 // each factor applied as an increment of M in its argument's eigenbasis
 // (matrix_conjugation.h): the first in ξ's, which the Legendre solver leaves, the second,

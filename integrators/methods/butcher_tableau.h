@@ -1,7 +1,7 @@
 // Butcher tableaus as data (GeometricIntegrators.jl style): the classical RK4 and
-// the 3-stage Lobatto IIIC method of order 4 (docs/conventions.md §2; Hairer & Wanner II, IV.5).
-// The flows are autonomous, so the integrators read a and b only; c completes the tableau and
-// the tests check it and the order conditions against the method table's order.
+// the 3-stage Lobatto IIIC method of order 4 (docs/reference/conventions.md §2; Hairer & Wanner II,
+// IV.5). The flows are autonomous, so the integrators read a and b only; c completes the tableau
+// and the tests check it and the order conditions against the method table's order.
 #pragma once
 
 #include <array>

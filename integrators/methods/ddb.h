@@ -2,7 +2,8 @@
 //   (i)  find ξ_k with M_k = (dτ^{-1}_{hξ_k})* ∂l/∂ξ(ξ_k)      (discrete Legendre)
 //   (ii) M_{k+1} = Ad*_{τ(hξ_k) τ(hφ(ξ_k))} M_k                 (eq. (4.12))
 // with φ(ξ) = k♯(ad*_ξ ∂l/∂ξ(ξ)) (eq. (3.5)). Every M_k stays on the coadjoint
-// orbit of M_0 exactly; first order for α ≠ 0, second order for α = 0 (docs/conventions.md §2).
+// orbit of M_0 exactly; first order for α ≠ 0, second order for α = 0
+// (docs/reference/conventions.md §2).
 #pragma once
 
 #include <ddb/core/group_traits.h>
@@ -52,7 +53,7 @@ class Ddb : public LegendreMethod<R> {
     }
   }
 
-  /// Matrix groups (on any backend: docs/matrix-backend.md): DDB's step (i) and (ii) in
+  /// Matrix groups (on any backend: docs/design/matrix-backend.md): DDB's step (i) and (ii) in
   /// place, with the solver's certified frozen solution and the preallocated transport of the
   /// retraction (no allocation once the size is known).
   void advance(Dual& mu, double t, double h) override {

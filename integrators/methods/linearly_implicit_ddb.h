@@ -1,10 +1,10 @@
 // LinearlyImplicitDdb: a DDB step whose dissipative factor lowers the energy for every step
-// size (docs/steady-states.md, "A dissipative factor that lowers the energy at any h").
+// size (docs/guide/steady-states.md, "A dissipative factor that lowers the energy at any h").
 // DDB's step is a conservative factor, τ(hξ) from the discrete Legendre equation, and an
 // explicit dissipative one, τ(hφ) with φ = k♯(ad*_ξ μ) (eq. (4.12)); the explicit factor is
 // stable only for h|α| below a bound set by the largest curvature of H on the orbit, beyond
-// which the energy rises (docs/design.md, "Large N: the step's stability bound"). Here, with
-// k♯ = α·I and f = σH (σ = sign α: the flow lowers f):
+// which the energy rises (docs/design/architecture.md, "Large N: the step's stability bound").
+// Here, with k♯ = α·I and f = σH (σ = sign α: the flow lowers f):
 //   (i)  μ̃ = the DDB step of the system without dissipation (the same Legendre solve);
 //   (ii) μ_{k+1} = Ad*_{cay(s v)} μ̃, v ≈ −(J + I/τ)⁻¹ ∇f at μ̃, τ = h|α|,
 // where ∇f and J are the gradient and Hessian of f(Ad*_{cay x} μ̃) at x = 0: one Newton step of

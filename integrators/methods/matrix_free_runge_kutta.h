@@ -1,7 +1,7 @@
 // An implicit Runge–Kutta method on a matrix group (SO(N), SU(N)), its stage equations
 //   K_i = f(μ + h Σ_j a_ij K_j),  i = 1..S,   f(μ) = P ad*_{ξ+φ}(Pμ) (LiePoissonSystem),
-// solved matrix-free (docs/conventions.md §2, "Runge–Kutta peers", and §4): first the fixed
-// point K ← f(μ + h A K) while it contracts, then Newton–Krylov, GMRES (MatrixFreeGmres) on
+// solved matrix-free (docs/reference/conventions.md §2, "Runge–Kutta peers", and §4): first the
+// fixed point K ← f(μ + h A K) while it contracts, then Newton–Krylov, GMRES (MatrixFreeGmres) on
 // the exact Jacobian–vector products (J δ)_i = δ_i − Df(Y_i)[h Σ_j a_ij δ_j], Df from
 // hessianTimes and the linearised brackets (LiePoissonSystem::vectorFieldDerivativeInto).
 // The S stages are the N × N blocks of one N × SN matrix, so GMRES's inner product

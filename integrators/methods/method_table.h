@@ -1,5 +1,5 @@
-// The integrators by their contract names (docs/file-formats.md): one table, kMethods,
-// holds each method's name, description, the groups it runs on, whether it keeps the
+// The integrators by their contract names (docs/reference/command-lines-and-files.md): one table,
+// kMethods, holds each method's name, description, the groups it runs on, whether it keeps the
 // Casimirs, its order and its recipe; makeMethod() builds any entry for any group, and
 // the apps' choices, --help, messages and the tests all read the same table. Adding an
 // integrator is one row here plus its header (and, for a new kind of method, one case
@@ -33,7 +33,7 @@ namespace ddb {
 /// static sizes), the matrix groups with N at run time (SON, SUN) on dense matrices, and the
 /// matrix groups on another backend's matrices (SUNOn<X>: MPI ranks, the test's entries-free
 /// backend), where only the methods whose whole step is written against MatrixBackend run
-/// (docs/matrix-backend.md, "What runs on any backend").
+/// (docs/design/matrix-backend.md, "What runs on any backend").
 enum GroupFamilies : unsigned {
   kFixedSizeGroups = 1u,
   kMatrixGroups = 2u,
@@ -70,7 +70,7 @@ struct MethodInfo {
   bool keeps_casimirs;
   bool needs_lagrangian;     ///< evaluates ∂l/∂ξ at a midpoint, so the system needs l
   bool needs_scalar_metric;  ///< needs k♯ = α·I (ScaledIdentityMetric)
-  /// Order in μ with α ≠ 0 (docs/conventions.md §2); 0 for the adaptive reference,
+  /// Order in μ with α ≠ 0 (docs/reference/conventions.md §2); 0 for the adaptive reference,
   /// whose error is set by its tolerance, not by h.
   int order;
   int order_without_dissipation;  ///< order with α = 0
@@ -81,7 +81,8 @@ struct MethodInfo {
 };
 
 // clang-format off
-/// Every method, in the order of the paper's comparison (docs/file-formats.md).
+/// Every method, in the order of the paper's comparison
+/// (docs/reference/command-lines-and-files.md).
 inline constexpr std::array<MethodInfo, 15> kMethods{{
   {"ddb-cay", "DDB step with the Cayley map (order 1, order 2 at alpha = 0)",
    kFixedSizeGroups | kMatrixGroups | kBackendMatrixGroups, true, false, false, 1, 2,

@@ -28,8 +28,8 @@ class OneStepMethod {
   /// The warm start: everything the next step depends on besides (μ, t, h), e.g. the
   /// Legendre solver's predictor history. A method loaded with what another instance saved
   /// takes, from the same μ, t and h, the same steps to the bit (a resumed run continues the
-  /// uninterrupted one exactly: docs/file-formats.md, "Checkpoints"). Methods without one
-  /// write nothing.
+  /// uninterrupted one exactly: docs/reference/command-lines-and-files.md, "Checkpoints"). Methods
+  /// without one write nothing.
   virtual void saveWarmStart(BinaryRecordWriter&) const {}
   /// Restores what saveWarmStart wrote, for a run that continues from `state` (a warm start
   /// that holds matrices reads them in its shape and, distributed, layout); throws
@@ -48,7 +48,7 @@ class OneStepMethod {
   /// The iterations the last step's solves took: fixed-point sweeps plus Newton steps, summed
   /// over every equation the step solved (a composition's substeps, the dissipative factor of
   /// a linearly implicit step). Inner linear iterations (GMRES, CG) are not counted. What the
-  /// apps report as iterations per step (docs/file-formats.md, "fluid-relax").
+  /// apps report as iterations per step (docs/reference/command-lines-and-files.md, "fluid-relax").
   virtual long lastStepIterations() const { return 0; }
 
  protected:

@@ -53,9 +53,9 @@ class ExplicitRungeKutta : public OneStepMethod<G> {
 
  private:
   // The stage loops are unrolled (the tableau stays data): the slopes of a small system then
-  // stay in registers between vector-field evaluations (docs/design.md, "Explicit steps"). The
-  // operations and their order are those of the plain loops (the same roundings without
-  // floating-point contraction).
+  // stay in registers between vector-field evaluations (docs/design/architecture.md, "Explicit
+  // steps"). The operations and their order are those of the plain loops (the same roundings
+  // without floating-point contraction).
   template <class Field>
   EIGEN_ALWAYS_INLINE void runStages(Dual& mu, double h, std::array<Dual, S>& k, Dual& stage,
                                      Dual& sum, const Field& field) {
@@ -75,7 +75,7 @@ class ExplicitRungeKutta : public OneStepMethod<G> {
   }
   // The stages' arithmetic: Eigen's expressions on a small group's vectors, the matrix
   // backend's operations on a matrix group's states (the same entry-wise formulas, so the
-  // same bits on dense matrices: docs/matrix-backend.md).
+  // same bits on dense matrices: docs/design/matrix-backend.md).
   EIGEN_ALWAYS_INLINE static void copy(const Dual& x, Dual& out) {
     if constexpr (isDynamicGroup<G>) {
       MatrixBackend<Dual>::copy(x, out);

@@ -1,5 +1,5 @@
 // Symmetric second-order DDB variants (paper, remark after the retraction formulas;
-// docs/conventions.md §2).
+// docs/reference/conventions.md §2).
 //
 // SymmetricDdb, the one-step symmetric DDB: solve
 //   (dτ^{-1}_{hξ})* ∂l/∂ξ(ξ) = Ad*_{τ(hφ(ξ)/2)} μ_k,
@@ -13,8 +13,8 @@
 // (trapezoidal), and M_k = (dτ^{-1}_{hξ_k})* ∂l(ξ_k) is the output. Measured first
 // order in M: the Legendre equation pairs M_k (time t_k) with ξ_k (t_k + h/2) and
 // ignores the dissipation over that half step. ReadOut::kHalfForce is the fix of
-// docs/conventions.md §2: start from (dτ^{-1}_{hξ₀})* ∂l(ξ₀) = Ad*_{τ(hφ(ξ₀)/2)} μ₀ and read out
-// μ_k = Ad*_{τ(-hφ(ξ_k)/2)} M_k; it is second order and still exactly on the orbit.
+// docs/reference/conventions.md §2: start from (dτ^{-1}_{hξ₀})* ∂l(ξ₀) = Ad*_{τ(hφ(ξ₀)/2)} μ₀ and
+// read out μ_k = Ad*_{τ(-hφ(ξ_k)/2)} M_k; it is second order and still exactly on the orbit.
 #pragma once
 
 #include <ddb/core/detail/jet_jacobian.h>

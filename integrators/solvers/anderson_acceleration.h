@@ -1,11 +1,11 @@
 // AndersonAcceleration: the accelerated fixed point of the matrix-free Legendre solver for
 // targets that move with the unknown (the symmetric DDB's half-force target).
 // A fixed point p = G(p) whose map has a few eigenvalues near 1 among many small ones
-// converges at the rate of the largest: measured on the fluid at N = 256 (docs/design.md,
-// "The symmetric DDB's fixed point"), the first sweeps remove the small scales and then the
-// update shrinks by 0.89 per sweep for twenty sweeps. Anderson mixing (type II, depth m;
-// Walker and Ni, SIAM J. Numer. Anal. 49, 2011) takes the next iterate as the image of
-// the combination of the last m + 1 iterates whose residuals f = G(p) − p combine to the
+// converges at the rate of the largest: measured on the fluid at N = 256
+// (docs/design/architecture.md, "The symmetric DDB's fixed point"), the first sweeps remove the
+// small scales and then the update shrinks by 0.89 per sweep for twenty sweeps. Anderson mixing
+// (type II, depth m; Walker and Ni, SIAM J. Numer. Anal. 49, 2011) takes the next iterate as the
+// image of the combination of the last m + 1 iterates whose residuals f = G(p) − p combine to the
 // smallest one:
 //   γ = argmin ‖f_k − Σ_j γ_j Δf_j‖,  p_{k+1} = G(p_k) − Σ_j γ_j ΔG_j,
 // with Δf_j, ΔG_j the differences of consecutive residuals and images. On a linear map
@@ -14,7 +14,7 @@
 // The fit is on the real inner product Re tr(XᴴY) of the algebra (γ real, the backend's
 // innerProduct), by the normal equations of m ≤ 4 unknowns with dependent differences left
 // out; every operation on the iterates goes through the matrix backend
-// (docs/matrix-backend.md), and no step allocates once the buffers are sized.
+// (docs/design/matrix-backend.md), and no step allocates once the buffers are sized.
 #pragma once
 
 #include <ddb/core/matrix_backend.h>

@@ -9,7 +9,7 @@
 // extrapolation of degree m − 1 is the special case β_j = (−1)^{j+1} C(m, j); with
 // dissipation the fast modes decay geometrically, which no polynomial follows and a fitted
 // recurrence does. The errors of both and the choice kOrder = 8 are measured in
-// docs/design.md ("The initial guess: linear prediction").
+// docs/design/architecture.md ("The initial guess: linear prediction").
 // The fit is a least-squares problem of m unknowns on a sketch, a fixed sample of entries,
 // so it costs O(sample·m²), not O(N²) per coefficient; the prediction reads m corrections.
 // Written against the matrix backend (core/matrix_backend.h): the sample is of entries of the

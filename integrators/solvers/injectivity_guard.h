@@ -1,7 +1,7 @@
-// The injectivity limit of the exponential retraction (docs/reliability.md §2). exp is
+// The injectivity limit of the exponential retraction (docs/reference/guarantees.md §2). exp is
 // injective while the spectral radius of ad_x (the group's adRadius: |x| on SO(3), |ω| on
-// SE(3)) is below π, and dexp⁻¹_x has its poles at 2π (docs/conventions.md §1): a DDB step
-// with adRadius(hξ) ≥ π has Legendre solutions on other branches, and the solver converges
+// SE(3)) is below π, and dexp⁻¹_x has its poles at 2π (docs/reference/conventions.md §1): a DDB
+// step with adRadius(hξ) ≥ π has Legendre solutions on other branches, and the solver converges
 // to one of them without a word (`--scenario B --h 5` climbed to the maximum-energy state).
 // Cayley has no such limit (cay maps so(3) one-to-one onto SO(3) minus the half-turns). On
 // the matrix groups the matrix-free solver checks the same limit on ξ's eigenbasis

@@ -3,14 +3,14 @@
 //   (dτ^{-1}_{hξ})* p = target(ξ, p),  p = ∂l/∂ξ(ξ)  (Lagrangian form, unknown ξ)
 //                                      ξ = ∂H/∂μ(p)  (Hamiltonian form, unknown p)
 // DDB's target is the momentum M_k; the symmetric variants' targets depend on the unknown.
-// Two stages (docs/conventions.md §4), as the matrix-free solver's (matrix_legendre.h):
+// Two stages (docs/reference/conventions.md §4), as the matrix-free solver's (matrix_legendre.h):
 //   predictor: p = near + c, the correction c = p − near extrapolated from the last solves at
 //     the same h (quadratically once there are three), then fixed-point sweeps
 //     p ← p − r(p), one residual evaluation each. Their rate ‖I − ∂r/∂p‖ is O(h) (0.02–0.03
 //     on Scenario A at h = 0.1): while it is at most kFastContraction they go on to the
 //     tolerance, cheaper than the one TinySolver iteration that would replace the last few
-//     (docs/design.md); slower, they stop within √tolerance, from where one Newton step
-//     squares the residual to the tolerance;
+//     (docs/design/architecture.md); slower, they stop within √tolerance, from where one Newton
+//     step squares the residual to the tolerance;
 //   corrector, when the sweeps have not converged: ceres::TinySolver on LegendreEquation's
 //     analytic Jacobian, to the relative tolerance: first with the Jacobian of the predicted
 //     guess kept (runChordIterations: one Jacobian per solve), then, if that has not
@@ -147,14 +147,14 @@ class DiscreteLegendreSolver {
   //   - with a rate above kFastContraction, once the residual left, about rate · ‖update‖, is
   //     within √tolerance, where one chord Newton iteration squares it to the tolerance;
   //   - after max_sweeps_: SolverOptions::max_sweeps, or 0 when ∂H/∂μ is itself a solve
-  //     (a sweep then costs about as much as a Newton step; docs/design.md, "Small Legendre
-  //     solves", has both measurements).
+  //     (a sweep then costs about as much as a Newton step; docs/design/architecture.md, "Small
+  //     Legendre solves", has both measurements).
   // The rate is the ratio of the last two updates; on the first sweep, the last solve's at
   // the same h (it belongs to the map near the solution and moves slowly with the state);
   // 1, i.e. slow, until measured.
   template <class Equation>
   bool sweep(const Equation& equation, double scale, Dual& p) {
-    // Squared norms and rates: no square root waits in the loop (docs/design.md). The
+    // Squared norms and rates: no square root waits in the loop (docs/design/architecture.md). The
     // decisions are those on norms, up to ties (Eigen's norm() is √squaredNorm() too).
     const double tolerance = square(options_.relative_tolerance * scale);
     const double newton_ready = options_.relative_tolerance * square(scale);

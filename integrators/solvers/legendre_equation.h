@@ -2,7 +2,8 @@
 // fixed-size groups, as a function of its unknown u: ξ in the Lagrangian form (p = ∂l/∂ξ(ξ)),
 // p in the Hamiltonian form (ξ = ∂H/∂μ(p)):
 //   r(u) = (dτ^{-1}_{hξ})* p − target(ξ, p),
-// with its Jacobian assembled from its parts (docs/conventions.md §4), no Jet in the path:
+// with its Jacobian assembled from its parts (docs/reference/conventions.md §4), no Jet in the
+// path:
 //   ∂r/∂u = (dτ^{-1}_{hξ})* ∂p/∂u + h ∂_x[(dτ^{-1}_x)* p]_{x = hξ} ∂ξ/∂u − ∂target/∂u,
 //   ∂p/∂u = D²l(ξ), ∂ξ/∂u = I (Lagrangian form);  ∂p/∂u = I, ∂ξ/∂u = D²H(p) (Hamiltonian form).
 // The Hessians come from the system's hessianTimes (analytic where the system writes them,

@@ -9,7 +9,8 @@ struct LegendreStats {
   int newton = 0;       // Newton steps
   int krylov = 0;       // Jacobian–vector products inside GMRES (matrix-free solver only)
   int refinements = 0;  // frozen sweeps for an exact one-product update (matrix-free only)
-  double residual = 0;  // final measured ‖r‖ (small solver's sweeps: docs/conventions.md §4)
+  // final measured ‖r‖ (small solver's sweeps: docs/reference/conventions.md §4)
+  double residual = 0;
 };
 
 }  // namespace ddb

@@ -1,5 +1,5 @@
 // Restarted GMRES for a real-linear operator on N×N (real or complex) matrices, given only
-// as a function v ↦ A v (docs/conventions.md §4: no operator on the N²-dimensional space
+// as a function v ↦ A v (docs/reference/conventions.md §4: no operator on the N²-dimensional space
 // is ever formed). The inner product is the real one, Re tr(XᴴY), so operators that are
 // only real-linear (as on u(N)) are handled. The Krylov basis and the small Hessenberg
 // system are allocated by resize() once; solve() does not allocate. Written against the

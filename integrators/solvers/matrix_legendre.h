@@ -1,5 +1,5 @@
 // The discrete Legendre equation of a DDB step on a matrix group (SO(N), SU(N)), Hamiltonian
-// form, solved matrix-free (docs/conventions.md §2 and §4):
+// form, solved matrix-free (docs/reference/conventions.md §2 and §4):
 //   target = (dτ⁻¹_{hξ(p)})* p,  ξ = ∂H/∂μ(p),
 // for p in u(N) (so(N)), not projected to su(N). The Cayley map, with a = hξ/2:
 //   target = (I + a) p (I − a), by the fixed point p ← target − [a, p] + a p a (two products)
@@ -13,7 +13,7 @@
 // iteration allocates.
 // The solver is written against the matrix backend (core/matrix_backend.h): the same
 // algorithm runs on a LiePoissonSystem of dense matrices and of any backend's, over MPI ranks
-// on the distributed fluid (distributed/distributed_zeitlin_fluid.h; docs/distributed.md,
+// on the distributed fluid (distributed/distributed_zeitlin_fluid.h; docs/design/distributed.md,
 // "One step formula"). The exponential is dense only.
 //
 // A solver from outside (setExternalSolver) may solve DDB's Cayley equation instead, through
@@ -239,7 +239,7 @@ class MatrixLegendreSolver {
       // A contraction of rate ρ leaves the iterate p an error of at most update/(1 − ρ)
       // and the next one ρ/(1 − ρ)·update; ρ is measured from the last two updates (on a
       // first sweep it is the last solve's: the rate belongs to the map near the solution
-      // and moves with the state, docs/design.md).
+      // and moves with the state, docs/design/architecture.md).
       if constexpr (kFixed) {
         const double rate = std::isfinite(previous) ? update / previous : rate_;
         // DDB's update uses a = a(p) of this iterate p, so p itself must be within the
@@ -266,8 +266,8 @@ class MatrixLegendreSolver {
         // Other targets move with p. The accepted iterate is p itself, whose ξ, a, target
         // and (exp) eigenbasis are at hand for the step (target()), and its residual is the
         // update, the measure Newton accepts on. The sweeps are mixed (Anderson), which
-        // removes the slowly contracting directions a plain sweep leaves (docs/design.md,
-        // "The symmetric DDB's fixed point").
+        // removes the slowly contracting directions a plain sweep leaves
+        // (docs/design/architecture.md, "The symmetric DDB's fixed point").
         stats_.residual = update;
         if (update <= tolerance) {
           converged = true;

@@ -1,9 +1,10 @@
 // OrbitNewton: Newton's method for a steady state on the coadjoint orbit of μ₀
-// (docs/steady-states.md, "Newton on the orbit"). With a positive metric the double-bracket
+// (docs/guide/steady-states.md, "Newton on the orbit"). With a positive metric the double-bracket
 // flow stops exactly at the critical points of H on the orbit (dH/dt = −k(ad*_ξ μ, ad*_ξ μ),
 // Proposition 3.3), so a search for them need not follow the flow's time: its fast damped
-// modes bound every explicit step and its slow ones make the tail long (docs/steady-states.md,
-// "Measured"). The orbit is parametrised around μ by the Cayley conjugation
+// modes bound every explicit step and its slow ones make the tail long
+// (docs/guide/steady-states.md, "Measured"). The orbit is parametrised around μ by the Cayley
+// conjugation
 //   μ(x) = Ad*_{cay x} μ,  x in the algebra,  d/dx H(μ(x))|₀ = −ad*_ξ μ,  ξ = ∂H/∂μ,
 // and the search minimises f = σH, σ = +1 where the flow lowers H (α > 0), −1 where it raises
 // it. Each iteration:
@@ -20,7 +21,7 @@
 // Every accepted state is a conjugate of the last (on the orbit: the Casimirs are kept to
 // rounding, as by the DDB steps) with f no higher beyond rounding: the energy moves the way
 // the flow moves it, at every step. The steady state reached is a critical point near the
-// path, not the flow's limit from μ₀ (docs/steady-states.md compares them).
+// path, not the flow's limit from μ₀ (docs/guide/steady-states.md compares them).
 #pragma once
 
 #include <ddb/core/binary_record.h>
@@ -97,7 +98,7 @@ class OrbitNewton {
     return true;
   }
 
-  /// The dissipative factor of LinearlyImplicitDdb (docs/steady-states.md, "A dissipative
+  /// The dissipative factor of LinearlyImplicitDdb (docs/guide/steady-states.md, "A dissipative
   /// factor that lowers the energy at any h"): from mu, one Newton step of the minimizing
   /// movement min_x f(μ(x)) + ‖x‖²/(2τ), τ = h|α|, i.e. v ≈ −(J + I/τ)⁻¹∇f by preconditioned
   /// CG (linearly implicit Euler on the gradient flow ẋ = −∇f, whose explicit step −τ∇f is

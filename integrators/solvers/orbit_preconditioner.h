@@ -1,6 +1,6 @@
 // OrbitPreconditioner: an approximate inverse of the Hessian of H on the coadjoint orbit of a
 // matrix group (SO(N), SU(N)), for the conjugate gradients of OrbitNewton
-// (docs/steady-states.md, "Newton on the orbit").
+// (docs/guide/steady-states.md, "Newton on the orbit").
 // At a steady state μ and ξ = ∂H/∂μ commute. In μ's eigenbasis, μ = V diag(iθ) Vᴴ and
 // π_a = Im (Vᴴ ξ V)_aa, the Hessian's part v ↦ ad*_ξ ad*_v μ multiplies entry (a, b) of
 // v̂ = Vᴴ v V by (θ_a − θ_b)(π_a − π_b); the rest, the Hamiltonian's own second derivative

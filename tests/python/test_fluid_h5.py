@@ -1,5 +1,6 @@
-"""fluid-relax --h5 (docs/file-formats.md, "fluid.hdf5") read back with h5py, as quflow
-reads it, and checked against the CSV files the app writes through its other code path:
+"""fluid-relax --h5 (docs/reference/command-lines-and-files.md, "fluid.hdf5") read back with
+h5py, as quflow reads it, and checked against the CSV files the app writes through its other
+code path:
 W_final.csv (mat), omega_initial.csv and omega_final.csv (state, quflow's index
 l^2 + l + m), history.csv (time and the diagnostics, one frame per row).
 
@@ -122,7 +123,7 @@ def test_a_killed_and_resumed_run_has_one_frame_per_row_and_the_uninterrupted_fr
         tmp_path):
     """SIGKILL right after the first checkpoint, then --resume: fluid.hdf5 is cut back to the
     checkpoint's frames and continued, so that it holds exactly the uninterrupted run's
-    frames (docs/file-formats.md, "Checkpoints")."""
+    frames (docs/reference/command-lines-and-files.md, "Checkpoints")."""
     import signal
     import time
     args = ["--n", "12", "--seed", "4", "--every", "7", "--checkpoint-every", "50",
