@@ -1,4 +1,4 @@
-// The parts of the `ddb` Python module (README, "Python"; docs/guide/python.md), each bound by
+// The parts of the `ddb` Python module (docs/guide/python.md), each bound by
 // its own file and called in this order by module.cc.
 #pragma once
 

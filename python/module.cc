@@ -1,5 +1,5 @@
 // The `ddb` Python module: the library's systems, the method table and integrate() on
-// NumPy arrays (README, "Python"; docs/guide/python.md).
+// NumPy arrays (docs/guide/python.md).
 #include <pybind11/pybind11.h>
 
 #include "bindings.h"

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The README's "Steady states" figure from fluid-relax runs of one problem.
+"""The figure of docs/guide/steady-states.md, from fluid-relax runs of one problem.
 
 usage: plot_steady_states.py FIXED ADAPTIVE NEWTON [IMPLICIT] OUT.png
 

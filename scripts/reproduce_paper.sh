@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Reproduces every figure and the runtime table of the paper's Section 5 into
-# results/scenario-{A,B,C}/ and copies the figures the README shows to docs/figures/.
+# results/scenario-{A,B,C}/ and copies the figures docs/results/paper-reproduction.md shows to
+# docs/figures/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh

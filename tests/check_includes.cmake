@@ -1,6 +1,6 @@
 # Fails if any file includes one of the library's headers by a path that resolves only
-# inside this tree (README, "Layout"). The library folders sit at the top of the tree but
-# are installed under include/ddb/, so the one spelling that works in the tree, through
+# inside this tree (docs/design/architecture.md, "Layout"). The library folders sit at the top of
+# the tree but are installed under include/ddb/, so the one spelling that works in the tree, through
 # add_subdirectory and after find_package alike is <ddb/...>; <core/x.h>, "groups/x.h" or
 # include/ddb/... would resolve here only if the source root were on the include path.
 # Every <ddb/...> path must also name a header that exists, so a stale path fails too.

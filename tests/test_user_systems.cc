@@ -1,8 +1,8 @@
-// Systems a user writes on the matrix groups by subclassing Hamiltonian<G> (README,
-// "Defining a system"; docs/reference/conventions.md §2, "Systems on matrix groups"): the system
-// hands the Hamiltonian an element of the algebra and projects the ξ it returns, so how a user
-// writes H off the algebra does not change a trajectory, and the default hessianTimes
-// serves Newton–Krylov.
+// Systems a user writes on the matrix groups by subclassing Hamiltonian<G>
+// (docs/guide/defining-a-system.md; docs/reference/conventions.md §2, "Systems on matrix
+// groups"): the system hands the Hamiltonian an element of the algebra and projects the ξ it
+// returns, so how a user writes H off the algebra does not change a trajectory, and the default
+// hessianTimes serves Newton–Krylov.
 #include <ddb/integrators/methods/ddb.h>
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
@@ -214,9 +214,9 @@ TEST(UserSystems, NewtonKrylovConvergesWithTheDefaultHessianTimes) {
   EXPECT_LT((z - y).norm(), 1e-12 * W0.norm());
 }
 
-// README's example: a quadratic H on SO(4) with weights that are not Manakov's, damped by a
-// weighted metric. RK4 agrees with RK4 written here on Ṁ = [M, Ω + α w ∘ [M, Ω]], Ω = c ∘ M;
-// DDB keeps the spectrum and lowers the energy at every step.
+// docs/guide/defining-a-system.md's example: a quadratic H on SO(4) with weights that are not
+// Manakov's, damped by a weighted metric. RK4 agrees with RK4 written here on
+// Ṁ = [M, Ω + α w ∘ [M, Ω]], Ω = c ∘ M; DDB keeps the spectrum and lowers the energy at every step.
 class WeightedBody final : public Hamiltonian<SON> {
  public:
   explicit WeightedBody(Eigen::MatrixXd c) : c_(std::move(c)) {}

@@ -1,0 +1,95 @@
+#!/usr/bin/env python3
+"""Fails if the README's feature table (systems × methods) says other than the method table.
+
+The rows of kMethods (integrators/methods/method_table.h) give each method's group families,
+whether it needs a Lagrangian or the metric α·I, its orders and whether it keeps the Casimirs;
+the systems below give their family, whether they have a Lagrangian and whether their metric is
+α·I. From these this script makes the table the README must hold between its two markers.
+
+    python3 tests/check_feature_table.py <source tree>           check README.md
+    python3 tests/check_feature_table.py --print <source tree>   print the table
+"""
+import pathlib
+import re
+import sys
+
+BEGIN = "<!-- feature table: tests/check_feature_table.py -->"
+END = "<!-- end of the feature table -->"
+
+FAMILY = {"kFixedSizeGroups": 1, "kMatrixGroups": 2, "kBackendMatrixGroups": 4}
+
+# (column, group family, has a Lagrangian, metric α·I): systems/*.h and
+# systems/zeitlin_fluid_on_backend.h; the heavy top has no regular Lagrangian, the heavy top
+# and the Kirchhoff body have k♯ = α diag(k).
+SYSTEMS = [
+    ("rigid body", 1, True, True),
+    ("heavy top", 1, False, False),
+    ("Kirchhoff", 1, True, False),
+    ("Manakov, SO(N)", 2, False, True),
+    ("fluid, SU(N)", 2, False, True),
+    ("fluid on MPI ranks", 4, False, True),
+]
+
+ROW = re.compile(
+    r'\{"([a-z0-9-]+)",\s*"(?:[^"\\]|\\.)*",\s*([A-Za-z| \n]+?),\s*(true|false),\s*'
+    r"(true|false),\s*(true|false),\s*(\d+),\s*(\d+),"
+)
+
+
+def methods(root):
+    text = (root / "integrators/methods/method_table.h").read_text(encoding="utf-8")
+    body = text[text.index("kMethods{{"):]
+    out = []
+    for m in ROW.finditer(body):
+        name, flags, casimirs, lagrangian, scalar, order, order0 = m.groups()
+        families = sum(FAMILY[f.strip()] for f in flags.split("|"))
+        out.append((name, families, casimirs == "true", lagrangian == "true",
+                    scalar == "true", int(order), int(order0)))
+    return out
+
+
+def table(root):
+    head = ["method"] + [s[0] for s in SYSTEMS] + ["order", "keeps Casimirs"]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for name, families, casimirs, lagrangian, scalar, order, order0 in methods(root):
+        cells = [f"`{name}`"]
+        for _, family, has_lagrangian, has_scalar in SYSTEMS:
+            runs = (families & family) and (has_lagrangian or not lagrangian) and (
+                has_scalar or not scalar)
+            cells.append("✓" if runs else "—")
+        if order == 0:
+            cells.append("adaptive")
+        elif order == order0:
+            cells.append(str(order))
+        else:
+            cells.append(f"{order} ({order0} at α = 0)")
+        cells.append("✓" if casimirs else "—")
+        lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
+def main(argv):
+    args = [a for a in argv[1:] if a != "--print"]
+    if len(args) != 1:
+        print(__doc__)
+        return 2
+    root = pathlib.Path(args[0]).resolve()
+    expected = table(root)
+    if "--print" in argv:
+        print(expected)
+        return 0
+    readme = (root / "README.md").read_text(encoding="utf-8")
+    if BEGIN not in readme or END not in readme:
+        print(f"check_feature_table: README.md has no '{BEGIN}' ... '{END}'")
+        return 1
+    found = readme[readme.index(BEGIN) + len(BEGIN):readme.index(END)].strip()
+    if found != expected:
+        print("check_feature_table: README.md's feature table differs from the method table; "
+              "it should read:\n" + expected)
+        return 1
+    print(f"check_feature_table: {len(methods(root))} methods × {len(SYSTEMS)} systems agree")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
