@@ -1,7 +1,7 @@
 // The DDB Cayley step on distributed matrices (Ddb<Cayley<DistributedSUN>> of the distributed
 // fluid, distributed/distributed_zeitlin_fluid.h) timed against one
 // distributed complex N×N product (pzgemm_) in the same run, on the ranks it is started
-// with (docs/design/distributed.md, "Measured"): products per step = step time / product time;
+// with (docs/results/distributed.md, "Measured"): products per step = step time / product time;
 // strong scaling = the step time on 1 rank over that on P. On one rank it also times the
 // dense step (Ddb<Cayley<SUN>>), the serial engine, as the peer. State: the seeded random
 // vorticity (seed 1, ‖W‖_F = √N), h = min(0.02 ħ/‖P₀‖₂, 4ħ/(|α| ‖W₀‖₂²)) (fluid-relax's

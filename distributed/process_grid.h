@@ -2,7 +2,7 @@
 // row-major, rank r at (r / cols, r % cols) (docs/design/distributed.md, "Layouts"). By default the
 // most square grid with rows ≥ cols (cols the largest divisor of P not above √P, so P = 2
 // and 3 give one column), which measured faster than the wide grid: the dissipative
-// factor's LU solves send fewer bytes (docs/design/distributed.md, "The grid's shape"). A caller
+// factor's LU solves send fewer bytes (docs/results/distributed.md, "The grid's shape"). A caller
 // may ask for any rows dividing P.
 // The grid owns its BLACS context and releases it when destroyed; MPI itself is
 // initialised and finalised by the program.

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The distributed DDB step's time per step against the number of ranks: measured on this
-machine (P = 1, 2) and modelled for large P (docs/design/distributed.md, "A model for large P").
+machine (P = 1, 2) and modelled for large P (docs/results/distributed.md, "A model for large P").
 
 usage: distributed_scaling_model.py MEASURED.jsonl [OUT.png]
 
@@ -30,7 +30,7 @@ import json
 import math
 import sys
 
-# Assumptions (docs/design/distributed.md, "A model for large P"): MPI latency between nodes, and a
+# Assumptions (docs/results/distributed.md, "A model for large P"): MPI latency between nodes, and a
 # cluster node's injection bandwidth (200 Gb/s InfiniBand HDR) shared by 64 ranks.
 LATENCY_S = 2e-6
 CLUSTER_RANK_BANDWIDTH = 25e9 / 64

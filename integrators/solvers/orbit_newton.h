@@ -3,7 +3,7 @@
 // flow stops exactly at the critical points of H on the orbit (dH/dt = −k(ad*_ξ μ, ad*_ξ μ),
 // Proposition 3.3), so a search for them need not follow the flow's time: its fast damped
 // modes bound every explicit step and its slow ones make the tail long
-// (docs/guide/steady-states.md, "Measured"). The orbit is parametrised around μ by the Cayley
+// (docs/results/steady-states.md, "Measured"). The orbit is parametrised around μ by the Cayley
 // conjugation
 //   μ(x) = Ad*_{cay x} μ,  x in the algebra,  d/dx H(μ(x))|₀ = −ad*_ξ μ,  ξ = ∂H/∂μ,
 // and the search minimises f = σH, σ = +1 where the flow lowers H (α > 0), −1 where it raises
