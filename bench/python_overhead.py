@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""What the Python module costs over C++ (docs/guide/python.md, "Speed"); not part of ctest.
+"""What the Python module costs over C++ (docs/results/python-overhead.md, "Speed"); not part
+of ctest.
 
 Usage: OPENBLAS_NUM_THREADS=1 PYTHONPATH=BUILD/python python3 bench/python_overhead.py BUILD
 

@@ -1,4 +1,4 @@
-// The C++ peer of bench/python_overhead.py (docs/guide/python.md, "Speed"): the run that
+// The C++ peer of bench/python_overhead.py (docs/results/python-overhead.md, "Speed"): the run that
 // ddb.integrate(system, method, mu0, h, steps) makes, written in C++ as a user would
 // (makeMethod, integrate, every state kept in a buffer sized beforehand), timed over
 // `repeats` runs. Prints one JSON object: {"system", "method", "steps", "seconds": [...]}.
