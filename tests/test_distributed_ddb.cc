@@ -85,8 +85,11 @@ TEST_P(DistributedDdbTest, AgreesWithTheDenseStepSweepForSweep) {
     dense_total += dense_work[k];
     distributed_total += work;
   }
-  // Over the run the cost is the dense step's to a few percent.
-  EXPECT_LE(std::abs(distributed_total - dense_total), 0.03 * dense_total)
+  // Over the run the cost is the dense step's: one sweep or refinement more on every step
+  // would add over a quarter (a step costs 2 to 5). Which steps sit at the stopping test's
+  // edge, and flip either way, depends on the rounding of the BLAS kernel the CPU gets (on
+  // N = 16, alpha = 0, a few percent over the run), so the bound is a tenth.
+  EXPECT_LE(std::abs(distributed_total - dense_total), 0.1 * dense_total)
       << distributed_total << " against " << dense_total;
   const Eigen::MatrixXcd W_distributed = Wd.gather();
   if (grid_.rank() == 0) {

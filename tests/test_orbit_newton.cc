@@ -135,7 +135,10 @@ TEST(OrbitNewton, FluidReachesASteadyStateOnTheOrbitWithTheEnergyFalling) {
   const auto& hamiltonian = dynamic_cast<const ZeitlinHamiltonian&>(system->hamiltonian());
   const Eigen::MatrixXcd W0 = randomVorticity(kN, 1);
   Record<SUN> record{-1.0, {}, {}};
-  constexpr double kTolerance = 1e-12;
+  // The guide's tolerance for the fluid (docs/guide/steady-states.md). Below about 1e-11 the
+  // search at N = 8 may stall at a point that depends on the BLAS kernel's rounding
+  // (docs/results/steady-states.md, "The Newton search's floor at small N").
+  constexpr double kTolerance = 1e-10;
   const RelaxResult<SUN> run =
       relaxByNewton(*system, W0, newtonUntil(kTolerance), std::ref(record));
   ASSERT_TRUE(run.steady()) << relaxStopName(run.stop) << " " << run.failure;
