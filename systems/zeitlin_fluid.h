@@ -49,7 +49,7 @@ class ZeitlinHamiltonian final : public Hamiltonian<SUN> {
 
   double value(const Matrix& W) const override {
     // The stream matrix in a per-thread workspace: the line searches of OrbitNewton evaluate
-    // H inside a step, and a step does not allocate (tests/test_allocations.cc).
+    // H inside a step, and a step does not allocate (tests/unit/test_allocations.cc).
     thread_local Matrix P;
     P.resize(W.rows(), W.cols());
     laplacian_.solve(W, P);

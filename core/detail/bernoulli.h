@@ -1,7 +1,7 @@
 // Bernoulli numbers divided by factorials, B_j / j!, with B_1 = -1/2: the
 // coefficients of dexp^{-1}_x = Σ_j B_j/j! ad_x^j (paper, eq. (4.14);
 // Iserles, Munthe-Kaas, Nørsett and Zanna 2000). B_{2m} and j! come from Boost.Math,
-// divided in long double and rounded once to double (tests/test_bernoulli.cc checks
+// divided in long double and rounded once to double (tests/unit/test_bernoulli.cc checks
 // every entry against the zeta-function form in long double).
 #pragma once
 

@@ -21,7 +21,7 @@
 // between Solves (function_tolerance = ∞ ends a Solve right after its step; final_cost is
 // the cost at the returned point). That is how Ceres 2.1's TinySolver behaves, and the only
 // version this was tested with; another would need the chord loop checked again
-// (tests/test_legendre_solver.cc), so it is refused here rather than trusted silently.
+// (tests/unit/test_legendre_solver.cc), so it is refused here rather than trusted silently.
 static_assert(CERES_VERSION_MAJOR == 2 && CERES_VERSION_MINOR == 1,
               "ddb's chord iterations rely on Ceres 2.1's TinySolver (core/detail/tiny_solver.h)");
 

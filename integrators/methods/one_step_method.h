@@ -39,7 +39,7 @@ class OneStepMethod {
   virtual Dual step(const Dual& mu, double t, double h) = 0;
   /// μ ← μ(t + h) in place; integrate() calls this. A method that overrides it can step
   /// without allocating (an N×N state returned by value allocates): on matrix groups every
-  /// method of the table does (tests/test_allocations.cc checks each).
+  /// method of the table does (tests/unit/test_allocations.cc checks each).
   virtual void advance(Dual& mu, double t, double h) { mu = step(mu, t, h); }
 
   /// Whether the method solves equations in its steps (an implicit method: the DDB family,

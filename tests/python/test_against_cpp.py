@@ -1,7 +1,7 @@
 """Every system and method of the module gives the C++ run's numbers bit for bit.
 
 The reference is the ddb-compare app of the same build (its summary.json final states, written
-in the shortest form that reads back to the same double; tests/test_ddb_compare*.cc check them
+in the shortest form that reads back to the same double; tests/apps/test_ddb_compare*.cc check them
 equal to makeMethod runs), not code of the module.
 """
 import numpy as np

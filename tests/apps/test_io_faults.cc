@@ -1,11 +1,11 @@
-// The apps against real I/O faults: tests/io_fault_preload.cc, preloaded into the
+// The apps against real I/O faults: tests/support/io_fault_preload.cc, preloaded into the
 // unmodified binaries, makes one operation on one output file fail, as a full disk
 // (write or fsync: ENOSPC) or an output folder that turned unwritable (creating the
 // file or renaming it into place: EACCES) would. Each fault must give exit status 1 and
 // a message naming the file, leave no temporary file, and keep every file completed
 // before it whole: byte for byte what a run without the fault wrote. A journal (history.csv's
 // .partial) stays as far as it got, since a checkpoint may continue it
-// (tests/test_run_folder.cc resumes such folders). (A chmod of the
+// (tests/apps/test_run_folder.cc resumes such folders). (A chmod of the
 // folder mid-run would not do: tests may run as root, whom a mode of 0555 does not stop.)
 #include <gmock/gmock.h>
 

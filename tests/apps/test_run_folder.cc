@@ -312,7 +312,7 @@ TEST_F(RunFolder, AFolderHasOneWriterAndAKilledWriterLeavesNoLock) {
 
 TEST_F(RunFolder, ARunStoppedByAFullDiskResumesToTheUninterruptedRun) {
   // The disk fills while history.csv, fluid.hdf5's flush or a checkpoint is written
-  // (tests/io_fault_preload.cc after some writes succeeded): exit status 1 naming the file,
+  // (tests/support/io_fault_preload.cc after some writes succeeded): exit status 1 naming the file,
   // and the folder as its last good checkpoint left it, which resumes once there is space.
   // How many matching calls succeed first: about half the run's (a row is a write, a
   // checkpoint a write and a flush, each checkpoint an fsync of both files).

@@ -6,14 +6,14 @@ whether it needs a Lagrangian or the metric α·I, its orders and whether it kee
 the systems below give their family, whether they have a Lagrangian and whether their metric is
 α·I. From these this script makes the table the README must hold between its two markers.
 
-    python3 tests/check_feature_table.py <source tree>           check README.md
-    python3 tests/check_feature_table.py --print <source tree>   print the table
+    python3 tests/checks/check_feature_table.py <source tree>           check README.md
+    python3 tests/checks/check_feature_table.py --print <source tree>   print the table
 """
 import pathlib
 import re
 import sys
 
-BEGIN = "<!-- feature table: tests/check_feature_table.py -->"
+BEGIN = "<!-- feature table: tests/checks/check_feature_table.py -->"
 END = "<!-- end of the feature table -->"
 
 FAMILY = {"kFixedSizeGroups": 1, "kMatrixGroups": 2, "kBackendMatrixGroups": 4}

@@ -4,7 +4,7 @@
 # add_subdirectory and after find_package alike is <ddb/...>; <core/x.h>, "groups/x.h" or
 # include/ddb/... would resolve here only if the source root were on the include path.
 # Every <ddb/...> path must also name a header that exists, so a stale path fails too.
-#   cmake -DSOURCE_DIR=<tree> -P tests/check_includes.cmake
+#   cmake -DSOURCE_DIR=<tree> -P tests/checks/check_includes.cmake
 cmake_policy(SET CMP0009 NEW)  # globs do not follow links (the build tree has some)
 if(NOT IS_DIRECTORY "${SOURCE_DIR}")
   message(FATAL_ERROR "set SOURCE_DIR to the ddb source tree")

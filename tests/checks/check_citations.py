@@ -16,7 +16,7 @@ as comments wrap them (across comment leaders). A title matches when it is the c
 begins with it followed by ":", ".", "," or " (" (backticks ignored): "Run folders" names
 "Run folders: one writer, `--overwrite`".
 
-    python3 tests/check_citations.py <source tree>
+    python3 tests/checks/check_citations.py <source tree>
 """
 import pathlib
 import re

@@ -3,7 +3,7 @@
 # (core, groups, systems, integrators) nor of the apps names a backend's local array
 # (`.local()`, `entries(`), so that a backend whose memory is not this process's (a GPU,
 # MPI ranks) runs every formula unchanged.
-#   cmake -DSOURCE_DIR=<tree> -P tests/check_backend_seam.cmake
+#   cmake -DSOURCE_DIR=<tree> -P tests/checks/check_backend_seam.cmake
 cmake_policy(SET CMP0009 NEW)
 if(NOT IS_DIRECTORY "${SOURCE_DIR}")
   message(FATAL_ERROR "set SOURCE_DIR to the ddb source tree")
