@@ -98,8 +98,7 @@ void addOptions(CLI::App& cli, Options& o) {
                      "stop each method at the first state with r = |ad*_xi mu|/(|xi| |mu|) <= "
                      "TOL, 0 < TOL < 1 (docs/guide/steady-states.md); --t-end is then the cap",
                      "choose h by the energy (docs/guide/steady-states.md): the methods that keep "
-                     "the "
-                     "Casimirs, alpha != 0; --h is the first step, --t-end caps the time");
+                     "the Casimirs, alpha != 0; --h is the first step, --t-end caps the time");
   cli.add_option("--every", o.every, "write every K-th state and the last one to <method>.csv")
       ->capture_default_str()
       ->check(app::fitsIn<decltype(o.every)>());

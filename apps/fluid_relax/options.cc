@@ -40,13 +40,11 @@ void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n) {
                      "stop when r = ||[P,W]||_F/(||P||_F ||W||_F) <= TOL, 0 < TOL < 1 (--steps or "
                      "--t-end is then the cap; summary.json says which stopped the run)",
                      "choose h by the energy (docs/guide/steady-states.md): a DDB-family method "
-                     "with "
-                     "alpha != 0; --h is the first step, --steps caps accepted steps");
+                     "with alpha != 0; --h is the first step, --steps caps accepted steps");
   cli.add_flag("--newton", o.newton,
                "instead of time steps, Newton's method on the orbit for a steady state "
                "(docs/guide/steady-states.md): needs --until-steady, --steps caps its iterations; "
-               "no "
-               "--method, --h, --t-end or --adaptive");
+               "no --method, --h, --t-end or --adaptive");
   app::addSeedOption(cli, o.seed, "seed of the initial vorticity");
   cli.add_option("--init", o.init, "initial vorticity (listed below)")->capture_default_str();
   cli.add_option("--init-file", o.init_file,
@@ -87,8 +85,8 @@ void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n) {
       "\nFiles in --out: history.csv, W_final.csv, omega_initial.csv, omega_final.csv, "
       "summary.json, checkpoint.ddb,\nfluid.hdf5 with --h5, fluid.mp4 with --animate "
       "(docs/reference/command-lines-and-files.md).\nExit status: 0 ok, 1 a step failed or a "
-      "file could not be "
-      "written, 2 bad input (nothing written), 130/143 stopped by SIGINT/SIGTERM (outputs "
+      "file could not be written, 2 bad input (nothing written), 130/143 stopped by SIGINT/SIGTERM "
+      "(outputs "
       "and a checkpoint written; --resume continues).\n");
 }
 

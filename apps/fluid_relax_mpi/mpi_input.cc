@@ -36,8 +36,7 @@ void refuseUnsupported(const CLI::App& cli, const fluid::Options& o) {
   if (cli.count("--newton") > 0) {
     throw app::UsageError(
         "--newton: not available in fluid-relax-mpi (docs/design/distributed.md); run "
-        "fluid-relax for "
-        "it");
+        "fluid-relax for it");
   }
 }
 
@@ -54,8 +53,7 @@ void refuseForeignRun(const std::string& dir, const fluid::Checkpoint& c) {
     app::usageError("--resume", dir,
                     "its run used " + what +
                         ", which fluid-relax-mpi does not have (docs/design/distributed.md); "
-                        "resume it "
-                        "with fluid-relax");
+                        "resume it with fluid-relax");
   }
 }
 
@@ -154,14 +152,13 @@ void addMpiOptions(CLI::App& cli, MpiOptions& o) {
       "Methods here: " +
       methodList(kBackendMatrixGroups) +
       "; not available: the other methods, --newton.\n\nInitial "
-      "vorticities (--init; all "
-      "scaled to ||W||_F = sqrt(N), seeded by --seed):\n" +
+      "vorticities (--init; all scaled to ||W||_F = sqrt(N), seeded by --seed):\n" +
       app::describeChoices(app::initDescriptions()) +
       "\nFiles in --out (written by rank 0): history.csv, W_final.csv, omega_initial.csv, "
       "omega_final.csv, summary.json,\ncheckpoint.ddb (fluid-relax's: either app resumes "
       "it), fluid.hdf5 with --h5 or --animate\n(docs/reference/command-lines-and-files.md). "
-      "Exit status: 0 ok, 1 "
-      "a step failed or a file could not be written, 2 bad input\n(nothing written), 130/143 "
+      "Exit status: 0 ok, 1 a step failed or a file could not be written, 2 bad input\n(nothing "
+      "written), 130/143 "
       "stopped by SIGINT/SIGTERM (outputs and a checkpoint written).\n");
 }
 
