@@ -109,9 +109,8 @@ TEST(BadInputs, EveryRowOfTheTableExitsTwoWithItsMessageAndWritesNothing) {
   RunEnvironment environment;
   environment.timeout_s = 20;  // a row that runs instead of failing must not hang ctest
   for (const Row& row : rows) {
-    const std::string where =
-        "docs/reference/bad-inputs.md:" + std::to_string(row.line) + ": " + row.app + " " +
-        row.arguments;
+    const std::string where = "docs/reference/bad-inputs.md:" + std::to_string(row.line) + ": " +
+                              row.app + " " + row.arguments;
     ASSERT_EQ(programs.count(row.app), 1u) << where;
     const std::string arguments = replaceAll(row.arguments, "{tmp}", tmp.string());
     const std::string message = replaceAll(row.message, "{tmp}", tmp.string());
