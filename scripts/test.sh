@@ -44,6 +44,18 @@ else
     "(docs/design/distributed.md)"
 fi
 
+# The CUDA backend's example against the installed component (it checks on a GPU, and where
+# none can be used says so and checks nothing: docs/guide/gpu.md).
+if [[ -f "$scratch/prefix/share/ddb/cmake/ddbCudaTargets.cmake" ]]; then
+  echo "== examples/gpu against the installed package"
+  cmake -S examples/gpu -B "$scratch/gpu" -DCMAKE_BUILD_TYPE=Release \
+        -DCMAKE_PREFIX_PATH="$scratch/prefix"
+  cmake --build "$scratch/gpu" -j2
+  "$scratch/gpu/app"
+else
+  echo "== examples/gpu skipped: the CUDA backend was not built (docs/guide/gpu.md)"
+fi
+
 # Debug catches a build type overwritten unconditionally, the empty one a default
 # imposed on the parent; the disabled packages make any REQUIRED lookup of them fail.
 for build_type in Debug ""; do

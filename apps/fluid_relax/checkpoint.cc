@@ -186,7 +186,7 @@ GivenFlags givenFlags(const CLI::App& cli) {
   for (const CLI::Option* option : cli.get_options()) {
     static const std::set<std::string> kFree{
         "--out",     "--resume", "--steps", "--t-end",     "--checkpoint-every", "--plot",
-        "--verbose", "--quiet",  "--block", "--grid-rows", "--overwrite"};
+        "--verbose", "--quiet",  "--block", "--grid-rows", "--overwrite",        "--device"};
     if (option->count() == 0 || kFree.count(option->get_name()) > 0) continue;
     std::string text;
     for (const std::string& result : option->results()) text += (text.empty() ? "" : ",") + result;

@@ -30,9 +30,10 @@ constexpr const char* kCheckpointFile = "checkpoint.ddb";
 
 /// The flags of a command line that define the run, as given: name → value text. The
 /// others (--out, --resume, --overwrite, --steps, --t-end, --checkpoint-every, --plot,
-/// --verbose, --quiet) do not change the states a run computes, and fluid-relax-mpi's --block and
-/// --grid-rows change them by rounding only, as the number of ranks does: a resumed run may give
-/// them anew, and a checkpoint does not record them, so that it is the same whatever they were.
+/// --verbose, --quiet) do not change the states a run computes, and fluid-relax's --device and
+/// fluid-relax-mpi's --block and --grid-rows change them by rounding only, as the number of ranks
+/// does: a resumed run may give them anew, and a checkpoint does not record them, so that it is
+/// the same whatever they were.
 using GivenFlags = std::map<std::string, std::string>;
 GivenFlags givenFlags(const CLI::App& cli);
 

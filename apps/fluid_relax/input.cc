@@ -229,6 +229,7 @@ void resumeSettings(const CLI::App& cli, const Options& given, Checkpoint& c) {
     app::usageError("--checkpoint-every", std::to_string(given.checkpoint_every), "must be >= 1");
   }
   o.resume = given.resume;
+  o.device = given.device;
   o.checkpoint_every = given.checkpoint_every;
   o.plot = given.plot;
   o.log = given.log;

@@ -4,6 +4,9 @@
 // (apps/common/exit_status.h): 2 for bad input, checked in full before anything is written; 1 if a
 // step failed (history.csv keeps every state before it) or a file could not be written; 130/143 if
 // SIGINT/SIGTERM stopped it (after its step, with outputs and a checkpoint: "Checkpoints" there).
+// With --device cuda the states live on one GPU (docs/guide/gpu.md): the same Relaxation on the
+// fluid of the CUDA backend, the states copied to this process's memory only for the history
+// rows, the checkpoints and the final files.
 #include <ddb/integrators/drivers/relax.h>
 #include <ddb/integrators/drivers/run.h>
 #include <ddb/integrators/methods/method_table.h>
@@ -16,6 +19,12 @@
 #include <cmath>
 #include <ctime>
 #include <optional>
+#include <type_traits>
+
+#ifdef DDB_FLUID_RELAX_CUDA
+#include <ddb/cuda/cuda_device.h>
+#include <ddb/cuda/cuda_zeitlin_fluid.h>
+#endif
 
 #include "common/atomic_file.h"
 #include "common/cli.h"
@@ -28,6 +37,7 @@
 #include "common/spectrum_drift.h"
 #include "common/stop_signals.h"
 #include "fluid_relax/checkpoint.h"
+#include "fluid_relax/device.h"
 #include "fluid_relax/input.h"
 #include "fluid_relax/options.h"
 #include "fluid_relax/outputs.h"
@@ -39,19 +49,65 @@ namespace {
 using namespace ddb;
 using namespace ddb::fluid;
 
-int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoint* resume) {
+// A state of the run as a host matrix: itself on the CPU; on the GPU, copied into `buffer`.
+const Matrix& onHost(const Matrix& W, Matrix&) { return W; }
+#ifdef DDB_FLUID_RELAX_CUDA
+const Matrix& onHost(const CudaMatrix& W, Matrix& buffer) {
+  toHost(W, buffer);
+  return buffer;
+}
+#endif
+
+// The run's result with its final state in this process's memory: what the summary and the
+// final files read.
+const RelaxResult<SUN>& resultOnHost(const RelaxResult<SUN>& result) { return result; }
+#ifdef DDB_FLUID_RELAX_CUDA
+RelaxResult<SUN> resultOnHost(const RelaxResult<CudaSUN>& result) {
+  RelaxResult<SUN> host;
+  host.final = toHost(result.final);
+  host.last = result.last;
+  host.stop = result.stop;
+  host.steps_rejected = result.steps_rejected;
+  host.runtime_s = result.runtime_s;
+  host.failure = result.failure;
+  host.failed_step = result.failed_step;
+  return host;
+}
+#endif
+
+// The initial state where the run's states live.
+template <class G>
+typename G::template Dual<double> stateOf(const Matrix& W) {
+  if constexpr (std::is_same_v<G, SUN>) {
+    return W;
+  } else {
+    return toDevice(W);
+  }
+}
+
+// The run on the fluid `system` whose states are G's (SUN: this process's memory; CudaSUN: one
+// GPU's), `host_fluid` the same fluid on the CPU for the diagnostics, the files and the summary.
+// On the CPU every state's spectrum drift is measured; on the GPU the drift of the states the
+// history rows hold (as fluid-relax-mpi does), so that no step waits for an eigensolver.
+template <class G>
+int relax(const std::shared_ptr<const LiePoissonSystem<G>>& system,
+          const std::shared_ptr<const LiePoissonSystem<SUN>>& host_fluid, Device device,
+          const Options& o, const Settings& s, const GivenFlags& given, Checkpoint* resume) {
+  constexpr bool kOnHost = std::is_same_v<G, SUN>;
+  using State = typename G::template Dual<double>;
   const auto start = std::chrono::steady_clock::now();
   const Eigen::Index n = s.W0.rows();
-  const auto system = makeZeitlinFluid(n, s.alpha);
-  const auto& hamiltonian = dynamic_cast<const ZeitlinHamiltonian&>(system->hamiltonian());
+  const auto& hamiltonian = dynamic_cast<const ZeitlinHamiltonian&>(host_fluid->hamiltonian());
   const ZeitlinDiagnostics diagnostics(hamiltonian);
   const bool newton = s.relax.newton;
   const std::string method_name = newton ? "newton" : o.method;
-  const auto method = makeMethod<SUN>(o.method, system);  // not used by a Newton search
+  const auto method = makeMethod<G>(o.method, system);  // not used by a Newton search
   // Every method that solves equations reports its iterations; rk4 and a Newton search none.
   const bool counts_iterations = !newton && method->solvesEquations();
-  Relaxation<SUN> run = newton ? Relaxation<SUN>(*system, s.W0, s.relax)
-                               : Relaxation<SUN>(*method, *system, s.W0, s.h, s.relax);
+  const State W0 = stateOf<G>(s.W0);
+  Relaxation<G> run = newton ? Relaxation<G>(*system, W0, s.relax)
+                             : Relaxation<G>(*method, *system, W0, s.h, s.relax);
+  Matrix host_state;  // a GPU state copied for a row, a progress line or the end
   Tally tally;
   if (resume != nullptr) {
     resumeRelaxation(resume->relaxation, resume->settings.relax, o.resume,
@@ -81,14 +137,19 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   }
   const app::SpectrumDrift<SUN> spectrumDrift(s.W0);
 
-  HistoryFiles files(o, s, *system, resume);
+  HistoryFiles files(o, s, *host_fluid, resume);
   // A row points at the run's current state; the one EveryKth holds back for finish() is
   // the last, which they still point to then.
-  auto historyRow = [&](long k, double t, const std::pair<const RelaxState*, const Matrix*>& at) {
-    files.write(k, t, at.first->h, *at.second, tally.drift);
+  auto historyRow = [&](long k, double t, const std::pair<const RelaxState*, const State*>& at) {
+    const Matrix& W = onHost(*at.second, host_state);
+    if constexpr (!kOnHost) {
+      tally.drift = spectrumDrift(W);
+      tally.drift_max = std::max(tally.drift_max, tally.drift);
+    }
+    files.write(k, t, at.first->h, W, tally.drift);
   };
-  EveryKth<std::pair<const RelaxState*, const Matrix*>, decltype(historyRow)> history(o.every,
-                                                                                      historyRow);
+  EveryKth<std::pair<const RelaxState*, const State*>, decltype(historyRow)> history(o.every,
+                                                                                     historyRow);
 
   const bool watch_energy =
       app::EnergyRises::applies(newton || findMethod(o.method)->keeps_casimirs, s.alpha);
@@ -97,19 +158,26 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   auto last_checkpoint = std::chrono::steady_clock::now();
   std::string checkpoint_time = "none yet";
   long checkpointed_at = -1;  // the step of the last checkpoint
-  const auto observe = [&](const RelaxState& at, const Matrix& W) {
+  const auto observe = [&](const RelaxState& at, const State& W) {
     if (at.k > 0 && counts_iterations) {
       const long iterations = method->lastStepIterations();
       tally.iterations_total += iterations;
       tally.iterations_max = std::max(tally.iterations_max, iterations);
     }
     if (watch_energy) tally.rises.observe(at.k, at.t, at.energy);
-    tally.drift = spectrumDrift(W);
-    tally.drift_max = std::max(tally.drift_max, tally.drift);
+    if constexpr (kOnHost) {
+      tally.drift = spectrumDrift(W);
+      tally.drift_max = std::max(tally.drift_max, tally.drift);
+    }
     history(at.k, at.t, {&at, &W});
     progress.update(label, at.k, s.relax.max_steps, [&] {
-      return fmt::format("t {:.6g}  E {:.6g}  |[P,W]| {:.3g}  h {:.3g}  checkpoint {}", at.t,
-                         at.energy, diagnostics.commutatorNorm(W), at.h, checkpoint_time);
+      // ‖[P, W]‖ on the CPU only: on the GPU it would copy the state and take two products.
+      const std::string commutator =
+          kOnHost
+              ? fmt::format("  |[P,W]| {:.3g}", diagnostics.commutatorNorm(onHost(W, host_state)))
+              : "";
+      return fmt::format("t {:.6g}  E {:.6g}{}  h {:.3g}  checkpoint {}", at.t, at.energy,
+                         commutator, at.h, checkpoint_time);
     });
   };
   // The files that grow are on disk up to the lengths the checkpoint records.
@@ -154,11 +222,12 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   if (checkpointed_at != run.state().k) checkpoint(lengths);
   tally.rises.warnIfAny(method_name);
 
-  const RelaxResult<SUN>& result = run.result();
+  const RelaxResult<SUN> result = resultOnHost(run.result());
   const double runtime_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const app::Json summary = runSummary(o, s, *system, result, tally, method_name, counts_iterations,
-                                       watch_energy, runtime_s);
+  const app::Json summary =
+      runSummary(o, s, *host_fluid, result, tally, method_name, counts_iterations, watch_energy,
+                 runtime_s, deviceDescription(device));
   const bool interrupted = result.stop == RelaxStop::kInterrupted;
   if (!result.ok()) {
     // A failed run writes no final state: W_final.csv and omega_final.csv would claim a
@@ -191,25 +260,48 @@ int relax(const Options& o, const Settings& s, const GivenFlags& given, Checkpoi
   return app::kExitOk;
 }
 
+// The run on `device`: the fluid where the states live, and on the CPU for the files.
+int relaxOn(Device device, const Options& o, const Settings& s, const GivenFlags& given,
+            Checkpoint* resume) {
+  const Eigen::Index n = s.W0.rows();
+  const auto host_fluid = makeZeitlinFluid(n, s.alpha);
+#ifdef DDB_FLUID_RELAX_CUDA
+  if (device == Device::kCuda) {
+    return relax<CudaSUN>(makeCudaZeitlinFluid(n, s.alpha), host_fluid, device, o, s, given,
+                          resume);
+  }
+#endif
+  return relax<SUN>(host_fluid, host_fluid, device, o, s, given, resume);
+}
+
 int runRelax(int argc, char** argv) {
   CLI::App cli{"Relax Zeitlin's SU(N) fluid on the sphere with double-bracket dissipation", kApp};
   Options o;
   addOptions(cli, o, kMaxN);
+  cli.add_option("--device", o.device,
+                 "where the states live: cpu, or cuda (one GPU, N <= " +
+                     std::to_string(maxN(Device::kCuda)) + ", the methods " +
+                     methodList(kBackendMatrixGroups) +
+                     "; docs/guide/gpu.md); a checkpoint resumes on either")
+      ->capture_default_str();
   if (const auto status = app::parseCommandLine(cli, argc, argv)) return *status;
   app::setupLogging(o.log);
+  const Device device = deviceOf(o.device);
   if (!o.resume.empty()) {
     // The lock first: the checkpoint and the files are read as their one writer left them.
     const app::RunFolderLock lock = lockResumeFolder(o.resume);
     Checkpoint c = readCheckpoint(o.resume);
     resumeSettings(cli, o, c);
+    requireRunsOn(device, c.options, c.settings.W0.rows());
     checkResumeFolder(o.resume, c);
-    const int status = relax(c.options, c.settings, c.given, &c);
+    const int status = relaxOn(device, c.options, c.settings, c.given, &c);
     return makeFigures(c.options, c.settings.out, status, DDB_PLOT_SCRIPT, DDB_ANIMATE_SCRIPT);
   }
-  const Settings s = settings(cli, o, kMaxN);
+  const Settings s = settings(cli, o, maxN(device));
+  requireRunsOn(device, o, s.W0.rows());
   const app::RunFolderLock lock =
       app::claimNewRunFolder("--out", o.out, s.out, runFiles(), o.overwrite, "--overwrite");
-  const int status = relax(o, s, givenFlags(cli), nullptr);
+  const int status = relaxOn(device, o, s, givenFlags(cli), nullptr);
   return makeFigures(o, s.out, status, DDB_PLOT_SCRIPT, DDB_ANIMATE_SCRIPT);
 }
 

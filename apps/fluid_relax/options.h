@@ -41,6 +41,9 @@ struct Options {
   bool overwrite = false;     // a new run may replace another run's files in --out
   bool plot = false;
   bool h5 = false, animate = false;  // fluid.hdf5; its animation (implies h5)
+  /// fluid-relax's --device (fluid_relax/device.h): cpu or cuda; not in a checkpoint, so that
+  /// a run resumes on either.
+  std::string device = "cpu";
   app::LogFlags log;
 };
 

@@ -7,7 +7,7 @@ namespace ddb::fluid {
 app::Json runSummary(const Options& o, const Settings& s, const LiePoissonSystem<SUN>& system,
                      const RelaxResult<SUN>& result, const Tally& tally,
                      const std::string& method_name, bool counts_iterations, bool watch_energy,
-                     double runtime_s) {
+                     double runtime_s, const std::string& device) {
   const Eigen::Index n = s.W0.rows();
   const ZeitlinDiagnostics diagnostics(
       dynamic_cast<const ZeitlinHamiltonian&>(system.hamiltonian()));
@@ -35,6 +35,7 @@ app::Json runSummary(const Options& o, const Settings& s, const LiePoissonSystem
   summary["h_final"] = result.last.h;
   summary["every"] = o.every;
   summary["method"] = method_name;
+  summary["device"] = device;
   summary["init"] = s.init;
   summary["seed"] = s.init == "file" ? app::Json() : app::Json(o.seed);
   summary["init_file"] = s.init == "file" ? app::Json(o.init_file) : app::Json();

@@ -19,10 +19,11 @@ namespace ddb::fluid {
 /// final state whole), with the accumulated `tally`, its method's name and its wall time.
 /// `counts_iterations`: whether the method solves equations (OneStepMethod::solvesEquations;
 /// otherwise the iterations are null, not applicable); `watch_energy`: whether energy rises
-/// were counted (app::EnergyRises::applies).
+/// were counted (app::EnergyRises::applies); `device`: where the states lived ("cpu", or
+/// "cuda: " and the GPU's name).
 app::Json runSummary(const Options& o, const Settings& s, const LiePoissonSystem<SUN>& system,
                      const RelaxResult<SUN>& result, const Tally& tally,
                      const std::string& method_name, bool counts_iterations, bool watch_energy,
-                     double runtime_s);
+                     double runtime_s, const std::string& device);
 
 }  // namespace ddb::fluid

@@ -267,7 +267,7 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   onRoot([&] {
     tally.rises.warnIfAny(o.method);
     app::Json summary = runSummary(o, s, outputs->system(), result, tally, o.method,
-                                   counts_iterations, watch_energy, runtime_s);
+                                   counts_iterations, watch_energy, runtime_s, "cpu");
     summary["mpi_ranks"] = grid.size();
     summary["process_grid"] = {grid.rows(), grid.cols()};
     summary["block_size"] = run.block;

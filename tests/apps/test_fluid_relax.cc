@@ -11,6 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -401,14 +402,54 @@ TEST(FluidRelax, BadInputExitsTwoNamingTheFlagAndWritesNothing) {
   EXPECT_EQ(run("--quiet" + file + "/good.csv --n 4 --out " + out.string()).status, 0);
 }
 
+// --device: the CPU run's summary says "cpu"; --device cuda, where this build has the CUDA
+// backend and a GPU is present, follows the CPU run (W_final.csv to 1e-12 of its largest entry,
+// the same history rows) and names the device in its summary; elsewhere it is refused, exit
+// status 2 with one line naming --device and why, nothing written (docs/guide/gpu.md).
+TEST(FluidRelax, DeviceCudaFollowsTheCpuRunOrIsRefusedSayingWhy) {
+  const fs::path cpu = freshFolder("device_cpu"), gpu = freshFolder("device_cuda");
+  const std::string common = "--quiet --n 12 --steps 20 --method sddb-cay ";
+  const AppResult a = run(common + "--out " + cpu.string());
+  ASSERT_EQ(a.status, 0) << a.output;
+  EXPECT_EQ(readJson(cpu / "summary.json")["device"], "cpu");
+  const AppResult b = run(common + "--device cuda --out " + gpu.string());
+  if (b.status == 2) {
+    EXPECT_THAT(b.error, ::testing::StartsWith("fluid-relax: --device = cuda: ")) << b.error;
+    EXPECT_EQ(std::count(b.error.begin(), b.error.end(), '\n'), 1) << b.error;
+    EXPECT_FALSE(fs::exists(gpu));
+    return;
+  }
+  ASSERT_EQ(b.status, 0) << b.output;
+  EXPECT_THAT(readJson(gpu / "summary.json")["device"].get<std::string>(),
+              ::testing::StartsWith("cuda: "));
+  const Matrix on_cpu = readMatrix(cpu / "W_final.csv"), on_gpu = readMatrix(gpu / "W_final.csv");
+  EXPECT_LE((on_gpu - on_cpu).cwiseAbs().maxCoeff(), 1e-12 * on_cpu.cwiseAbs().maxCoeff());
+  EXPECT_EQ(readCsv(gpu / "history.csv", nullptr).size(),
+            readCsv(cpu / "history.csv", nullptr).size());
+  // Each run resumed on the other device: the CPU's checkpoint on the GPU and back, 10 steps
+  // more, both within 1e-12 of a CPU run of 30 steps.
+  const fs::path whole = freshFolder("device_whole");
+  ASSERT_EQ(run("--quiet --n 12 --steps 30 --method sddb-cay --out " + whole.string()).status, 0);
+  const Matrix expected = readMatrix(whole / "W_final.csv");
+  for (const auto& [folder, device] : {std::pair{cpu, "cuda"}, {gpu, "cpu"}}) {
+    const AppResult r =
+        run("--quiet --resume " + folder.string() + " --steps 30 --device " + device);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_LE((readMatrix(folder / "W_final.csv") - expected).cwiseAbs().maxCoeff(),
+              1e-12 * expected.cwiseAbs().maxCoeff())
+        << "resumed on " << device;
+  }
+  for (const fs::path& folder : {cpu, gpu, whole}) fs::remove_all(folder);
+}
+
 TEST(FluidRelax, HelpListsMethodsInitsAndDefaults) {
   const AppResult r = run("--help");
   EXPECT_EQ(r.status, 0);
   for (const std::string text :
        {"--n INT=32", "--alpha TEXT=0.5", "--method TEXT=ddb-cay", "--init TEXT=random",
         "--seed UINT=1", "--out TEXT=results-fluid", "--every INT=1", "N <= 1024",
-        "0.02 hbar/||P0||_2", "\n  ddb-cay ", "\n  sddb-cay ", "\n  rk4 ", "\n  random ", "\n  l1 ",
-        "\n  zonal "}) {
+        "--device TEXT=cpu", "0.02 hbar/||P0||_2", "\n  ddb-cay ", "\n  sddb-cay ", "\n  rk4 ",
+        "\n  random ", "\n  l1 ", "\n  zonal "}) {
     EXPECT_THAT(r.output, ::testing::HasSubstr(text)) << r.output;
   }
 }

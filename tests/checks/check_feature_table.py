@@ -28,6 +28,7 @@ SYSTEMS = [
     ("Manakov, SO(N)", 2, False, True),
     ("fluid, SU(N)", 2, False, True),
     ("fluid on MPI ranks", 4, False, True),
+    ("fluid on one GPU", 4, False, True),
 ]
 
 ROW = re.compile(

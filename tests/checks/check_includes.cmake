@@ -10,7 +10,7 @@ if(NOT IS_DIRECTORY "${SOURCE_DIR}")
   message(FATAL_ERROR "set SOURCE_DIR to the ddb source tree")
 endif()
 
-set(parts core groups systems integrators distributed)
+set(parts core groups systems integrators distributed cuda)
 set(library_globs ddb.h)
 foreach(part IN LISTS parts)
   list(APPEND library_globs ${part}/*.h)
@@ -21,6 +21,8 @@ set(user_globs)
 foreach(folder apps bench examples python tests tools)
   list(APPEND user_globs "${SOURCE_DIR}/${folder}/*.h" "${SOURCE_DIR}/${folder}/*.cc")
 endforeach()
+# The CUDA backend's compiled sources include its headers as the other sources do.
+list(APPEND user_globs "${SOURCE_DIR}/cuda/*.cc" "${SOURCE_DIR}/cuda/*.cu")
 file(GLOB_RECURSE user_files RELATIVE "${SOURCE_DIR}" ${user_globs})
 
 set(errors "")
@@ -33,15 +35,16 @@ foreach(file IN LISTS library_files user_files)
   foreach(line IN LISTS lines)
     string(REGEX MATCH "[<\"]([^>\"]+)[>\"]" _ "${line}")
     set(path "${CMAKE_MATCH_1}")
-    if(path MATCHES "^(core|groups|systems|integrators|distributed|include)/" OR path STREQUAL "ddb.h")
+    if(path MATCHES "^(core|groups|systems|integrators|distributed|cuda|include)/" OR path STREQUAL "ddb.h")
       string(APPEND errors "  ${file}: ${line}  (resolves only in the tree; write <ddb/...>)\n")
     elseif(path MATCHES "^ddb/(.*)$")
-      # Installed, include/ddb/ holds the four folders, ddb.h and, when the distributed layer
-      # is built, distributed/ (docs/design/distributed.md); nothing else of the tree.
+      # Installed, include/ddb/ holds the four folders, ddb.h and, when they are built, the
+      # distributed layer's distributed/ (docs/design/distributed.md) and the CUDA backend's
+      # cuda/ (docs/guide/gpu.md); nothing else of the tree.
       set(rest "${CMAKE_MATCH_1}")
-      if(NOT rest MATCHES "^(core|groups|systems|integrators|distributed)/" AND NOT rest STREQUAL "ddb.h")
+      if(NOT rest MATCHES "^(core|groups|systems|integrators|distributed|cuda)/" AND NOT rest STREQUAL "ddb.h")
         string(APPEND errors "  ${file}: ${line}  (not a library header: <ddb/core|groups|"
-                             "systems|integrators|distributed/...> or <ddb/ddb.h>)\n")
+                             "systems|integrators|distributed|cuda/...> or <ddb/ddb.h>)\n")
       elseif(NOT EXISTS "${SOURCE_DIR}/${rest}")
         string(APPEND errors "  ${file}: ${line}  (no such header in the library)\n")
       endif()
@@ -53,7 +56,7 @@ foreach(file IN LISTS library_files user_files)
         # A relative path into a library folder ("../core/x.h") works only in the tree.
         get_filename_component(target "${folder}/${path}" ABSOLUTE)
         file(RELATIVE_PATH relative "${SOURCE_DIR}" "${target}")
-        if(relative MATCHES "^(core|groups|systems|integrators|distributed)/" OR relative STREQUAL "ddb.h")
+        if(relative MATCHES "^(core|groups|systems|integrators|distributed|cuda)/" OR relative STREQUAL "ddb.h")
           string(APPEND errors "  ${file}: ${line}  (a relative path into the library; write "
                                "<ddb/${relative}>)\n")
         endif()

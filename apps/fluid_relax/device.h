@@ -1,0 +1,30 @@
+// fluid-relax --device (docs/guide/gpu.md): where the run's states live, this process's memory
+// (cpu) or one GPU's (cuda, the CUDA backend, cuda/cuda_backend.h), checked before anything is
+// written.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+
+#include "fluid_relax/options.h"
+
+namespace ddb::fluid {
+
+enum class Device { kCpu, kCuda };
+
+/// --device's value, cpu or cuda (a UsageError naming --device otherwise).
+Device deviceOf(const std::string& text);
+
+/// The largest N on `device`: fluid-relax's on the CPU (every state's spectrum is computed
+/// there), the group's on the GPU (the spectrum only at history rows).
+Eigen::Index maxN(Device device);
+
+/// Whether the run `o` of size n (its method, --newton) can run on `device` here: a
+/// UsageError naming the flag and the reason if not (a method that needs dense matrices,
+/// --newton, N too large for the CPU, no CUDA backend in this build, no usable GPU).
+void requireRunsOn(Device device, const Options& o, Eigen::Index n);
+
+/// What summary.json records: "cpu", or "cuda: " and the GPU's name.
+std::string deviceDescription(Device device);
+
+}  // namespace ddb::fluid

@@ -1,0 +1,153 @@
+// MatrixBackend<CudaMatrix> (cuda/cuda_backend.h): the kernels of cuda/detail/cuda_kernels.cu
+// and cuBLAS's zgemm.
+#include <cuda_runtime.h>
+#include <ddb/cuda/cuda_backend.h>
+#include <ddb/cuda/cuda_device.h>
+#include <ddb/cuda/detail/cuda_check.h>
+#include <ddb/cuda/detail/cuda_kernels.h>
+#include <ddb/cuda/detail/cuda_libraries.h>
+
+#include <cmath>
+#include <string>
+
+namespace ddb {
+
+namespace {
+
+using B = MatrixBackend<CudaMatrix>;
+namespace k = cuda_kernels;
+
+// x's entries as 2·size reals.
+const double* parts(const CudaMatrix& x) { return reinterpret_cast<const double*>(x.deviceData()); }
+double* parts(CudaMatrix& x) { return reinterpret_cast<double*>(x.deviceData()); }
+long partCount(const CudaMatrix& x) { return 2 * x.size(); }
+
+const cuDoubleComplex* complexData(const CudaMatrix& x) {
+  return reinterpret_cast<const cuDoubleComplex*>(x.deviceData());
+}
+cuDoubleComplex* complexData(CudaMatrix& x) {
+  return reinterpret_cast<cuDoubleComplex*>(x.deviceData());
+}
+
+// out takes x's shape (allocating only when it had another).
+void shapeLike(CudaMatrix& out, const CudaMatrix& x) {
+  if (!B::sameShape(out, x)) out = CudaMatrix(x.rows(), x.cols());
+}
+
+// out = s·a b + beta·out by one zgemm.
+void gemm(double s, const CudaMatrix& a, const CudaMatrix& b, double beta, CudaMatrix& out) {
+  const cuDoubleComplex alpha = make_cuDoubleComplex(s, 0.0), c = make_cuDoubleComplex(beta, 0.0);
+  const int m = static_cast<int>(a.rows()), n = static_cast<int>(b.cols()),
+            depth = static_cast<int>(a.cols());
+  checkCublas(cublasZgemm(cublasHandle(), CUBLAS_OP_N, CUBLAS_OP_N, m, n, depth, &alpha,
+                          complexData(a), m, complexData(b), depth, &c, complexData(out), m),
+              "cublasZgemm");
+}
+
+}  // namespace
+
+void B::copy(const X& x, X& out) {
+  if (&x == &out) return;
+  shapeLike(out, x);
+  if (x.size() == 0) return;
+  checkCuda(cudaMemcpy(out.deviceData(), x.deviceData(), sizeof(Scalar) * x.size(),
+                       cudaMemcpyDeviceToDevice),
+            "cudaMemcpy (device to device)");
+}
+void B::setZero(X& x) {
+  if (x.size() == 0) return;
+  checkCuda(cudaMemset(x.deviceData(), 0, sizeof(Scalar) * x.size()), "cudaMemset");
+}
+void B::scale(double a, const X& x, X& out) {
+  shapeLike(out, x);
+  k::scale(partCount(x), a, parts(x), parts(out));
+}
+void B::divide(X& x, double a) { k::divide(partCount(x), parts(x), a); }
+void B::axpy(double a, const X& x, X& y) { k::axpy(partCount(x), a, parts(x), parts(y)); }
+void B::sum(double a, const X& x, double b, const X& y, X& out) {
+  shapeLike(out, x);
+  k::sum(partCount(x), a, parts(x), b, parts(y), parts(out));
+}
+void B::sum(double a, const X& x, double b, const X& y, double c, const X& z, X& out) {
+  shapeLike(out, x);
+  k::sum(partCount(x), a, parts(x), b, parts(y), c, parts(z), parts(out));
+}
+void B::addSum(double a, const X& x, double b, const X& y, X& out) {
+  k::addSum(partCount(x), a, parts(x), b, parts(y), parts(out));
+}
+
+FormattedValue B::describe(const X& x) {
+  return {"a " + std::to_string(x.rows()) + "x" + std::to_string(x.cols()) +
+          " device matrix whose Frobenius norm is " + formatValue(frobeniusNorm(x))};
+}
+
+void B::zeroLike(X& x, const X& like) {
+  shapeLike(x, like);
+  setZero(x);
+}
+
+void B::multiply(const X& a, const X& b, X& out) {
+  if (out.rows() != a.rows() || out.cols() != b.cols()) out = CudaMatrix(a.rows(), b.cols());
+  gemm(1.0, a, b, 0.0, out);
+}
+void B::multiplyAdd(double s, const X& a, const X& b, X& out) { gemm(s, a, b, 1.0, out); }
+void B::addAdjoint(double s, const X& x, X& out) {
+  k::addAdjoint(out.rows(), out.cols(), s, parts(x), parts(out));
+}
+void B::makeSkewHermitian(X& x) { k::makeSkewHermitian(x.cols(), parts(x)); }
+B::Scalar B::trace(const X& x) {
+  double re = 0.0, im = 0.0;
+  k::traceOf(x.rows(), parts(x), &re, &im);
+  return {re, im};
+}
+void B::addToDiagonal(X& x, Scalar c) { k::addToDiagonal(x.rows(), parts(x), c.real(), c.imag()); }
+double B::frobeniusNorm(const X& x) { return std::sqrt(k::dot(partCount(x), parts(x), parts(x))); }
+double B::frobeniusDistance(const X& x, const X& y) {
+  return std::sqrt(k::squaredDistance(partCount(x), parts(x), parts(y)));
+}
+double B::oneNorm(const X& x) {
+  const double fast = k::largestColumnSum(x.rows(), x.cols(), parts(x), false);
+  if (MatrixBackend<Eigen::MatrixXcd>::squaresWereExact(fast)) return fast;
+  return k::largestColumnSum(x.rows(), x.cols(), parts(x), true);
+}
+double B::innerProduct(const X& x, const X& y) { return k::dot(partCount(x), parts(x), parts(y)); }
+bool B::allFinite(const X& x) { return k::countNotFinite(partCount(x), parts(x)) == 0; }
+void B::flushSubnormals(X& x) { k::flushSubnormals(partCount(x), parts(x)); }
+bool B::isZero(const X& x) { return k::countNotZero(partCount(x), parts(x)) == 0; }
+
+void B::gather(const X& x, const std::vector<long>& linear, std::vector<Scalar>& values) {
+  if (linear.empty()) return;
+  // Device copies of the indices and the values, kept for the next sample of this size.
+  thread_local long* indices = nullptr;
+  thread_local double* gathered = nullptr;
+  thread_local std::size_t capacity = 0;
+  if (capacity < linear.size()) {
+    cudaFree(indices);
+    cudaFree(gathered);
+    indices = nullptr;
+    gathered = nullptr;
+    capacity = 0;
+    checkCuda(cudaMalloc(&indices, sizeof(long) * linear.size()), "cudaMalloc");
+    checkCuda(cudaMalloc(&gathered, sizeof(Scalar) * linear.size()), "cudaMalloc");
+    capacity = linear.size();
+  }
+  checkCuda(
+      cudaMemcpy(indices, linear.data(), sizeof(long) * linear.size(), cudaMemcpyHostToDevice),
+      "cudaMemcpy (to the device)");
+  k::gather(static_cast<long>(linear.size()), parts(x), indices, gathered);
+  checkCuda(
+      cudaMemcpy(values.data(), gathered, sizeof(Scalar) * linear.size(), cudaMemcpyDeviceToHost),
+      "cudaMemcpy (to the host)");
+}
+
+void B::save(BinaryRecordWriter& out, const X& x) { out.put(toHost(x)); }
+void B::load(BinaryRecordReader& in, X& x) {
+  Eigen::MatrixXcd read;
+  in.get(read);
+  if (read.rows() != x.rows() || read.cols() != x.cols()) {
+    throw CorruptRecord("a matrix of another size than the state");
+  }
+  x = toDevice(read);
+}
+
+}  // namespace ddb

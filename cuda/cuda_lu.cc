@@ -1,0 +1,77 @@
+// CudaLu (cuda/cuda_lu.h): cuSOLVER's zgetrf and zgetrs with kept workspaces.
+#include <cuda_runtime.h>
+#include <ddb/cuda/cuda_lu.h>
+#include <ddb/cuda/detail/cuda_check.h>
+#include <ddb/cuda/detail/cuda_libraries.h>
+
+#include <string>
+
+namespace ddb {
+
+struct CudaLu::Workspace {
+  long n = -1;
+  int* pivots = nullptr;
+  int* info = nullptr;
+  cuDoubleComplex* scratch = nullptr;
+
+  ~Workspace() {
+    cudaFree(pivots);
+    cudaFree(info);
+    cudaFree(scratch);
+  }
+  // Sized for n×n factors (a new size frees the old buffers first).
+  void reserve(CudaMatrix& a) {
+    if (a.rows() == n) return;
+    cudaFree(pivots);
+    cudaFree(info);
+    cudaFree(scratch);
+    pivots = nullptr;
+    info = nullptr;
+    scratch = nullptr;
+    n = -1;
+    const int rows = static_cast<int>(a.rows());
+    int length = 0;
+    checkCusolver(cusolverDnZgetrf_bufferSize(cusolverHandle(), rows, rows,
+                                              reinterpret_cast<cuDoubleComplex*>(a.deviceData()),
+                                              rows, &length),
+                  "cusolverDnZgetrf_bufferSize");
+    checkCuda(cudaMalloc(&pivots, sizeof(int) * (rows > 0 ? rows : 1)), "cudaMalloc");
+    checkCuda(cudaMalloc(&info, sizeof(int)), "cudaMalloc");
+    checkCuda(cudaMalloc(&scratch, sizeof(cuDoubleComplex) * (length > 0 ? length : 1)),
+              "cudaMalloc");
+    n = a.rows();
+  }
+};
+
+CudaLu::CudaLu() : workspace_(std::make_unique<Workspace>()) {}
+CudaLu::~CudaLu() = default;
+CudaLu::CudaLu(CudaLu&&) noexcept = default;
+CudaLu& CudaLu::operator=(CudaLu&&) noexcept = default;
+
+bool CudaLu::factor(CudaMatrix& a) {
+  workspace_->reserve(a);
+  const int n = static_cast<int>(a.rows());
+  checkCusolver(
+      cusolverDnZgetrf(cusolverHandle(), n, n, reinterpret_cast<cuDoubleComplex*>(a.deviceData()),
+                       n, workspace_->scratch, workspace_->pivots, workspace_->info),
+      "cusolverDnZgetrf");
+  int info = 0;
+  checkCuda(cudaMemcpy(&info, workspace_->info, sizeof(int), cudaMemcpyDeviceToHost),
+            "cudaMemcpy (to the host)");
+  if (info < 0) {
+    throw CudaError("cusolverDnZgetrf rejected its argument " + std::to_string(-info));
+  }
+  return info == 0;
+}
+
+void CudaLu::solve(const CudaMatrix& factored, CudaMatrix& b) {
+  const int n = static_cast<int>(factored.rows());
+  checkCusolver(
+      cusolverDnZgetrs(cusolverHandle(), CUBLAS_OP_N, n, static_cast<int>(b.cols()),
+                       reinterpret_cast<const cuDoubleComplex*>(factored.deviceData()), n,
+                       workspace_->pivots, reinterpret_cast<cuDoubleComplex*>(b.deviceData()), n,
+                       workspace_->info),
+      "cusolverDnZgetrs");
+}
+
+}  // namespace ddb

@@ -1,0 +1,86 @@
+// CudaPoissonSolver (cuda/cuda_poisson_solver.h).
+#include <cuda_runtime.h>
+#include <ddb/core/errors.h>
+#include <ddb/cuda/cuda_backend.h>
+#include <ddb/cuda/cuda_poisson_solver.h>
+#include <ddb/cuda/detail/cuda_check.h>
+#include <ddb/cuda/detail/poisson_kernels.h>
+#include <ddb/cuda/detail/skewed_diagonals.h>
+#include <ddb/systems/hoppe_yau_laplacian.h>
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace ddb {
+
+struct CudaPoissonSolver::Device {
+  long n = 0;
+  CudaMatrix sheared;  // (2N − 1) × N: column c of the layout is row c of this matrix
+  double* lower = nullptr;
+  double* inverse_pivot = nullptr;
+
+  ~Device() {
+    cudaFree(lower);
+    cudaFree(inverse_pivot);
+  }
+};
+
+CudaPoissonSolver::CudaPoissonSolver(long n) : device_(std::make_unique<Device>()) {
+  if (n < 2) throwInvalid("N", std::to_string(n), "must be >= 2");
+  Device& d = *device_;
+  d.n = n;
+  d.sheared = CudaMatrix(skewed::width(n), n);
+  // The factors of every diagonal (HoppeYauLaplacian::factorBlock), sheared on the host.
+  const std::size_t entries = static_cast<std::size_t>(skewed::width(n) * n);
+  std::vector<double> lower(entries, 0.0), inverse_pivot(entries, 0.0);
+  Eigen::VectorXd diagonal, off, block_lower, block_inverse_pivot;
+  for (long m = -(n - 1); m < n; ++m) {
+    HoppeYauLaplacian::blockCoefficients(n, m, diagonal, off);
+    block_lower.resize(diagonal.size());
+    block_inverse_pivot.resize(diagonal.size());
+    HoppeYauLaplacian::factorBlock(diagonal, off, m == 0, block_lower, block_inverse_pivot);
+    for (long k = 0; k < diagonal.size(); ++k) {
+      const long i = m >= 0 ? k : k - m, j = m >= 0 ? k + m : k;
+      const auto at = static_cast<std::size_t>(skewed::indexOf(n, i, j));
+      lower[at] = block_lower(k);
+      inverse_pivot[at] = block_inverse_pivot(k);
+    }
+  }
+  for (auto [host, device] : {std::pair{&lower, &d.lower}, {&inverse_pivot, &d.inverse_pivot}}) {
+    checkCuda(cudaMalloc(device, sizeof(double) * entries), "cudaMalloc");
+    checkCuda(cudaMemcpy(*device, host->data(), sizeof(double) * entries, cudaMemcpyHostToDevice),
+              "cudaMemcpy (to the device)");
+  }
+}
+
+CudaPoissonSolver::~CudaPoissonSolver() = default;
+CudaPoissonSolver::CudaPoissonSolver(CudaPoissonSolver&&) noexcept = default;
+CudaPoissonSolver& CudaPoissonSolver::operator=(CudaPoissonSolver&&) noexcept = default;
+
+long CudaPoissonSolver::size() const { return device_->n; }
+
+void CudaPoissonSolver::solve(const CudaMatrix& W, CudaMatrix& out) {
+  using B = MatrixBackend<CudaMatrix>;
+  Device& d = *device_;
+  if (W.rows() != d.n || W.cols() != d.n) {
+    throwInvalid(
+        "matrix", std::to_string(W.rows()) + "x" + std::to_string(W.cols()),
+        "must be " + std::to_string(d.n) + "x" + std::to_string(d.n) + " for this Poisson solver");
+  }
+  // The means as parts divided by N (tr/N rounded once in each part).
+  const auto meanOf = [&](const CudaMatrix& x) {
+    const std::complex<double> trace = B::trace(x);
+    return std::complex<double>(trace.real() / double(d.n), trace.imag() / double(d.n));
+  };
+  const std::complex<double> mean = meanOf(W);
+  auto* sheared = reinterpret_cast<double*>(d.sheared.deviceData());
+  cuda_kernels::toSkewed(d.n, reinterpret_cast<const double*>(W.deviceData()), mean.real(),
+                         mean.imag(), sheared);
+  cuda_kernels::sweepDiagonals(d.n, sheared, d.lower, d.inverse_pivot);
+  if (!B::sameShape(out, W)) out = CudaMatrix(d.n, d.n);
+  cuda_kernels::fromSkewed(d.n, sheared, reinterpret_cast<double*>(out.deviceData()));
+  B::addToDiagonal(out, -meanOf(out));
+}
+
+}  // namespace ddb

@@ -1,0 +1,33 @@
+// The Poisson solve P = Δ⁻¹(W − tr(W)/N · I) of Zeitlin's fluid (systems/hoppe_yau_laplacian.h)
+// on a CudaMatrix: W is sheared so that each diagonal of the Hoppe–Yau Laplacian is a column
+// (cuda/detail/skewed_diagonals.h), one GPU thread sweeps each column with the factors
+// HoppeYauLaplacian computes (uploaded once, in the same layout), and the result is sheared
+// back; the means are removed before and after as HoppeYauLaplacian::solve removes them.
+// Workspace: the sheared array, (2N − 1)·N complex numbers, and two real arrays as large.
+#pragma once
+
+#include <ddb/cuda/cuda_matrix.h>
+
+#include <memory>
+
+namespace ddb {
+
+class CudaPoissonSolver {
+ public:
+  /// For N×N matrices, N >= 2 (InvalidArgument naming N otherwise).
+  explicit CudaPoissonSolver(long n);
+  ~CudaPoissonSolver();
+  CudaPoissonSolver(CudaPoissonSolver&&) noexcept;
+  CudaPoissonSolver& operator=(CudaPoissonSolver&&) noexcept;
+
+  /// out = Δ⁻¹(W − tr(W)/N · I); out may be W. InvalidArgument if W is not N×N.
+  void solve(const CudaMatrix& W, CudaMatrix& out);
+
+  long size() const;
+
+ private:
+  struct Device;
+  std::unique_ptr<Device> device_;
+};
+
+}  // namespace ddb

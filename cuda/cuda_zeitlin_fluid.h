@@ -1,0 +1,24 @@
+// Zeitlin's fluid on one GPU: the fluid on any backend (systems/zeitlin_fluid_on_backend.h) with
+// CudaPoissonSolver's Poisson solve, an ordinary LiePoissonSystem on SU(N) whose states are
+// CudaMatrix (CudaSUN). The method table's methods for any backend (makeMethod) and Relaxation
+// run on it (docs/guide/gpu.md).
+#pragma once
+
+#include <ddb/cuda/cuda_backend.h>
+#include <ddb/cuda/cuda_poisson_solver.h>
+#include <ddb/groups/sun.h>
+#include <ddb/systems/zeitlin_fluid_on_backend.h>
+
+#include <memory>
+
+namespace ddb {
+
+/// SU(N) with its states in one GPU's memory.
+using CudaSUN = SUNOn<CudaMatrix>;
+
+/// The fluid at resolution n with k♯ = α·Id, its Poisson factors on the device.
+inline std::shared_ptr<const LiePoissonSystem<CudaSUN>> makeCudaZeitlinFluid(long n, double alpha) {
+  return makeZeitlinFluidOn<CudaMatrix>(CudaPoissonSolver(n), n, alpha);
+}
+
+}  // namespace ddb

@@ -1,0 +1,46 @@
+// The CUDA backend's kernels (cuda/detail/cuda_kernels.cu), on device addresses: what
+// cuda/cuda_backend.cc and cuda/cuda_poisson_solver.cc launch. A complex matrix is passed as
+// its 2·size real parts (std::complex's layout, C++17 [complex.numbers]/4) where the operation
+// treats real and imaginary parts alike. Everything runs on the default stream, in order.
+#pragma once
+
+namespace ddb::cuda_kernels {
+
+// ---- Element-wise, over `count` reals, evaluated as written (no fused multiply-add). ----
+void scale(long count, double a, const double* x, double* out);  // out = a·x
+void divide(long count, double* x, double a);                    // x = x / a
+void axpy(long count, double a, const double* x, double* y);     // y = y + a·x
+void sum(long count, double a, const double* x, double b, const double* y,
+         double* out);  // out = a·x + b·y
+void sum(long count, double a, const double* x, double b, const double* y, double c,
+         const double* z, double* out);  // out = (a·x + b·y) + c·z
+void addSum(long count, double a, const double* x, double b, const double* y,
+            double* out);  // out = out + (a·x + b·y)
+void flushSubnormals(long count, double* x);
+
+// ---- Complex n×m column-major matrices (re, im interleaved). ----
+/// out(i, j) += s·conj(x(j, i)), out n×m, x m×n.
+void addAdjoint(long n, long m, double s, const double* x, double* out);
+/// x ← (x − xᴴ)/2, x n×n, each pair (i, j), (j, i) from one value.
+void makeSkewHermitian(long n, double* x);
+/// x(i, i) += c.
+void addToDiagonal(long n, double* x, double c_real, double c_imag);
+/// values(s) = x at linear index indices(s) (device arrays of `count`).
+void gather(long count, const double* x, const long* indices, double* values);
+
+// ---- Reductions, in a fixed tree (the same bits every run on one device); the result is
+// copied back to the host. ----
+/// Σ x_k y_k over `count` reals.
+double dot(long count, const double* x, const double* y);
+/// Σ (x_k − y_k)² over `count` reals.
+double squaredDistance(long count, const double* x, const double* y);
+/// Σ_i x(i, i) of an n×n complex matrix (real and imaginary parts).
+void traceOf(long n, const double* x, double* real, double* imag);
+/// The largest column sum of |x_ij| over the m columns of an n×m complex matrix, |z| as
+/// √(Re² + Im²) or (exact) hypot(Re, Im); NaN if any sum is NaN.
+double largestColumnSum(long n, long m, const double* x, bool exact);
+/// How many of `count` reals are not finite, and how many are not zero.
+long countNotFinite(long count, const double* x);
+long countNotZero(long count, const double* x);
+
+}  // namespace ddb::cuda_kernels

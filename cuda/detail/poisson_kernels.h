@@ -1,0 +1,14 @@
+// The passes of the CUDA Poisson solve (cuda/cuda_poisson_solver.h) on device addresses,
+// complex entries as (re, im) pairs, the sheared layout of cuda/detail/skewed_diagonals.h.
+#pragma once
+
+namespace ddb::cuda_kernels {
+
+/// skewed ← W sheared, the complex mean subtracted from the diagonal (W N×N).
+void toSkewed(long n, const double* w, double mean_real, double mean_imag, double* skewed);
+/// Every diagonal's sweep (skewed::sweepColumn), one thread per column of the sheared array.
+void sweepDiagonals(long n, double* skewed, const double* lower, const double* inverse_pivot);
+/// out ← the N×N matrix of the sheared array.
+void fromSkewed(long n, const double* skewed, double* out);
+
+}  // namespace ddb::cuda_kernels

@@ -1,0 +1,442 @@
+// The CUDA backend (cuda/cuda_backend.h) against the dense backend (core/matrix_backend.h):
+// every backend operation (the element-wise ones and the adjoint passes to the bit, the
+// products, reductions and LU to round-off), the Poisson solve, the transfers and records,
+// a run repeated to the bit, then whole relaxations of every method of the method table's
+// kBackendMatrixGroups family on Zeitlin's fluid (within 1e-12 of the dense run after 100 steps:
+// GPU reductions and products add in another order) and the spectrum kept over 1000 steps at N =
+// 1024. Without a GPU every test but the first is skipped, by ctest's skip, naming why
+// (GTEST_SKIP).
+#include <ddb/cuda/cuda_backend.h>
+#include <ddb/cuda/cuda_device.h>
+#include <ddb/cuda/cuda_poisson_solver.h>
+#include <ddb/cuda/cuda_zeitlin_fluid.h>
+#include <ddb/integrators/drivers/relax.h>
+#include <ddb/integrators/methods/method_table.h>
+#include <ddb/systems/hoppe_yau_laplacian.h>
+#include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_initial_conditions.h>
+#include <ddb/systems/zeitlin_step_size.h>
+#include <gmock/gmock.h>
+
+#include <cmath>
+#include <complex>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace ddb {
+namespace {
+
+using Matrix = Eigen::MatrixXcd;
+using Dense = MatrixBackend<Matrix>;
+using Device = MatrixBackend<CudaMatrix>;
+
+#define SKIP_WITHOUT_GPU() \
+  if (const auto why = cudaUnavailable()) GTEST_SKIP() << *why
+
+Matrix randomMatrix(Eigen::Index rows, Eigen::Index cols, unsigned seed) {
+  std::mt19937_64 engine(seed);
+  std::normal_distribution<double> normal;
+  Matrix m(rows, cols);
+  for (Eigen::Index k = 0; k < m.size(); ++k) m(k) = {normal(engine), normal(engine)};
+  return m;
+}
+
+bool sameBits(const Matrix& a, const Matrix& b) {
+  return a.rows() == b.rows() && a.cols() == b.cols() &&
+         std::memcmp(a.data(), b.data(), sizeof(a(0)) * a.size()) == 0;
+}
+
+// max |a − b| / max |b|.
+double relativeDifference(const Matrix& a, const Matrix& b) {
+  return (a - b).cwiseAbs().maxCoeff() / b.cwiseAbs().maxCoeff();
+}
+
+constexpr std::array<std::pair<Eigen::Index, Eigen::Index>, 4> kShapes{
+    {{1, 1}, {7, 5}, {64, 64}, {100, 37}}};
+constexpr std::array<double, 4> kCoefficients{1.0, -1.0, 0.37, -2.5};
+
+TEST(CudaDevice, NamesTheDeviceOrSaysWhyThereIsNone) {
+  if (const auto why = cudaUnavailable()) {
+    EXPECT_THAT(*why, ::testing::StartsWith("no CUDA device can be used: "));
+    return;
+  }
+  EXPECT_FALSE(cudaDeviceName().empty());
+  const CudaMemory memory = cudaMemory();
+  EXPECT_GT(memory.total, 0);
+  EXPECT_LE(memory.used, memory.total);
+}
+
+TEST(CudaBackend, TransfersRoundTripToTheBit) {
+  SKIP_WITHOUT_GPU();
+  for (const auto& [rows, cols] : kShapes) {
+    const Matrix m = randomMatrix(rows, cols, 1);
+    const CudaMatrix x = toDevice(m);
+    EXPECT_EQ(x.rows(), rows);
+    EXPECT_EQ(x.cols(), cols);
+    EXPECT_TRUE(sameBits(toHost(x), m));
+    const CudaMatrix copied(x);  // device to device
+    EXPECT_TRUE(sameBits(toHost(copied), m));
+  }
+}
+
+// Each element-wise operation takes the dense backend's bits (no fused multiply-add, the
+// same expression), for coefficients ±1 (taken as additions there) and others.
+TEST(CudaBackend, ElementWiseOperationsTakeTheDenseBackendsBits) {
+  SKIP_WITHOUT_GPU();
+  for (const auto& [rows, cols] : kShapes) {
+    const Matrix x = randomMatrix(rows, cols, 2), y = randomMatrix(rows, cols, 3),
+                 z = randomMatrix(rows, cols, 4), start = randomMatrix(rows, cols, 5);
+    const CudaMatrix dx = toDevice(x), dy = toDevice(y), dz = toDevice(z);
+    for (const double a : kCoefficients) {
+      for (const double b : kCoefficients) {
+        const double c = a * b - 0.5;
+        const auto expectSame = [&](auto denseOp, auto deviceOp, const char* what) {
+          Matrix expected = start;
+          denseOp(expected);
+          CudaMatrix out = toDevice(start);
+          deviceOp(out);
+          EXPECT_TRUE(sameBits(toHost(out), expected))
+              << what << " a = " << a << " b = " << b << ", " << rows << "x" << cols;
+        };
+        expectSame([&](Matrix& o) { Dense::scale(a, x, o); },
+                   [&](CudaMatrix& o) { Device::scale(a, dx, o); }, "scale");
+        expectSame([&](Matrix& o) { Dense::divide(o, a); },
+                   [&](CudaMatrix& o) { Device::divide(o, a); }, "divide");
+        expectSame([&](Matrix& o) { Dense::axpy(a, x, o); },
+                   [&](CudaMatrix& o) { Device::axpy(a, dx, o); }, "axpy");
+        expectSame([&](Matrix& o) { Dense::sum(a, x, b, y, o); },
+                   [&](CudaMatrix& o) { Device::sum(a, dx, b, dy, o); }, "sum");
+        expectSame([&](Matrix& o) { Dense::sum(a, x, b, y, c, z, o); },
+                   [&](CudaMatrix& o) { Device::sum(a, dx, b, dy, c, dz, o); }, "sum of three");
+        expectSame([&](Matrix& o) { Dense::addSum(a, x, b, y, o); },
+                   [&](CudaMatrix& o) { Device::addSum(a, dx, b, dy, o); }, "addSum");
+        const std::array<double, 3> weights{a, b, c};
+        const std::array<const Matrix*, 3> terms{&x, &y, &z};
+        const std::array<const CudaMatrix*, 3> device_terms{&dx, &dy, &dz};
+        expectSame(
+            [&](Matrix& o) {
+              Dense::addCombination([&](int j) { return weights[j]; },
+                                    [&](int j) -> const Matrix& { return *terms[j]; }, 3, o);
+            },
+            [&](CudaMatrix& o) {
+              Device::addCombination([&](int j) { return weights[j]; },
+                                     [&](int j) -> const CudaMatrix& { return *device_terms[j]; },
+                                     3, o);
+            },
+            "addCombination");
+        expectSame(
+            [&](Matrix& o) {
+              Dense::addToDiagonal(o, {a, b});
+            },
+            [&](CudaMatrix& o) {
+              Device::addToDiagonal(o, {a, b});
+            },
+            "addToDiagonal");
+      }
+    }
+    CudaMatrix zero = toDevice(x);
+    Device::setZero(zero);
+    EXPECT_TRUE(sameBits(toHost(zero), Matrix::Zero(rows, cols)));
+    CudaMatrix shaped;
+    Device::zeroLike(shaped, dx);
+    EXPECT_TRUE(Device::sameShape(shaped, dx));
+    EXPECT_TRUE(sameBits(toHost(shaped), Matrix::Zero(rows, cols)));
+    CudaMatrix copy;
+    Device::copy(dx, copy);
+    EXPECT_TRUE(sameBits(toHost(copy), x));
+  }
+}
+
+TEST(CudaBackend, AdjointPassesTakeTheDenseBackendsBits) {
+  SKIP_WITHOUT_GPU();
+  for (const Eigen::Index n : {1, 5, 32, 33, 64, 100}) {
+    const Matrix x = randomMatrix(n, n, 6), start = randomMatrix(n, n, 7);
+    for (const double s : {1.0, -1.0, 0.5, -3.25}) {
+      Matrix expected = start;
+      Dense::addAdjoint(s, x, expected);
+      CudaMatrix out = toDevice(start);
+      Device::addAdjoint(s, toDevice(x), out);
+      EXPECT_TRUE(sameBits(toHost(out), expected)) << "addAdjoint, N = " << n << ", s = " << s;
+    }
+    Matrix expected = x;
+    Dense::makeSkewHermitian(expected);
+    CudaMatrix skew = toDevice(x);
+    Device::makeSkewHermitian(skew);
+    const Matrix got = toHost(skew);
+    EXPECT_TRUE(sameBits(got, expected)) << "makeSkewHermitian, N = " << n;
+    EXPECT_TRUE(sameBits(got, Matrix(-got.adjoint()))) << "skew-Hermitian bit for bit, N = " << n;
+  }
+  // A rectangular adjoint: out (3×70) += s·xᴴ, x 70×3.
+  const Matrix x = randomMatrix(70, 3, 8), start = randomMatrix(3, 70, 9);
+  Matrix expected = start;
+  Dense::addAdjoint(0.75, x, expected);
+  CudaMatrix out = toDevice(start);
+  Device::addAdjoint(0.75, toDevice(x), out);
+  EXPECT_TRUE(sameBits(toHost(out), expected));
+}
+
+// Products (cuBLAS) and reductions (the kernels' tree) to round-off of the values involved.
+TEST(CudaBackend, ProductsAndReductionsAgreeWithTheDenseBackend) {
+  SKIP_WITHOUT_GPU();
+  constexpr double kEps = std::numeric_limits<double>::epsilon();
+  for (const Eigen::Index n : {1, 7, 64, 200}) {
+    const Matrix a = randomMatrix(n, n, 10), b = randomMatrix(n, n, 11), c = randomMatrix(n, n, 12);
+    const CudaMatrix da = toDevice(a), db = toDevice(b);
+    // Each entry of a b is a sum of n products: error below n·ε·(|a||b|)_ij.
+    const Eigen::MatrixXd bound = (a.cwiseAbs() * b.cwiseAbs()) * (double(n) * 4 * kEps);
+    CudaMatrix product;
+    Device::multiply(da, db, product);
+    EXPECT_TRUE(((toHost(product) - a * b).cwiseAbs().array() <= bound.array()).all()) << n;
+    CudaMatrix accumulated = toDevice(c);
+    Device::multiplyAdd(-0.5, da, db, accumulated);
+    const Matrix expected = c - 0.5 * a * b;
+    EXPECT_TRUE(((toHost(accumulated) - expected).cwiseAbs().array() <=
+                 (bound + c.cwiseAbs() * 4 * kEps).array())
+                    .all())
+        << n;
+
+    const double scale = double(n) * 4 * kEps;
+    EXPECT_NEAR(std::abs(Device::trace(da) - a.trace()), 0.0,
+                scale * a.diagonal().cwiseAbs().sum());
+    EXPECT_NEAR(Device::frobeniusNorm(da), a.norm(), scale * a.norm());
+    EXPECT_NEAR(Device::frobeniusDistance(da, db), (a - b).norm(), scale * (a - b).norm());
+    EXPECT_NEAR(Device::innerProduct(da, db), (a.adjoint() * b).trace().real(),
+                scale * a.norm() * b.norm());
+    EXPECT_NEAR(Device::oneNorm(da), Dense::oneNorm(a), scale * Dense::oneNorm(a));
+  }
+  // The 1-norm of tiny entries, whose squares underflow, by hypot; NaN propagates.
+  Matrix tiny = randomMatrix(9, 9, 13) * 1e-200;
+  EXPECT_NEAR(Device::oneNorm(toDevice(tiny)), Dense::oneNorm(tiny), 1e-14 * Dense::oneNorm(tiny));
+  tiny(4, 5) = {std::nan(""), 0.0};
+  EXPECT_TRUE(std::isnan(Device::oneNorm(toDevice(tiny))));
+}
+
+TEST(CudaBackend, PredicatesSamplesAndSubnormals) {
+  SKIP_WITHOUT_GPU();
+  Matrix m = randomMatrix(6, 6, 14);
+  EXPECT_TRUE(Device::allFinite(toDevice(m)));
+  m(2, 3) = {0.0, std::numeric_limits<double>::infinity()};
+  EXPECT_FALSE(Device::allFinite(toDevice(m)));
+  Matrix zero = Matrix::Zero(5, 4);
+  zero(1, 1) = {-0.0, 0.0};
+  EXPECT_TRUE(Device::isZero(toDevice(zero)));
+  zero(3, 2) = {0.0, 1e-310};
+  EXPECT_FALSE(Device::isZero(toDevice(zero)));
+  zero(0, 0) = {std::nan(""), 0.0};
+  EXPECT_FALSE(Device::isZero(toDevice(zero)));
+
+  Matrix subnormal = randomMatrix(5, 5, 15);
+  subnormal(0, 1) = {1e-310, -1e-315};
+  subnormal(2, 2) = {-4e-320, 2.2250738585072014e-308};
+  Matrix expected = subnormal;
+  Dense::flushSubnormals(expected);
+  CudaMatrix flushed = toDevice(subnormal);
+  Device::flushSubnormals(flushed);
+  EXPECT_TRUE(sameBits(toHost(flushed), expected));
+
+  const Matrix x = randomMatrix(11, 11, 16);
+  Eigen::Matrix<Eigen::Index, Eigen::Dynamic, 1> indices(4);
+  indices << 0, 120, 17, 64;
+  Eigen::VectorXcd dense(4), device(4);
+  Dense::sampleEntries(x, indices, dense);
+  Device::sampleEntries(toDevice(x), indices, device);
+  EXPECT_EQ(std::memcmp(dense.data(), device.data(), sizeof(dense(0)) * 4), 0);
+}
+
+// A matrix's record is the dense backend's, byte for byte, and loads back on either.
+TEST(CudaBackend, RecordsAreTheDenseBackendsBytes) {
+  SKIP_WITHOUT_GPU();
+  const Matrix x = randomMatrix(9, 9, 17);
+  BinaryRecordWriter dense_out, device_out;
+  Dense::save(dense_out, x);
+  Device::save(device_out, toDevice(x));
+  EXPECT_EQ(dense_out.sealed(), device_out.sealed());
+  BinaryRecordReader in = BinaryRecordReader::unseal(dense_out.sealed());
+  CudaMatrix loaded = toDevice(Matrix::Zero(9, 9));
+  Device::load(in, loaded);
+  EXPECT_TRUE(sameBits(toHost(loaded), x));
+  BinaryRecordReader again = BinaryRecordReader::unseal(dense_out.sealed());
+  CudaMatrix other_size = toDevice(Matrix::Zero(8, 8));
+  EXPECT_THROW(Device::load(again, other_size), CorruptRecord);
+}
+
+TEST(CudaBackend, LuSolvesAndReportsASingularMatrix) {
+  SKIP_WITHOUT_GPU();
+  for (const Eigen::Index n : {1, 6, 100}) {
+    const Matrix a = randomMatrix(n, n, 18), b = randomMatrix(n, 3, 19);
+    CudaMatrix factored = toDevice(a), solution = toDevice(b);
+    Device::Lu lu;
+    ASSERT_TRUE(lu.factor(factored));
+    lu.solve(factored, solution);
+    const Matrix x = toHost(solution);
+    // Backward error: ‖a x − b‖ ≤ c·n·ε·‖a‖‖x‖.
+    EXPECT_LE((a * x - b).norm(), 100 * double(n) * 1e-16 * a.norm() * x.norm()) << n;
+  }
+  Matrix singular = randomMatrix(5, 5, 20);
+  singular.col(3) = singular.col(1);
+  CudaMatrix factored = toDevice(singular);
+  Device::Lu lu;
+  EXPECT_FALSE(lu.factor(factored));
+}
+
+// The Poisson solve against HoppeYauLaplacian's on the host, and against Δ itself.
+TEST(CudaPoissonSolver, AgreesWithTheHostSolve) {
+  SKIP_WITHOUT_GPU();
+  for (const Eigen::Index n : {2, 3, 16, 33, 128}) {
+    const Matrix W = randomVorticity(n, 21) + Matrix::Identity(n, n) * std::complex<double>(0, 0.3);
+    const HoppeYauLaplacian laplacian(n);
+    Matrix expected;
+    laplacian.solve(W, expected);
+    CudaPoissonSolver solver(n);
+    CudaMatrix out;
+    solver.solve(toDevice(W), out);
+    EXPECT_LE(relativeDifference(toHost(out), expected), 1e-13) << "N = " << n;
+    // In place.
+    CudaMatrix in_place = toDevice(W);
+    solver.solve(in_place, in_place);
+    EXPECT_LE(relativeDifference(toHost(in_place), expected), 1e-13) << "N = " << n;
+  }
+  CudaPoissonSolver solver(4);
+  CudaMatrix wrong = toDevice(Matrix::Zero(5, 5)), out;
+  EXPECT_THROW(solver.solve(wrong, out), InvalidArgument);
+  EXPECT_THROW(CudaPoissonSolver(1), InvalidArgument);
+}
+
+// Every method for any backend, 100 steps of a fixed h on the fluid, on the GPU and on the
+// dense backend from the same W0: the same trajectory to 1e-12 (relative to W's largest entry).
+TEST(CudaRelaxation, EveryMethodForAnyBackendFollowsTheDenseRun) {
+  SKIP_WITHOUT_GPU();
+  for (const Eigen::Index n : {16, 64, 512}) {
+    for (const double alpha : {0.0, 0.5}) {
+      const Matrix W0 = randomVorticity(n, 22);
+      const double h = zeitlinDefaultStep(W0, alpha);
+      const auto dense_fluid = makeZeitlinFluid(n, alpha);
+      const auto device_fluid = makeCudaZeitlinFluid(n, alpha);
+      for (const std::string& name : methodNames(kBackendMatrixGroups)) {
+        RelaxOptions options;
+        options.max_steps = 100;
+        options.tolerance = 0.0;
+        auto dense_method = makeMethod<SUN>(name, dense_fluid);
+        auto device_method = makeMethod<CudaSUN>(name, device_fluid);
+        Relaxation<SUN> dense(*dense_method, *dense_fluid, W0, h, options);
+        Relaxation<CudaSUN> device(*device_method, *device_fluid, toDevice(W0), h, options);
+        while (dense.advance()) {
+        }
+        while (device.advance()) {
+        }
+        const std::string what =
+            name + ", N = " + std::to_string(n) + ", alpha = " + std::to_string(alpha);
+        ASSERT_EQ(device.state().k, 100) << what << ": " << device.result().failure;
+        ASSERT_EQ(dense.state().k, 100) << what;
+        EXPECT_LE(relativeDifference(toHost(device.current()), dense.current()), 1e-12) << what;
+        EXPECT_NEAR(device.state().energy, dense.state().energy,
+                    1e-12 * std::abs(dense.state().energy))
+            << what;
+      }
+    }
+  }
+}
+
+// On one device a run repeats to the bit (the reductions add in a fixed tree; cuBLAS and
+// cuSOLVER in their default modes are deterministic): what a resumed run relies on.
+TEST(CudaRelaxation, ARunRepeatsToTheBit) {
+  SKIP_WITHOUT_GPU();
+  const Eigen::Index n = 96;
+  const Matrix W0 = randomVorticity(n, 25);
+  const auto fluid = makeCudaZeitlinFluid(n, 0.5);
+  const auto once = [&] {
+    auto method = makeMethod<CudaSUN>("sddb-cay", fluid);
+    RelaxOptions options;
+    options.max_steps = 30;
+    options.tolerance = 0.0;
+    Relaxation<CudaSUN> run(*method, *fluid, toDevice(W0), zeitlinDefaultStep(W0, 0.5), options);
+    while (run.advance()) {
+    }
+    return toHost(run.current());
+  };
+  const Matrix first = once(), second = once();
+  EXPECT_TRUE(sameBits(first, second));
+}
+
+// The Casimirs on the device: 1000 steps at N = 1024 keep W's spectrum to 1e-13.
+TEST(CudaRelaxation, KeepsTheSpectrumOverAThousandStepsAtN1024) {
+  SKIP_WITHOUT_GPU();
+  const Eigen::Index n = 1024;
+  const double alpha = 0.5;
+  const Matrix W0 = randomVorticity(n, 23);
+  const auto fluid = makeCudaZeitlinFluid(n, alpha);
+  auto method = makeMethod<CudaSUN>("ddb-cay", fluid);
+  RelaxOptions options;
+  options.max_steps = 1000;
+  options.tolerance = 0.0;
+  Relaxation<CudaSUN> run(*method, *fluid, toDevice(W0), zeitlinDefaultStep(W0, alpha), options);
+  const double initial_energy = run.state().energy;
+  while (run.advance()) {
+  }
+  ASSERT_EQ(run.state().k, 1000) << run.result().failure;
+  const Eigen::VectorXd before = SUN::casimirs(W0), after = SUN::casimirs(toHost(run.current()));
+  EXPECT_LE((after - before).norm() / before.norm(), 1e-13);
+  EXPECT_LT(run.state().energy, initial_energy);
+}
+
+// A relaxation saved on one device resumes on the other: the GPU's record loads into a CPU
+// relaxation and the CPU's into a GPU one, and both follow the uninterrupted run to 1e-12.
+TEST(CudaRelaxation, ACheckpointMovesBetweenTheCpuAndTheGpu) {
+  SKIP_WITHOUT_GPU();
+  const Eigen::Index n = 48;
+  const double alpha = 0.5;
+  const Matrix W0 = randomVorticity(n, 24);
+  const double h = zeitlinDefaultStep(W0, alpha);
+  const auto dense_fluid = makeZeitlinFluid(n, alpha);
+  const auto device_fluid = makeCudaZeitlinFluid(n, alpha);
+  RelaxOptions options;
+  options.max_steps = 40;
+  options.tolerance = 0.0;
+  auto whole_method = makeMethod<SUN>("sddb-cay", dense_fluid);
+  Relaxation<SUN> whole(*whole_method, *dense_fluid, W0, h, options);
+  while (whole.advance()) {
+  }
+  const auto halfway = [&](auto& run) {
+    for (int k = 0; k < 20; ++k) ASSERT_TRUE(run.advance());
+  };
+  // GPU → CPU.
+  {
+    auto first_method = makeMethod<CudaSUN>("sddb-cay", device_fluid);
+    Relaxation<CudaSUN> first(*first_method, *device_fluid, toDevice(W0), h, options);
+    halfway(first);
+    BinaryRecordWriter out;
+    first.save(out);
+    BinaryRecordReader in = BinaryRecordReader::unseal(out.sealed());
+    auto second_method = makeMethod<SUN>("sddb-cay", dense_fluid);
+    Relaxation<SUN> second(*second_method, *dense_fluid, W0, h, options);
+    second.load(in);
+    EXPECT_TRUE(in.atEnd());
+    while (second.advance()) {
+    }
+    EXPECT_EQ(second.state().k, 40);
+    EXPECT_LE(relativeDifference(second.current(), whole.current()), 1e-12);
+  }
+  // CPU → GPU.
+  {
+    auto first_method = makeMethod<SUN>("sddb-cay", dense_fluid);
+    Relaxation<SUN> first(*first_method, *dense_fluid, W0, h, options);
+    halfway(first);
+    BinaryRecordWriter out;
+    first.save(out);
+    BinaryRecordReader in = BinaryRecordReader::unseal(out.sealed());
+    auto second_method = makeMethod<CudaSUN>("sddb-cay", device_fluid);
+    Relaxation<CudaSUN> second(*second_method, *device_fluid, toDevice(W0), h, options);
+    second.load(in);
+    EXPECT_TRUE(in.atEnd());
+    while (second.advance()) {
+    }
+    EXPECT_EQ(second.state().k, 40);
+    EXPECT_LE(relativeDifference(toHost(second.current()), whole.current()), 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace ddb
