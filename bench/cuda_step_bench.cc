@@ -3,8 +3,11 @@
 // solve alone; then, unless cpu_steps is 0, the same step on this machine's CPU (the dense
 // backend, the BLAS's and the library's threads as the environment sets them) against its own
 // product: products per step on each. State: the seeded random vorticity (seed 1,
-// ‖W‖_F = √N), h = fluid-relax's default (systems/zeitlin_step_size.h), α as given; 3 untimed
-// steps fill the predictor. Device memory is what the device holds after the timed steps (the
+// ‖W‖_F = √N; randomVorticity's, without SU(N)'s N <= 4096), α as given, h by fluid-relax's
+// rule (systems/zeitlin_step_size.h) with the spectral norms from 500 power iterations on the
+// device (a host eigensolver at N = 16384 would take longer than the benchmark; up to N = 2048
+// the JSON gives the rule's exact h as h_default beside it); 3 untimed steps fill the
+// predictor. Device memory is what the device holds after the timed steps (the
 // library keeps its workspaces, so it is the run's peak). Prints one JSON object
 // (docs/results/gpu.md; scripts/gpu-check.sh runs the table).
 //
@@ -17,7 +20,9 @@
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <ddb/systems/zeitlin_step_size.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -37,11 +42,31 @@ double perCall(long count, const std::function<void()>& f) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() / count;
 }
 
-long positive(const char* text, const char* name) {
+long integer(const char* text, const char* name, long least) {
   char* end = nullptr;
   const long value = std::strtol(text, &end, 10);
-  if (end == text || *end != '\0' || value < 0) throwInvalid(name, text, "must be an integer >= 0");
+  if (end == text || *end != '\0' || value < least) {
+    throwInvalid(name, text, "must be an integer >= " + std::to_string(least));
+  }
   return value;
+}
+
+// ‖A‖₂ of a skew-Hermitian A (AᴴA = −A²) from `iterations` power iterations of A² on the
+// device, from a seeded random start: a lower bound that converges to it.
+double spectralNormEstimate(const CudaMatrix& A, int iterations) {
+  using Device = MatrixBackend<CudaMatrix>;
+  detail::NormalSource source(2);
+  Eigen::MatrixXcd start(A.rows(), 1);
+  for (Eigen::Index i = 0; i < start.rows(); ++i) start(i) = {source.next(), source.next()};
+  CudaMatrix v = toDevice(start), w;
+  for (int i = 0; i < iterations; ++i) {
+    Device::divide(v, Device::frobeniusNorm(v));
+    Device::multiply(A, v, w);
+    Device::multiply(A, w, v);
+  }
+  Device::divide(v, Device::frobeniusNorm(v));
+  Device::multiply(A, v, w);
+  return Device::frobeniusNorm(w);
 }
 
 int runBench(int argc, char** argv) {
@@ -49,11 +74,11 @@ int runBench(int argc, char** argv) {
     std::fprintf(stderr, "usage: cuda-step-bench N [steps] [alpha] [method] [cpu_steps]\n");
     return 2;
   }
-  const long n = positive(argv[1], "N");
-  const long steps = argc > 2 ? positive(argv[2], "steps") : 10;
+  const long n = integer(argv[1], "N", 2);
+  const long steps = argc > 2 ? integer(argv[2], "steps", 1) : 10;
   const double alpha = argc > 3 ? std::atof(argv[3]) : 0.5;
   const std::string method_name = argc > 4 ? argv[4] : "ddb-cay";
-  const long cpu_steps = argc > 5 ? positive(argv[5], "cpu_steps") : 3;
+  const long cpu_steps = argc > 5 ? integer(argv[5], "cpu_steps", 0) : 3;
   if (const auto why = cudaUnavailable()) {
     std::fprintf(stderr, "cuda-step-bench: %s\n", why->c_str());
     return 2;
@@ -61,8 +86,8 @@ int runBench(int argc, char** argv) {
   constexpr long kWarmUp = 3;
   const long long memory_before = cudaMemory().used;
 
-  const Eigen::MatrixXcd W0 = randomVorticity(n, 1);
-  const double h = zeitlinDefaultStep(W0, alpha);
+  detail::NormalSource source(1);
+  const Eigen::MatrixXcd W0 = detail::normalised(source.complexMatrix(n));
 
   CudaMatrix a = toDevice(W0), b = toDevice(W0), c;
   using Device = MatrixBackend<CudaMatrix>;
@@ -71,6 +96,14 @@ int runBench(int argc, char** argv) {
   CudaPoissonSolver poisson(n);
   poisson.solve(a, c);
   const double poisson_s = perCall(5, [&] { poisson.solve(a, c); });
+
+  // h = min(0.02 ħ/‖P₀‖₂, 4ħ/(|α| ‖W₀‖₂²)), as zeitlinDefaultStep, P₀ in c.
+  constexpr int kPowerIterations = 500;
+  const double hbar = zeitlinHbar(n), w_norm = spectralNormEstimate(a, kPowerIterations);
+  const double h =
+      std::min(kZeitlinContractionRate * hbar / spectralNormEstimate(c, kPowerIterations),
+               kZeitlinStiffness * hbar / (std::abs(alpha) * w_norm * w_norm));
+  const std::string h_default = n <= 2048 ? std::to_string(zeitlinDefaultStep(W0, alpha)) : "null";
 
   const auto fluid = makeCudaZeitlinFluid(n, alpha);
   auto method = makeMethod<CudaSUN>(method_name, fluid);
@@ -108,11 +141,12 @@ int runBench(int argc, char** argv) {
   }
   std::printf(
       "{\"device\": \"%s\", \"n\": %ld, \"alpha\": %g, \"method\": \"%s\", \"steps\": %ld, "
+      "\"h\": %.6g, \"h_default\": %s, "
       "\"product_ms\": %.6g, \"poisson_ms\": %.6g, \"step_ms\": %.6g, \"products_per_step\": "
       "%.4g, \"iterations_per_step\": %.4g, \"device_memory_bytes\": %lld, \"cpu\": %s}\n",
-      cudaDeviceName().c_str(), n, alpha, method_name.c_str(), steps, 1e3 * product_s,
-      1e3 * poisson_s, 1e3 * step_s, step_s / product_s, double(iterations) / double(steps),
-      memory_after - memory_before, cpu.c_str());
+      cudaDeviceName().c_str(), n, alpha, method_name.c_str(), steps, h, h_default.c_str(),
+      1e3 * product_s, 1e3 * poisson_s, 1e3 * step_s, step_s / product_s,
+      double(iterations) / double(steps), memory_after - memory_before, cpu.c_str());
   return 0;
 }
 

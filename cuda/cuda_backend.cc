@@ -7,6 +7,7 @@
 #include <ddb/cuda/detail/cuda_kernels.h>
 #include <ddb/cuda/detail/cuda_libraries.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -34,8 +35,14 @@ void shapeLike(CudaMatrix& out, const CudaMatrix& x) {
   if (!B::sameShape(out, x)) out = CudaMatrix(x.rows(), x.cols());
 }
 
-// out = s·a b + beta·out by one zgemm.
+// out = s·a b + beta·out by one zgemm (nothing to do for an empty product, whose leading
+// dimensions cuBLAS would refuse).
 void gemm(double s, const CudaMatrix& a, const CudaMatrix& b, double beta, CudaMatrix& out) {
+  if (out.size() == 0) return;
+  if (a.cols() == 0) {
+    if (beta == 0.0) B::setZero(out);
+    return;
+  }
   const cuDoubleComplex alpha = make_cuDoubleComplex(s, 0.0), c = make_cuDoubleComplex(beta, 0.0);
   const int m = static_cast<int>(a.rows()), n = static_cast<int>(b.cols()),
             depth = static_cast<int>(a.cols());
@@ -97,10 +104,12 @@ void B::addAdjoint(double s, const X& x, X& out) {
 void B::makeSkewHermitian(X& x) { k::makeSkewHermitian(x.cols(), parts(x)); }
 B::Scalar B::trace(const X& x) {
   double re = 0.0, im = 0.0;
-  k::traceOf(x.rows(), parts(x), &re, &im);
+  k::traceOf(x.rows(), std::min(x.rows(), x.cols()), parts(x), &re, &im);
   return {re, im};
 }
-void B::addToDiagonal(X& x, Scalar c) { k::addToDiagonal(x.rows(), parts(x), c.real(), c.imag()); }
+void B::addToDiagonal(X& x, Scalar c) {
+  k::addToDiagonal(x.rows(), std::min(x.rows(), x.cols()), parts(x), c.real(), c.imag());
+}
 double B::frobeniusNorm(const X& x) { return std::sqrt(k::dot(partCount(x), parts(x), parts(x))); }
 double B::frobeniusDistance(const X& x, const X& y) {
   return std::sqrt(k::squaredDistance(partCount(x), parts(x), parts(y)));

@@ -5,10 +5,9 @@
 #include <ddb/cuda/cuda_poisson_solver.h>
 #include <ddb/cuda/detail/cuda_check.h>
 #include <ddb/cuda/detail/poisson_kernels.h>
+#include <ddb/cuda/detail/sheared_factors.h>
 #include <ddb/cuda/detail/skewed_diagonals.h>
-#include <ddb/systems/hoppe_yau_laplacian.h>
 
-#include <Eigen/Core>
 #include <string>
 #include <vector>
 
@@ -31,22 +30,9 @@ CudaPoissonSolver::CudaPoissonSolver(long n) : device_(std::make_unique<Device>(
   Device& d = *device_;
   d.n = n;
   d.sheared = CudaMatrix(skewed::width(n), n);
-  // The factors of every diagonal (HoppeYauLaplacian::factorBlock), sheared on the host.
-  const std::size_t entries = static_cast<std::size_t>(skewed::width(n) * n);
-  std::vector<double> lower(entries, 0.0), inverse_pivot(entries, 0.0);
-  Eigen::VectorXd diagonal, off, block_lower, block_inverse_pivot;
-  for (long m = -(n - 1); m < n; ++m) {
-    HoppeYauLaplacian::blockCoefficients(n, m, diagonal, off);
-    block_lower.resize(diagonal.size());
-    block_inverse_pivot.resize(diagonal.size());
-    HoppeYauLaplacian::factorBlock(diagonal, off, m == 0, block_lower, block_inverse_pivot);
-    for (long k = 0; k < diagonal.size(); ++k) {
-      const long i = m >= 0 ? k : k - m, j = m >= 0 ? k + m : k;
-      const auto at = static_cast<std::size_t>(skewed::indexOf(n, i, j));
-      lower[at] = block_lower(k);
-      inverse_pivot[at] = block_inverse_pivot(k);
-    }
-  }
+  std::vector<double> lower, inverse_pivot;
+  skewed::shearedFactors(n, lower, inverse_pivot);
+  const std::size_t entries = lower.size();
   for (auto [host, device] : {std::pair{&lower, &d.lower}, {&inverse_pivot, &d.inverse_pivot}}) {
     checkCuda(cudaMalloc(device, sizeof(double) * entries), "cudaMalloc");
     checkCuda(cudaMemcpy(*device, host->data(), sizeof(double) * entries, cudaMemcpyHostToDevice),

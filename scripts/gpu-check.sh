@@ -2,7 +2,8 @@
 # The whole GPU check of the CUDA backend in one command (docs/guide/gpu.md): the device tests
 # (tests/cuda/test_cuda_backend.cc, none may be skipped) and the step benchmark table
 # (bench/cuda_step_bench.cc: N = 1024 … 16384, alpha = 0 and 0.5, with the same step on this
-# machine's CPU up to N = 4096), written as JSON into OUT_DIR. About 6 minutes on an H200.
+# machine's CPU up to N = 4096), written as JSON into OUT_DIR. Not yet timed on a GPU: estimated
+# at 6 to 8 minutes on an H200 with 16 cores, most of it the CPU's side of the comparisons.
 #
 #   scripts/gpu-check.sh OUT_DIR                  build here (build-gpu/), then check
 #   scripts/gpu-check.sh --prebuilt DIR OUT_DIR   check with DIR/bin and DIR/lib from --pack
@@ -58,7 +59,7 @@ echo "== the step benchmark"
 rows="$out/gpu-bench.jsonl"
 : >"$rows"
 bench() {  # N steps alpha method cpu_steps
-  timeout 240 "$bin/cuda-step-bench" "$@" | tee -a "$rows" ||
+  timeout 180 "$bin/cuda-step-bench" "$@" | tee -a "$rows" ||
     echo "{\"n\": $1, \"alpha\": $3, \"method\": \"$4\", \"failed\": true}" | tee -a "$rows"
 }
 for n in 1024 2048 4096; do

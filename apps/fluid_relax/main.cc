@@ -63,15 +63,7 @@ const Matrix& onHost(const CudaMatrix& W, Matrix& buffer) {
 const RelaxResult<SUN>& resultOnHost(const RelaxResult<SUN>& result) { return result; }
 #ifdef DDB_FLUID_RELAX_CUDA
 RelaxResult<SUN> resultOnHost(const RelaxResult<CudaSUN>& result) {
-  RelaxResult<SUN> host;
-  host.final = toHost(result.final);
-  host.last = result.last;
-  host.stop = result.stop;
-  host.steps_rejected = result.steps_rejected;
-  host.runtime_s = result.runtime_s;
-  host.failure = result.failure;
-  host.failed_step = result.failed_step;
-  return host;
+  return resultWithFinal(result, toHost(result.final));
 }
 #endif
 

@@ -7,6 +7,7 @@
 #include <ddb/systems/zeitlin_fluid.h>
 
 #include <string>
+#include <utility>
 
 #include "common/json.h"
 #include "fluid_relax/checkpoint.h"
@@ -21,6 +22,22 @@ namespace ddb::fluid {
 /// otherwise the iterations are null, not applicable); `watch_energy`: whether energy rises
 /// were counted (app::EnergyRises::applies); `device`: where the states lived ("cpu", or
 /// "cuda: " and the GPU's name).
+/// A run's result on another backend with its final state `final` in this process's memory
+/// (fluid-relax-mpi's gathered on rank 0, fluid-relax's copied from the GPU): what runSummary
+/// and the final files read.
+template <class G>
+RelaxResult<SUN> resultWithFinal(const RelaxResult<G>& result, Eigen::MatrixXcd final) {
+  RelaxResult<SUN> host;
+  host.final = std::move(final);
+  host.last = result.last;
+  host.stop = result.stop;
+  host.steps_rejected = result.steps_rejected;
+  host.runtime_s = result.runtime_s;
+  host.failure = result.failure;
+  host.failed_step = result.failed_step;
+  return host;
+}
+
 app::Json runSummary(const Options& o, const Settings& s, const LiePoissonSystem<SUN>& system,
                      const RelaxResult<SUN>& result, const Tally& tally,
                      const std::string& method_name, bool counts_iterations, bool watch_energy,

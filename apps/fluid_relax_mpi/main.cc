@@ -94,19 +94,6 @@ StepFlags agreeOnFlags(const ProcessGrid& grid, StepFlags mine) {
   return {values[0], values[1], values[2]};
 }
 
-/// The run's result with its final state gathered (whole on rank 0): what the summary reads.
-RelaxResult<SUN> gathered(const RelaxResult<DistributedSUN>& result) {
-  RelaxResult<SUN> whole;
-  whole.final = result.final.gather();
-  whole.last = result.last;
-  whole.stop = result.stop;
-  whole.steps_rejected = result.steps_rejected;
-  whole.runtime_s = result.runtime_s;
-  whole.failure = result.failure;
-  whole.failed_step = result.failed_step;
-  return whole;
-}
-
 int relax(MpiRun& run, const ProcessGrid& grid) {
   const auto start = std::chrono::steady_clock::now();
   const Options& o = run.options;
@@ -261,7 +248,9 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   history.finish();
   onRoot([&] { outputs->commit(); });
   if (checkpointed_at != at.k) checkpoint(lengths);
-  const RelaxResult<SUN> result = gathered(relaxation.result());
+  // The final state gathered, whole on rank 0: what the summary reads.
+  const RelaxResult<SUN> result =
+      resultWithFinal(relaxation.result(), relaxation.result().final.gather());
   const double runtime_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   onRoot([&] {

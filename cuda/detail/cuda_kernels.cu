@@ -218,9 +218,9 @@ void makeSkewHermitian(long n, double* x) {
   checkCuda(cudaGetLastError(), "the skew-Hermitian kernel");
 }
 
-void addToDiagonal(long n, double* x, double c_real, double c_imag) {
-  launch(n, [=] __device__(long i) {
-    const long at = 2 * (i + i * n);
+void addToDiagonal(long rows, long count, double* x, double c_real, double c_imag) {
+  launch(count, [=] __device__(long i) {
+    const long at = 2 * (i + i * rows);
     x[at] = x[at] + c_real;
     x[at + 1] = x[at + 1] + c_imag;
   });
@@ -246,11 +246,11 @@ double squaredDistance(long count, const double* x, const double* y) {
       },
       Add(), 0.0);
 }
-void traceOf(long n, const double* x, double* real, double* imag) {
+void traceOf(long rows, long count, const double* x, double* real, double* imag) {
   *real = reduce(
-      n, [=] __device__(long i) { return x[2 * (i + i * n)]; }, Add(), 0.0);
+      count, [=] __device__(long i) { return x[2 * (i + i * rows)]; }, Add(), 0.0);
   *imag = reduce(
-      n, [=] __device__(long i) { return x[2 * (i + i * n) + 1]; }, Add(), 0.0);
+      count, [=] __device__(long i) { return x[2 * (i + i * rows) + 1]; }, Add(), 0.0);
 }
 
 namespace {
@@ -274,7 +274,9 @@ double largestColumnSum(long n, long m, const double* x, bool exact) {
   thread_local double* sums = nullptr;
   thread_local long capacity = 0;
   if (capacity < m) {
-    if (sums != nullptr) checkCuda(cudaFree(sums), "cudaFree");
+    cudaFree(sums);  // nothing to do if it fails: the buffer is dropped either way
+    sums = nullptr;
+    capacity = 0;
     checkCuda(cudaMalloc(&sums, sizeof(double) * m), "cudaMalloc");
     capacity = m;
   }

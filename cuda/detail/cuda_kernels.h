@@ -23,8 +23,8 @@ void flushSubnormals(long count, double* x);
 void addAdjoint(long n, long m, double s, const double* x, double* out);
 /// x ← (x − xᴴ)/2, x n×n, each pair (i, j), (j, i) from one value.
 void makeSkewHermitian(long n, double* x);
-/// x(i, i) += c.
-void addToDiagonal(long n, double* x, double c_real, double c_imag);
+/// x(i, i) += c for i < count = min(rows, cols), x with `rows` rows.
+void addToDiagonal(long rows, long count, double* x, double c_real, double c_imag);
 /// values(s) = x at linear index indices(s) (device arrays of `count`).
 void gather(long count, const double* x, const long* indices, double* values);
 
@@ -34,8 +34,9 @@ void gather(long count, const double* x, const long* indices, double* values);
 double dot(long count, const double* x, const double* y);
 /// Σ (x_k − y_k)² over `count` reals.
 double squaredDistance(long count, const double* x, const double* y);
-/// Σ_i x(i, i) of an n×n complex matrix (real and imaginary parts).
-void traceOf(long n, const double* x, double* real, double* imag);
+/// Σ_i x(i, i), i < count = min(rows, cols), of a complex matrix with `rows` rows (real and
+/// imaginary parts).
+void traceOf(long rows, long count, const double* x, double* real, double* imag);
 /// The largest column sum of |x_ij| over the m columns of an n×m complex matrix, |z| as
 /// √(Re² + Im²) or (exact) hypot(Re, Im); NaN if any sum is NaN.
 double largestColumnSum(long n, long m, const double* x, bool exact);

@@ -3,6 +3,7 @@
 // column and its place along it, and sweeping every column with HoppeYauLaplacian's factors,
 // the means removed as its solve removes them, gives that solve's bits. The kernels run these
 // same functions (cuda/detail/cuda_kernels.cu).
+#include <ddb/cuda/detail/sheared_factors.h>
 #include <ddb/cuda/detail/skewed_diagonals.h>
 #include <ddb/systems/hoppe_yau_laplacian.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
@@ -46,20 +47,8 @@ TEST(SkewedDiagonals, SweepingEveryColumnGivesTheHostSolvesBits) {
 
     // The factors as CudaPoissonSolver lays them out.
     const long width = skewed::width(n);
-    std::vector<double> lower(static_cast<std::size_t>(width * n)), inverse_pivot(lower.size());
-    Eigen::VectorXd diagonal, off, block_lower, block_inverse_pivot;
-    for (long m = -(n - 1); m < n; ++m) {
-      HoppeYauLaplacian::blockCoefficients(n, m, diagonal, off);
-      block_lower.resize(diagonal.size());
-      block_inverse_pivot.resize(diagonal.size());
-      HoppeYauLaplacian::factorBlock(diagonal, off, m == 0, block_lower, block_inverse_pivot);
-      for (long k = 0; k < diagonal.size(); ++k) {
-        const auto at =
-            static_cast<std::size_t>(skewed::indexOf(n, m >= 0 ? k : k - m, m >= 0 ? k + m : k));
-        lower[at] = block_lower(k);
-        inverse_pivot[at] = block_inverse_pivot(k);
-      }
-    }
+    std::vector<double> lower, inverse_pivot;
+    skewed::shearedFactors(n, lower, inverse_pivot);
     // Sheared, the mean off the diagonal, as solve() does it.
     const std::complex<double> mean = W.trace() / std::complex<double>(double(n));
     std::vector<double> values(2 * lower.size());
