@@ -9,8 +9,9 @@
 #   scripts/gpu-check.sh --prebuilt DIR OUT_DIR   check with DIR/bin and DIR/lib from --pack
 #   scripts/gpu-check.sh --pack DIR               build here and put the two programs and the
 #                                                 libraries they need (not CUDA's, not libc's)
-#                                                 into DIR, for a GPU machine without the
-#                                                 Debian packages
+#                                                 into DIR (e.g. build-gpu-pack, which git
+#                                                 ignores; about 53 MB), for a GPU machine
+#                                                 without the Debian packages
 # Exit status: 0 if every test passed on a GPU; 1 if a test failed or was skipped (no GPU).
 set -euo pipefail
 cd "$(dirname "$0")/.."

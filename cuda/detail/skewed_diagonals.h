@@ -38,6 +38,8 @@ DDB_HOST_DEVICE inline long lengthOf(long n, long c) {
 /// imaginary part by the dense solve's operations in its order. The entries and factors of
 /// kChunk rows are read before the chunk's dependent updates: on a GPU a thread then waits
 /// for memory once per chunk, not once per row (the loads do not depend on the recurrence).
+/// Both sweeps go row by row in step across columns (forward from row 1, back from row N − 2),
+/// so that a warp's loads of one row are neighbouring addresses.
 DDB_HOST_DEVICE inline void sweepColumn(long n, long c, double* values, const double* lower,
                                         const double* inverse_pivot) {
   constexpr long kChunk = 8;
@@ -68,18 +70,20 @@ DDB_HOST_DEVICE inline void sweepColumn(long n, long c, double* values, const do
       }
     }
   }
-  // The last row, then back: rows length − 2 … 0, row k with lower_{k+1}.
+  // The last row, then back: rows length − 2 … 0, row r with lower_{r+1}. The chunks count
+  // down from row N − 2 in every column, so that the threads of a warp (neighbouring columns,
+  // whose lengths differ) read the same rows at once; a column skips the rows past its end.
   const long last = (length - 1) * stride + c;
   re *= inverse_pivot[last];
   im *= inverse_pivot[last];
   values[2 * last] = re;
   values[2 * last + 1] = im;
-  for (k = length - 2; k >= 0; k -= kChunk) {
-    const long count = k + 1 < kChunk ? k + 1 : kChunk;  // rows k, k − 1, …, k − count + 1
+  for (k = n - 2; k >= 0; k -= kChunk) {
     DDB_UNROLL
     for (long j = 0; j < kChunk; ++j) {
-      if (j < count) {
-        const long at = (k - j) * stride + c;
+      const long r = k - j;
+      if (r >= 0 && r <= length - 2) {
+        const long at = r * stride + c;
         chunk_re[j] = values[2 * at];
         chunk_im[j] = values[2 * at + 1];
         weight[j] = inverse_pivot[at];
@@ -88,10 +92,11 @@ DDB_HOST_DEVICE inline void sweepColumn(long n, long c, double* values, const do
     }
     DDB_UNROLL
     for (long j = 0; j < kChunk; ++j) {
-      if (j < count) {
+      const long r = k - j;
+      if (r >= 0 && r <= length - 2) {
         re = chunk_re[j] * weight[j] - factor[j] * re;
         im = chunk_im[j] * weight[j] - factor[j] * im;
-        const long at = (k - j) * stride + c;
+        const long at = r * stride + c;
         values[2 * at] = re;
         values[2 * at + 1] = im;
       }
