@@ -12,7 +12,8 @@
 #                                                 into DIR (e.g. build-gpu-pack, which git
 #                                                 ignores; about 53 MB), for a GPU machine
 #                                                 without the Debian packages
-# Exit status: 0 if every test passed on a GPU; 1 if a test failed or was skipped (no GPU).
+# Exit status: 0 if every test passed on a GPU; 1 if a test failed, or if the tests were skipped
+# (no usable GPU), which ends the check before the benchmark.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -53,7 +54,7 @@ echo "== the device tests"
   status=1
 if grep -q '^\[  SKIPPED \]' "$out/gpu-tests.log"; then
   echo "gpu-check: tests were skipped (no usable GPU): the check did not run" >&2
-  status=1
+  exit 1
 fi
 
 echo "== the step benchmark"
