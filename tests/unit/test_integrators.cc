@@ -67,7 +67,7 @@ TEST_P(OrderTest, FittedSlopeMatchesTheoreticalOrder) {
 
 const std::vector<double> kDdbSteps{0.1, 0.05, 0.025, 0.0125, 0.00625};
 // ddb-cay-implicit's first-order term is small beside its second-order one down to h = 0.0125:
-// its slope is fitted below that (docs/reference/conventions.md §2, "Measured orders").
+// its slope is fitted below that (docs/reference/conventions.md §2, "Orders and their tests").
 const std::vector<double> kSmallDdbSteps{0.0125, 0.00625, 0.003125, 0.0015625, 0.00078125};
 const std::vector<double> kRkSteps{0.2, 0.1, 0.05, 0.025, 0.0125};
 const std::vector<double> kSixthOrderSteps{0.5, 0.4, 0.25, 0.2, 0.125};  // divide t_end
