@@ -13,6 +13,8 @@
 
 namespace ddb {
 
+/// \cond detail
+// (Doxygen cannot resolve the detection macros' expressions; detail is not API anyway.)
 namespace detail {
 template <class, class = void>
 struct HasDim : std::false_type {};
@@ -49,6 +51,7 @@ DDB_DETECT_STATIC(HasLog, G::log(std::declval<const M<G>&>()))
 DDB_DETECT_STATIC(HasCasimirs, G::casimirs(std::declval<const D<G>&>()))
 #undef DDB_DETECT_STATIC
 }  // namespace detail
+/// \endcond
 
 /// Compile-time facts about a group G, and the check of its minimum API.
 template <class G>

@@ -20,6 +20,11 @@ for core in Prescott Haswell; do
     -E "_np[0-9]|python|Checkpoint|RunFolder|IoFaults|BadInputs|Plot|FluidRelax|DdbCompare|Determinism|EnergyRises|Cli\\."
 done
 
+# The API reference (docs/CMakeLists.txt): the headers, the docs/ pages and the Python module's
+# docstrings, with Doxygen's warnings as errors.
+echo "== the API reference"
+cmake --build build --target docs
+
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 cmake --install build --prefix "$scratch/prefix"
