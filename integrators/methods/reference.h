@@ -78,7 +78,7 @@ class ReferenceSolver : public OneStepMethod<G> {
 
   /// Sub-steps one trajectory may take, from reset() on (docs/reference/guarantees.md §1; about
   /// 2 s for the rigid body, whose Scenario B over 250 time units needs a few thousand:
-  /// docs/results/benchmarks.md, "Worst-case times of the apps (issue 11)").
+  /// docs/results/benchmarks.md, "Worst-case times of the apps").
   static constexpr long kDefaultMaxSubsteps = 1'000'000;
   /// A sub-step below this fraction of max(|t|, h) advances t by round-off only: the
   /// field is too stiff (|α| = 1e308) or too fast for the tolerance, and the controller
