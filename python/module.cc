@@ -1,6 +1,9 @@
 // The `ddb` Python module: the library's systems, the method table and integrate() on
 // NumPy arrays (docs/guide/python.md).
+#include <ddb/core/openblas_kernels.h>
 #include <pybind11/pybind11.h>
+
+#include <string>
 
 #include "bindings.h"
 
@@ -19,4 +22,9 @@ PYBIND11_MODULE(ddb, m) {
   ddb::python::bindUserSystem(m);
   ddb::python::bindMethods(m);
   ddb::python::bindIntegrate(m);
+  // Said once, at import, as the apps say it when a run starts (core/openblas_kernels.h).
+  if (const std::string advice = ddb::openblasKernelAdvice(); !advice.empty()) {
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, advice.c_str(), 1) != 0)
+      throw pybind11::error_already_set();
+  }
 }

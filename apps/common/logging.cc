@@ -1,7 +1,10 @@
 #include "common/logging.h"
 
+#include <ddb/core/openblas_kernels.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
+
+#include <string>
 
 namespace ddb::app {
 
@@ -17,6 +20,12 @@ void setupLogging(const LogFlags& flags) {
   spdlog::set_level(flags.quiet     ? spdlog::level::err
                     : flags.verbose ? spdlog::level::debug
                                     : spdlog::level::info);
+}
+
+void warnAboutSlowBlasKernels() {
+  if (const std::string advice = openblasKernelAdvice(); !advice.empty()) {
+    spdlog::warn("{}", advice);
+  }
 }
 
 }  // namespace ddb::app

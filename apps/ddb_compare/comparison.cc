@@ -17,6 +17,7 @@
 #include "common/atomic_file.h"
 #include "common/energy_rises.h"
 #include "common/exit_status.h"
+#include "common/logging.h"
 #include "common/progress.h"
 #include "common/spectrum_drift.h"
 #include "ddb_compare/report.h"
@@ -134,6 +135,7 @@ int runComparison(const Options& o, const Settings& s, const Problem<G>& problem
                adaptive ? "capped" : std::to_string(s.steps) + " steps", t_reached,
                s.relax.tolerance > 0 ? fmt::format(", until r <= {}", s.relax.tolerance) : "",
                o.methods.empty() ? "all" : o.methods);
+  app::warnAboutSlowBlasKernels();
 
   // err_final's reference: the adaptive solver in one sweep to each run's final time
   // (t_reached but for runs that --until-steady or --adaptive ended elsewhere).

@@ -127,6 +127,7 @@ int relax(const std::shared_ptr<const LiePoissonSystem<G>>& system,
                  init_text, o.method, s.steps, s.h, s.default_h ? " (default)" : "",
                  static_cast<double>(s.steps) * s.h);
   }
+  app::warnAboutSlowBlasKernels();
   const app::SpectrumDrift<SUN> spectrumDrift(s.W0);
 
   HistoryFiles files(o, s, *host_fluid, resume);

@@ -160,6 +160,7 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
                s.relax.control.adaptive ? "adaptive steps from h = "
                                         : fmt::format("{} steps of h = ", s.steps),
                s.h, s.default_h && resume == nullptr ? " (default)" : "");
+  app::warnAboutSlowBlasKernels();
 
   const bool watch_energy =
       app::EnergyRises::applies(findMethod(o.method)->keeps_casimirs, s.alpha);

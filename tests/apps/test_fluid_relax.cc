@@ -3,6 +3,7 @@
 // W_final.csv against the library called directly, the spectrum kept to round-off, the energy
 // monotone in the direction of alpha's sign, the --init-file round trip, and every bad input (exit
 // status 2, a message naming the flag, nothing written).
+#include <ddb/core/openblas_kernels.h>
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
@@ -18,6 +19,7 @@
 #include <sstream>
 
 #include "app_test_support.h"
+#include "cpu_flags.h"
 
 namespace {
 
@@ -440,6 +442,35 @@ TEST(FluidRelax, DeviceCudaFollowsTheCpuRunOrIsRefusedSayingWhy) {
         << "resumed on " << device;
   }
   for (const fs::path& folder : {cpu, gpu, whole}) fs::remove_all(folder);
+}
+
+// Under OpenBLAS's generic Prescott kernels on a CPU with AVX2 (what Debian 12's OpenBLAS picks on
+// CPUs newer than itself), a run says so once, naming OPENBLAS_CORETYPE; under Haswell's kernels
+// it says nothing; a refusal stays one line (docs/guide/performance.md, "OpenBLAS's kernels").
+TEST(FluidRelax, SaysOnceWhenOpenBlasRunsKernelsBelowTheCpus) {
+  if (ddb::openblasCoreName().empty()) GTEST_SKIP() << "the BLAS is not OpenBLAS";
+  if (!cpuHasAvx2()) GTEST_SKIP() << "no AVX2: no kernels better than Prescott's to name";
+  const auto count = [](const std::string& text, const std::string& what) {
+    long n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+  };
+  const std::string wide =
+      cpuHasAvx512() ? "OPENBLAS_CORETYPE=SkylakeX" : "OPENBLAS_CORETYPE=Haswell";
+  for (const std::string core : {"Prescott", "Haswell"}) {
+    const fs::path out = freshFolder("kernels_" + core);
+    const RunEnvironment environment{{"OPENBLAS_CORETYPE=" + core}};
+    const AppResult r =
+        runProgram(FLUID_RELAX_PATH, "--n 8 --steps 2 --out " + out.string(), environment);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(count(r.error, "OPENBLAS_CORETYPE="), core == "Prescott" ? 1 : 0) << r.error;
+    if (core == "Prescott") EXPECT_THAT(r.error, ::testing::HasSubstr(wide)) << r.error;
+    const AppResult bad = runProgram(
+        FLUID_RELAX_PATH, "--n 8 --steps -1 --out " + out.string() + "_bad", environment);
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_EQ(count(bad.error, "\n"), 1) << bad.error;
+    fs::remove_all(out);
+  }
 }
 
 TEST(FluidRelax, HelpListsMethodsInitsAndDefaults) {

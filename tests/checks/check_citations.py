@@ -14,7 +14,8 @@ docs themselves, optionally followed by a section and a heading:
 
 as comments wrap them (across comment leaders). A title matches when it is the cited text, or
 begins with it followed by ":", ".", "," or " (" (backticks ignored): "Run folders" names
-"Run folders: one writer, `--overwrite`".
+"Run folders: one writer, `--overwrite`". A path in backticks, as the docs write it, counts
+as well.
 
     python3 tests/checks/check_citations.py <source tree>
 """
@@ -27,7 +28,7 @@ SKIPPED_DIRS = {".git", "build", "docs/html", "docs/data", "docs/figures"}
 COMMENT_LEADER = re.compile(r"\n[ \t]*(?:///?|#+|\*|>)?[ \t]*")
 CITATION = re.compile(
     r"docs/([A-Za-z0-9_./-]+?)(\.md|\.png|\.jsonl|\.html)?(?![A-Za-z0-9_/-])"
-    r"(?:\s+§(\d+))?(?:,\s+\"([^\"\n]+)\")?"
+    r"`?(?:\s+§(\d+))?(?:,\s+\"([^\"\n]+)\")?"
 )
 HEADING = re.compile(r"^#+\s+(.*?)\s*$", re.M)
 RUN_IN_TITLE = re.compile(r"^(?:[*-][ \t]+)?\*\*(.+?)\*\*", re.M)

@@ -1,5 +1,7 @@
 """The module's contract: Casimirs against independent formulas, the method table, `every`,
 failed solves as ddb.SolveFailure with the valid prefix, and bad arguments as ValueError."""
+import os
+import subprocess
 import sys
 import threading
 import time
@@ -267,3 +269,36 @@ def test_a_decay_into_the_subnormal_range_ends_on_the_axis():
     assert np.any((m[:, 0] != 0) & (np.abs(m[:, 0]) < 1e-300))  # it did pass close by
     np.testing.assert_array_equal(m[-1, [0, 2]], [0.0, 0.0])
     assert m[-1, 1] == pytest.approx(-np.linalg.norm(mu0), rel=1e-15)
+
+
+# Under OpenBLAS's generic Prescott kernels on a CPU with AVX2 (what Debian 12's OpenBLAS picks
+# on CPUs newer than itself), importing the module says so once, naming OPENBLAS_CORETYPE;
+# under Haswell's kernels it says nothing (docs/guide/performance.md, "OpenBLAS's kernels").
+IMPORT_CHILD = r"""
+import ddb
+with open("/proc/self/maps") as maps:
+    print("openblas" in maps.read())
+"""
+
+
+def test_import_says_once_when_openblas_runs_kernels_below_the_cpus():
+    try:
+        with open("/proc/cpuinfo") as info:
+            flags = next(line for line in info if line.startswith("flags")).split()
+    except (OSError, StopIteration):
+        pytest.skip("no /proc/cpuinfo flags")
+    if "avx2" not in flags or "fma" not in flags:
+        pytest.skip("no AVX2: no kernels better than Prescott's to name")
+    avx512 = all(f in flags for f in ("avx512f", "avx512bw", "avx512dq", "avx512vl"))
+    for core in ("Prescott", "Haswell"):
+        child = subprocess.run([sys.executable, "-c", IMPORT_CHILD], capture_output=True,
+                               text=True, env={**os.environ, "OPENBLAS_CORETYPE": core})
+        assert child.returncode == 0, child.stderr
+        if child.stdout.strip() != "True":
+            pytest.skip("the module's BLAS is not OpenBLAS")
+        said = child.stderr.count("OPENBLAS_CORETYPE=")
+        assert said == (1 if core == "Prescott" else 0), child.stderr
+        if core == "Prescott":
+            assert "RuntimeWarning" in child.stderr
+            assert ("OPENBLAS_CORETYPE=SkylakeX" if avx512 else
+                    "OPENBLAS_CORETYPE=Haswell") in child.stderr
