@@ -123,9 +123,14 @@ int relax(const std::shared_ptr<const LiePoissonSystem<G>>& system,
     spdlog::info("N = {}, alpha = {}, {}, Newton search to r <= {}, at most {} iterations", n,
                  s.alpha, init_text, s.relax.tolerance, s.steps);
   } else {
-    spdlog::info("N = {}, alpha = {}, {}, {}: {} steps of h = {}{} to t = {}", n, s.alpha,
-                 init_text, o.method, s.steps, s.h, s.default_h ? " (default)" : "",
-                 static_cast<double>(s.steps) * s.h);
+    // With --adaptive h changes, so the cap is a number of steps, not a time.
+    const std::string steps_text =
+        s.relax.control.adaptive
+            ? fmt::format("adaptive steps from h = {}{}, at most {}", s.h,
+                          s.default_h ? " (default)" : "", s.steps)
+            : fmt::format("{} steps of h = {}{} to t = {}", s.steps, s.h,
+                          s.default_h ? " (default)" : "", static_cast<double>(s.steps) * s.h);
+    spdlog::info("N = {}, alpha = {}, {}, {}: {}", n, s.alpha, init_text, o.method, steps_text);
   }
   app::warnAboutSlowBlasKernels();
   const app::SpectrumDrift<SUN> spectrumDrift(s.W0);

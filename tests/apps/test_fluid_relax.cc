@@ -464,7 +464,9 @@ TEST(FluidRelax, SaysOnceWhenOpenBlasRunsKernelsBelowTheCpus) {
         runProgram(FLUID_RELAX_PATH, "--n 8 --steps 2 --out " + out.string(), environment);
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_EQ(count(r.error, "OPENBLAS_CORETYPE="), core == "Prescott" ? 1 : 0) << r.error;
-    if (core == "Prescott") EXPECT_THAT(r.error, ::testing::HasSubstr(wide)) << r.error;
+    if (core == "Prescott") {
+      EXPECT_THAT(r.error, ::testing::HasSubstr(wide)) << r.error;
+    }
     const AppResult bad = runProgram(
         FLUID_RELAX_PATH, "--n 8 --steps -1 --out " + out.string() + "_bad", environment);
     EXPECT_EQ(bad.status, 2);

@@ -4,6 +4,7 @@
 #include <ddb/core/openblas_kernels.h>
 #include <gmock/gmock.h>
 
+#include <Eigen/Core>
 #include <cstdlib>
 #include <string>
 
@@ -45,12 +46,18 @@ TEST(OpenblasKernels, TheCpusVectorUnitsAreThoseProcCpuinfoLists) {
 // OpenBLAS takes OPENBLAS_CORETYPE as the core it runs (scripts/test.sh runs the numerical
 // suites under Prescott and Haswell): the core read back is the one set.
 TEST(OpenblasKernels, TheCoreReadBackIsTheOneOpenblasCoretypeSets) {
+  // A product through the BLAS (EIGEN_USE_BLAS), as the library's are: without one the linker
+  // would drop the BLAS from this program, and there would be no core to read.
+  const Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(64, 64);
+  ASSERT_EQ(identity * identity, identity);
   const std::string core = openblasCoreName();
   if (core.empty()) GTEST_SKIP() << "the BLAS is not OpenBLAS";
   const char* set = std::getenv("OPENBLAS_CORETYPE");
   if (set == nullptr) GTEST_SKIP() << "OPENBLAS_CORETYPE not set; OpenBLAS runs " << core;
   EXPECT_EQ(core, set);
-  if (std::string(set) == "Prescott" && cpuHasAvx2()) EXPECT_NE(openblasKernelAdvice(), "");
+  if (std::string(set) == "Prescott" && cpuHasAvx2()) {
+    EXPECT_NE(openblasKernelAdvice(), "");
+  }
 }
 
 }  // namespace
