@@ -14,6 +14,7 @@
 // Weak: resolved only when the BLAS this process loaded is OpenBLAS (another BLAS, or none,
 // leaves it null).
 extern "C" char* openblas_get_corename(void) __attribute__((weak));
+extern "C" char* openblas_get_config(void) __attribute__((weak));
 #endif
 
 namespace ddb {
@@ -28,6 +29,19 @@ inline std::string openblasCoreName() {
   if (openblas_get_corename != nullptr) {
     const char* name = openblas_get_corename();
     if (name != nullptr) return name;
+  }
+#endif
+  return "";
+}
+
+/// OpenBLAS's build configuration ("OpenBLAS 0.3.21 ... DYNAMIC_ARCH ..."), or "" when the BLAS
+/// is not OpenBLAS. Only a DYNAMIC_ARCH build picks its kernels at load time and obeys
+/// OPENBLAS_CORETYPE; one built for a TARGET runs that target's kernels.
+inline std::string openblasConfig() {
+#if defined(__GNUC__) && defined(__ELF__)
+  if (openblas_get_config != nullptr) {
+    const char* config = openblas_get_config();
+    if (config != nullptr) return config;
   }
 #endif
   return "";

@@ -135,7 +135,8 @@ int runComparison(const Options& o, const Settings& s, const Problem<G>& problem
                adaptive ? "capped" : std::to_string(s.steps) + " steps", t_reached,
                s.relax.tolerance > 0 ? fmt::format(", until r <= {}", s.relax.tolerance) : "",
                o.methods.empty() ? "all" : o.methods);
-  app::warnAboutSlowBlasKernels();
+  // Only the matrix groups' steps are BLAS products; the small groups' never reach the BLAS.
+  if constexpr (isDynamicGroup<G>) app::warnAboutSlowBlasKernels();
 
   // err_final's reference: the adaptive solver in one sweep to each run's final time
   // (t_reached but for runs that --until-steady or --adaptive ended elsewhere).
