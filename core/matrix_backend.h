@@ -31,6 +31,9 @@
 
 namespace ddb {
 
+template <class Matrix>
+class SkewHermitianEigenbasis;  // core/skew_hermitian_eigenbasis.h
+
 template <class X>
 struct MatrixBackend {
   using Scalar = typename X::Scalar;
@@ -38,6 +41,12 @@ struct MatrixBackend {
   /// LU factors of A in place and solves X ← A⁻¹X, workspaces reused (factor(A) returns
   /// false when A is singular).
   using Lu = DenseLu<X>;
+  /// The spectral calculus of a skew-Hermitian x, x = V diag(iθ) Vᴴ: compute(x) (false when
+  /// x is not finite), adRadius() = θ_max − θ_min, and apply(f, scale, in, out),
+  /// out = V [F ∘ (Vᴴ in V)] Vᴴ with F_ab = f(scale (θ_a − θ_b)) for the functions of
+  /// core/phase_function.h. Defined in core/skew_hermitian_eigenbasis.h, which its users
+  /// include.
+  using Eigenbasis = SkewHermitianEigenbasis<X>;
 
   // ---- Element-wise operations. Each entry of the result is its own expression of the
   // operands' entries at the same place, computed as written (left to right, no fused

@@ -2,7 +2,8 @@
 // docs/design/matrix-backend.md) of a matrix in one GPU's memory, so that the matrix groups'
 // step formulas run unchanged on the device: SUNOn<CudaMatrix> with the method table's
 // kBackendMatrixGroups family, integrate() and Relaxation. Products are cuBLAS's zgemm, LU
-// factors and solves cuSOLVER's zgetrf/zgetrs (cuda/cuda_lu.h), everything else the kernels
+// factors and solves cuSOLVER's zgetrf/zgetrs (cuda/cuda_lu.h), the exponential's eigenbasis
+// cuSOLVER's zheevd (cuda/cuda_eigenbasis.h), everything else the kernels
 // of cuda/detail/cuda_kernels.cu. Values leave the device only where a formula branches on
 // them (the reductions return a double) and in save, describe and sampleEntries.
 //
@@ -15,6 +16,7 @@
 #include <ddb/core/binary_record.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/matrix_backend.h>
+#include <ddb/cuda/cuda_eigenbasis.h>
 #include <ddb/cuda/cuda_lu.h>
 #include <ddb/cuda/cuda_matrix.h>
 
@@ -29,6 +31,7 @@ struct MatrixBackend<CudaMatrix> {
   using X = CudaMatrix;
   using Scalar = std::complex<double>;
   using Lu = CudaLu;
+  using Eigenbasis = CudaEigenbasis;
 
   // ---- Element-wise operations (the contract's table): the dense backend's expressions. ----
   static void copy(const X& x, X& out);

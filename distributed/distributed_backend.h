@@ -4,7 +4,8 @@
 // formula share a layout, so the element-wise operations are the dense backend's on this
 // rank's local arrays. Products are pzgemm_,
 // adjoints an AdjointExchange, the 1-norm from column sums as the dense backend's, LU factors and
-// solves pzgetrf_ + pzgetrs_; sums over the ranks are ProcessGrid::sum (the same bits on every
+// solves pzgetrf_ + pzgetrs_, the exponential's eigenbasis pzheevd_ (distributed_eigenbasis.h);
+// sums over the ranks are ProcessGrid::sum (the same bits on every
 // rank). All functions are collective.
 #pragma once
 
@@ -12,6 +13,7 @@
 #include <ddb/core/errors.h>
 #include <ddb/core/matrix_backend.h>
 #include <ddb/distributed/adjoint_exchange.h>
+#include <ddb/distributed/distributed_eigenbasis.h>
 #include <ddb/distributed/distributed_lu.h>
 #include <ddb/distributed/distributed_matrix.h>
 #include <ddb/distributed/distributed_product.h>
@@ -35,6 +37,7 @@ struct MatrixBackend<DistributedMatrix> {
   using Scalar = std::complex<double>;
   using Entries = Eigen::MatrixXcd;
   using Lu = DistributedLu;
+  using Eigenbasis = DistributedEigenbasis;
   using Dense = MatrixBackend<Entries>;
 
   // The element-wise operations (core/matrix_backend.h) on the local arrays.

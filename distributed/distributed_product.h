@@ -11,11 +11,15 @@
 
 namespace ddb {
 
-/// c = alpha·a·b + beta·c (pzgemm_); the three matrices share the grid, N and the block size,
-/// and c aliases neither.
+/// How a factor of a product enters it: as it is or as its adjoint (conjugate transpose).
+enum class Factor : char { kAsIs = 'N', kAdjoint = 'C' };
+
+/// c = alpha·op_a(a)·op_b(b) + beta·c (pzgemm_); the three matrices share the grid, N and the
+/// block size, and c aliases neither.
 inline void multiplyInto(std::complex<double> alpha, const DistributedMatrix& a,
                          const DistributedMatrix& b, std::complex<double> beta,
-                         DistributedMatrix& c) {
+                         DistributedMatrix& c, Factor op_a = Factor::kAsIs,
+                         Factor op_b = Factor::kAsIs) {
   for (const DistributedMatrix* m : {&b, static_cast<const DistributedMatrix*>(&c)}) {
     if (m->size() != a.size() || m->layout().block() != a.layout().block() ||
         &m->layout().grid() != &a.layout().grid()) {
@@ -28,8 +32,9 @@ inline void multiplyInto(std::complex<double> alpha, const DistributedMatrix& a,
   }
   if (&c == &a || &c == &b) throwInvalid("product", "c", "must not alias a factor");
   const int n = a.size(), one = 1;
-  pzgemm_("N", "N", &n, &n, &n, &alpha, a.data(), &one, &one, a.descriptor(), b.data(), &one, &one,
-          b.descriptor(), &beta, c.data(), &one, &one, c.descriptor());
+  const char transa = static_cast<char>(op_a), transb = static_cast<char>(op_b);
+  pzgemm_(&transa, &transb, &n, &n, &n, &alpha, a.data(), &one, &one, a.descriptor(), b.data(),
+          &one, &one, b.descriptor(), &beta, c.data(), &one, &one, c.descriptor());
 }
 
 /// c = a·b.

@@ -35,6 +35,11 @@ void pzgetrf_(const int* m, const int* n, std::complex<double>* a, const int* ia
 void pzgetrs_(const char* trans, const int* n, const int* nrhs, const std::complex<double>* a,
               const int* ia, const int* ja, const int* desca, const int* ipiv,
               std::complex<double>* b, const int* ib, const int* jb, const int* descb, int* info);
+void pzheevd_(const char* jobz, const char* uplo, const int* n, std::complex<double>* a,
+              const int* ia, const int* ja, const int* desca, double* w, std::complex<double>* z,
+              const int* iz, const int* jz, const int* descz, std::complex<double>* work,
+              const int* lwork, double* rwork, const int* lrwork, int* iwork, const int* liwork,
+              int* info);
 double pzlange_(const char* norm, const int* m, const int* n, const std::complex<double>* a,
                 const int* ia, const int* ja, const int* desca, double* work);
 }

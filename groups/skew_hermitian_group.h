@@ -14,7 +14,7 @@
 #include <ddb/core/errors.h>
 #include <ddb/core/lie_group.h>
 #include <ddb/core/matrix_backend.h>
-#include <ddb/groups/skew_hermitian_eigenbasis.h>
+#include <ddb/core/skew_hermitian_eigenbasis.h>
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>

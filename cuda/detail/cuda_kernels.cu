@@ -218,6 +218,17 @@ void makeSkewHermitian(long n, double* x) {
   checkCuda(cudaGetLastError(), "the skew-Hermitian kernel");
 }
 
+void weighByPhases(long n, const double* phases, double scale, PhaseFunction f, double* x) {
+  launch(n * n, [=] __device__(long k) {
+    const long a = k % n, b = k / n;
+    double fr, fi;
+    phaseFunctionParts(f, scale * (phases[a] - phases[b]), fr, fi);
+    const double xr = x[2 * k], xi = x[2 * k + 1];
+    x[2 * k] = xr * fr - xi * fi;
+    x[2 * k + 1] = xr * fi + xi * fr;
+  });
+}
+
 void addToDiagonal(long rows, long count, double* x, double c_real, double c_imag) {
   launch(count, [=] __device__(long i) {
     const long at = 2 * (i + i * rows);

@@ -4,6 +4,8 @@
 // treats real and imaginary parts alike. Everything runs on the default stream, in order.
 #pragma once
 
+#include <ddb/core/phase_function.h>
+
 namespace ddb::cuda_kernels {
 
 // ---- Element-wise, over `count` reals, evaluated as written (no fused multiply-add). ----
@@ -25,6 +27,9 @@ void addAdjoint(long n, long m, double s, const double* x, double* out);
 void makeSkewHermitian(long n, double* x);
 /// x(i, i) += c for i < count = min(rows, cols), x with `rows` rows.
 void addToDiagonal(long rows, long count, double* x, double c_real, double c_imag);
+/// x(a, b) ← f(scale (θ_a − θ_b))·x(a, b) for the n×n x and the n phases θ (a device array):
+/// an eigenbasis's weights (core/phase_function.h, cuda/cuda_eigenbasis.h).
+void weighByPhases(long n, const double* phases, double scale, PhaseFunction f, double* x);
 /// values(s) = x at linear index indices(s) (device arrays of `count`).
 void gather(long count, const double* x, const long* indices, double* values);
 

@@ -8,17 +8,15 @@
 //     Ad*_{cay(2b)} μ = (I − b) q (I + b) = μ − 2[b, q]      (an LU, two solves, a product);
 //   exp: Ad*_{exp x} multiplies entry (a, b) of x's eigenbasis by e^{−iδ}, δ = θ_a − θ_b:
 //     μ + V [(e^{−iδ} − 1) ∘ Vᴴ μ V] Vᴴ                      (a decomposition, four products).
-// Workspaces are allocated when a size first appears, then reused. The Cayley conjugation
-// is written against the matrix backend (core/matrix_backend.h): Dual may be a distributed
-// matrix. Which one a retraction uses is MatrixRetraction<R>::Conjugation
-// (matrix_retraction.h).
+// Workspaces are allocated when a size first appears, then reused. Both are written against
+// the matrix backend (core/matrix_backend.h): Dual may be a distributed matrix. Which one a
+// retraction uses is MatrixRetraction<R>::Conjugation (matrix_retraction.h).
 #pragma once
 
 #include <ddb/core/errors.h>
 #include <ddb/core/matrix_backend.h>
-#include <ddb/groups/skew_hermitian_eigenbasis.h>
+#include <ddb/core/skew_hermitian_eigenbasis.h>
 
-#include <Eigen/Core>
 #include <cmath>
 
 namespace ddb {
@@ -79,28 +77,32 @@ class MatrixCayleyConjugation {
   typename B::Lu lu_;
 };
 
-/// The exponential (closed form or truncated dexp⁻¹ alike: τ is exp), on dense matrices.
-template <class G>
+/// The exponential (closed form or truncated dexp⁻¹ alike: τ is exp), in the backend's
+/// eigenbasis (MatrixBackend<Dual>::Eigenbasis).
+template <class G, class Dual = typename G::template Dual<double>>
 class MatrixExponentialConjugation {
+  using B = MatrixBackend<Dual>;
+
  public:
-  using Dual = typename G::template Dual<double>;
+  using Eigenbasis = typename B::Eigenbasis;
 
   /// x's eigenbasis.
   void prepare(const Dual& x) {
     if (!basis_.compute(x)) {
-      throw NonFiniteState("exponential conjugation", -1, NAN, NAN, x, "argument");
+      throw NonFiniteState("exponential conjugation", -1, NAN, NAN, B::describe(x), "argument");
     }
   }
   void apply(Dual& mu) { applyWith(basis_, 1.0, mu); }
 
   /// μ ← Ad*_{exp(scale·y)} μ, given the eigenbasis of y.
-  void applyWith(SkewHermitianEigenbasis<Dual>& basis, double scale, Dual& mu) {
-    basis.apply([](double eta) { return expm1OfI(-eta); }, scale, mu, increment_);
-    mu += increment_;
+  void applyWith(Eigenbasis& basis, double scale, Dual& mu) {
+    if (!B::sameShape(increment_, mu)) B::zeroLike(increment_, mu);
+    basis.apply(PhaseFunction::kCoadjointIncrement, scale, mu, increment_);
+    B::axpy(1.0, increment_, mu);
   }
 
  private:
-  SkewHermitianEigenbasis<Dual> basis_;
+  Eigenbasis basis_;
   Dual increment_;
 };
 

@@ -5,11 +5,12 @@
 //     a p the update reuses, with a certified frozen solution and Newton–Krylov as the
 //     fallback (Cayley); in ξ's eigenbasis, which the update reuses (exp with the closed
 //     form dexp⁻¹); or by the truncated dexp⁻¹ series (the paper's ddb-exp);
-//   - kAnyBackend, whether it runs on any matrix backend (core/matrix_backend.h) or needs
-//     dense matrices (an eigendecomposition);
 //   - Conjugation, μ ← Ad*_{τ(x)} μ as an increment (matrix_conjugation.h);
 //   - Transport, DDB's update M ← Ad*_{τ(hξ) τ(hφ)} M from the solver's results;
 //   - applySolvedFlow, Ad*_{τ(hξ)} μ from what the solver left, where it can.
+// Each is written against the matrix backend (core/matrix_backend.h), the exponential's
+// spectral calculus through the backend's Eigenbasis, so every retraction runs on any
+// backend.
 // A new retraction of matrix groups is one more specialisation (and a row in the method
 // table, method_table.h).
 #pragma once
@@ -33,7 +34,6 @@ struct MatrixRetraction;
 template <class G>
 struct MatrixRetraction<Cayley<G>> {
   static constexpr MatrixSweep kSweep = MatrixSweep::kProductForm;
-  static constexpr bool kAnyBackend = true;
   template <class Dual>
   using Conjugation = MatrixCayleyConjugation<G, Dual>;
   template <class System>
@@ -53,11 +53,10 @@ struct MatrixRetraction<Cayley<G>> {
 template <class G>
 struct MatrixRetraction<Exponential<G>> {
   static constexpr MatrixSweep kSweep = MatrixSweep::kEigenbasis;
-  static constexpr bool kAnyBackend = false;
   template <class Dual>
-  using Conjugation = MatrixExponentialConjugation<G>;
+  using Conjugation = MatrixExponentialConjugation<G, Dual>;
   template <class System>
-  using Transport = MatrixExponentialTransport<Exponential<G>>;
+  using Transport = MatrixExponentialTransport<Exponential<G>, System>;
 
   /// μ ← Ad*_{exp(hξ)} μ in ξ's eigenbasis, which the solve left.
   template <class Solver, class Dual>
@@ -70,11 +69,10 @@ struct MatrixRetraction<Exponential<G>> {
 template <class G>
 struct MatrixRetraction<TruncatedExponential<G>> {
   static constexpr MatrixSweep kSweep = MatrixSweep::kSeries;
-  static constexpr bool kAnyBackend = false;
   template <class Dual>
-  using Conjugation = MatrixExponentialConjugation<G>;
+  using Conjugation = MatrixExponentialConjugation<G, Dual>;
   template <class System>
-  using Transport = MatrixExponentialTransport<TruncatedExponential<G>>;
+  using Transport = MatrixExponentialTransport<TruncatedExponential<G>, System>;
 
   /// The series sweep leaves no eigenbasis: the caller forms exp(hξ).
   template <class Solver, class Dual>

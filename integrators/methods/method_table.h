@@ -88,10 +88,10 @@ inline constexpr std::array<MethodInfo, 15> kMethods{{
    kFixedSizeGroups | kMatrixGroups | kBackendMatrixGroups, true, false, false, 1, 2,
    MethodKind::kDdb, RetractionKind::kCayley, SchemeKind::kNone, ""},
   {"ddb-exp", "DDB step with exp, dexp^-1 series truncated at order 2 as in the paper",
-   kFixedSizeGroups | kMatrixGroups, true, false, false, 1, 2,
+   kFixedSizeGroups | kMatrixGroups | kBackendMatrixGroups, true, false, false, 1, 2,
    MethodKind::kDdb, RetractionKind::kTruncatedExponential2, SchemeKind::kNone, ""},
   {"ddb-exp-exact", "DDB step with exp and the closed-form dexp^-1",
-   kFixedSizeGroups | kMatrixGroups, true, false, false, 1, 2,
+   kFixedSizeGroups | kMatrixGroups | kBackendMatrixGroups, true, false, false, 1, 2,
    MethodKind::kDdb, RetractionKind::kExponential, SchemeKind::kNone, ""},
   {"ddb-cay-implicit",
    "DDB Cayley step, dissipative factor linearly implicit: moves the energy the flow's way at any h (order 1, order 2 at alpha = 0)",
@@ -111,16 +111,16 @@ inline constexpr std::array<MethodInfo, 15> kMethods{{
    kFixedSizeGroups | kMatrixGroups | kBackendMatrixGroups, true, false, false, 2, 2,
    MethodKind::kSymmetricDdb, RetractionKind::kCayley, SchemeKind::kNone, ""},
   {"sddb-exp", "one-step symmetric DDB, exp (order 2)",
-   kFixedSizeGroups | kMatrixGroups, true, false, false, 2, 2,
+   kFixedSizeGroups | kMatrixGroups | kBackendMatrixGroups, true, false, false, 2, 2,
    MethodKind::kSymmetricDdb, RetractionKind::kExponential, SchemeKind::kNone, ""},
   {"ddb4-cay", "triple jump of sddb-cay (order 4)",
    kFixedSizeGroups | kMatrixGroups | kBackendMatrixGroups, true, false, false, 4, 4,
    MethodKind::kComposition, RetractionKind::kNone, SchemeKind::kTripleJump, "sddb-cay"},
   {"ddb4-exp", "triple jump of sddb-exp (order 4)",
-   kFixedSizeGroups | kMatrixGroups, true, false, false, 4, 4,
+   kFixedSizeGroups | kMatrixGroups | kBackendMatrixGroups, true, false, false, 4, 4,
    MethodKind::kComposition, RetractionKind::kNone, SchemeKind::kTripleJump, "sddb-exp"},
   {"ddb6-exp", "Yoshida's 7-stage composition of sddb-exp (order 6)",
-   kFixedSizeGroups | kMatrixGroups, true, false, false, 6, 6,
+   kFixedSizeGroups | kMatrixGroups | kBackendMatrixGroups, true, false, false, 6, 6,
    MethodKind::kComposition, RetractionKind::kNone, SchemeKind::kYoshida6, "sddb-exp"},
   {"rk4", "classical Runge-Kutta, order 4 (does not keep Casimirs)",
    kFixedSizeGroups | kMatrixGroups | kBackendMatrixGroups, false, false, false, 4, 4,
@@ -222,15 +222,12 @@ MethodPointer<G> withRetraction(RetractionKind r, std::shared_ptr<const LiePoiss
   if (r == RetractionKind::kCayley) {
     return std::make_unique<M<Cayley<G>>>(system, Cayley<G>(), args...);
   }
-  // The exponential's matrix step works in ξ's eigenbasis: dense matrices only.
-  if constexpr (groupFamilyOf<G>() != kBackendMatrixGroups) {
-    if (r == RetractionKind::kExponential) {
-      return std::make_unique<M<Exponential<G>>>(system, Exponential<G>(), args...);
-    }
-    if (r == RetractionKind::kTruncatedExponential2) {
-      return std::make_unique<M<TruncatedExponential<G>>>(system, TruncatedExponential<G>(2),
-                                                          args...);
-    }
+  if (r == RetractionKind::kExponential) {
+    return std::make_unique<M<Exponential<G>>>(system, Exponential<G>(), args...);
+  }
+  if (r == RetractionKind::kTruncatedExponential2) {
+    return std::make_unique<M<TruncatedExponential<G>>>(system, TruncatedExponential<G>(2),
+                                                        args...);
   }
   throw std::logic_error("method table: a retraction the group has not");
 }

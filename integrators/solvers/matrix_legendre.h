@@ -14,7 +14,8 @@
 // The solver is written against the matrix backend (core/matrix_backend.h): the same
 // algorithm runs on a LiePoissonSystem of dense matrices and of any backend's, over MPI ranks
 // on the distributed fluid (distributed/distributed_zeitlin_fluid.h; docs/design/distributed.md,
-// "One step formula"). The exponential is dense only.
+// "One step formula"), the exponential's sweep in the backend's eigenbasis
+// (MatrixBackend<Dual>::Eigenbasis).
 //
 // A solver from outside (setExternalSolver) may solve DDB's Cayley equation instead, through
 // residualInto and jacobianTimes: Ceres does, as an independent check of the matrix-free
@@ -36,9 +37,9 @@
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/core/matrix_backend.h>
 #include <ddb/core/matrix_traits.h>
+#include <ddb/core/skew_hermitian_eigenbasis.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/exponential.h>
-#include <ddb/groups/skew_hermitian_eigenbasis.h>
 #include <ddb/integrators/matrix_kernels/matrix_retraction.h>
 #include <ddb/integrators/solvers/anderson_acceleration.h>
 #include <ddb/integrators/solvers/correction_predictor.h>
@@ -77,10 +78,8 @@ class MatrixLegendreSolver {
   static constexpr MatrixSweep kSweep = MatrixRetraction<R>::kSweep;
   static constexpr bool kProductForm = kSweep == MatrixSweep::kProductForm;
   static constexpr bool kEigenbasisSweep = kSweep == MatrixSweep::kEigenbasis;
-  /// Dense matrices (the eigendecompositions need them).
+  /// Dense matrices (the Ceres cross-check needs them, matrix_legendre_ceres.h).
   static constexpr bool kDense = isEigenMatrix<Dual>;
-  static_assert(kDense || MatrixRetraction<R>::kAnyBackend,
-                "this retraction's matrix step needs dense matrices");
 
   /// A fixed-point sweep that shrinks the update by less than this hands over to Newton.
   static constexpr double kSlowContraction = 0.5;
@@ -337,7 +336,7 @@ class MatrixLegendreSolver {
   /// last solve could not certify it (the update then forms cay(2a)).
   const Dual* frozenSolution() const { return frozen_exact_ ? &frozen_ : nullptr; }
   /// The exponential: the eigenbasis of ξ = velocity() after a solve.
-  SkewHermitianEigenbasis<Dual>& eigenbasis() { return eigenbasis_; }
+  typename B::Eigenbasis& eigenbasis() { return eigenbasis_; }
 
  private:
   /// Sweeps past the tolerance, at most, to certify the frozen solution.
@@ -418,17 +417,18 @@ class MatrixLegendreSolver {
       G::cayleyFixedPointGiven(W, a_, ap_, apa_, next_);
     } else if constexpr (kEigenbasisSweep) {
       if (!eigenbasis_.compute(xi_)) {
-        next_.setConstant(NAN);  // ξ not finite: the update shows it
+        B::scale(NAN, W, next_);  // ξ not finite: the update shows it
         return;
       }
-      eigenbasis_.apply([](double eta) { return expm1OfIOverI(-eta); }, h, W, next_);
+      eigenbasis_.apply(PhaseFunction::kInverseDexpInverseDual, h, W, next_);
     } else {
-      next_ = W;
-      delta_ = p_;
+      B::copy(W, next_);
+      B::copy(p_, delta_);
       for (int j = 1; j <= retraction_.order(); ++j) {
-        t1_.noalias() = delta_ * a_;  // ad*_{hξ} = 2 ad*_a
-        delta_ = 2.0 * (t1_ - t1_.adjoint());
-        next_ -= bernoulliOverFactorial(j) * delta_;
+        B::multiply(delta_, a_, t1_);  // ad*_{hξ} = 2 ad*_a
+        B::scale(2.0, t1_, delta_);    // 2(t1 − t1ᴴ), exactly as 2·t1 − 2·t1ᴴ
+        B::addAdjoint(-2.0, t1_, delta_);
+        B::axpy(-bernoulliOverFactorial(j), delta_, next_);
       }
     }
   }
@@ -438,7 +438,8 @@ class MatrixLegendreSolver {
   // current after a DDB solve with the closed form, recomputed otherwise.
   void checkInjectivity(double t, double h, bool basis_current) {
     if (!basis_current && !eigenbasis_.compute(xi_)) {
-      throw NonFiniteState("discrete Legendre equation (matrix-free)", -1, t, h, xi_, "velocity");
+      throw NonFiniteState("discrete Legendre equation (matrix-free)", -1, t, h, B::describe(xi_),
+                           "velocity");
     }
     const double norm = h * eigenbasis_.adRadius();
     if (norm >= InjectivityGuard<R>::kLimit) {
@@ -517,7 +518,7 @@ class MatrixLegendreSolver {
   Dual argument_, direction_;  // the algebra parts of p and of a Newton direction
 
   MatrixFreeGmres<Dual> gmres_;
-  SkewHermitianEigenbasis<Dual> eigenbasis_;
+  typename B::Eigenbasis eigenbasis_;
 };
 
 }  // namespace ddb

@@ -13,7 +13,7 @@
 // Four products per application, one decomposition per refresh.
 #pragma once
 
-#include <ddb/groups/skew_hermitian_eigenbasis.h>
+#include <ddb/core/skew_hermitian_eigenbasis.h>
 
 #include <Eigen/Core>
 #include <algorithm>

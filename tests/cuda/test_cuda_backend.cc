@@ -1,12 +1,13 @@
 // The CUDA backend (cuda/cuda_backend.h) against the dense backend (core/matrix_backend.h):
 // every backend operation (the element-wise ones and the adjoint passes to the bit, the
-// products, reductions and LU to round-off), the Poisson solve, the transfers and records,
-// a run repeated to the bit, then whole relaxations of every method of the method table's
+// products, reductions, LU and the eigenbasis to round-off), the Poisson solve, the transfers and
+// records, a run repeated to the bit, then whole relaxations of every method of the method table's
 // kBackendMatrixGroups family on Zeitlin's fluid (within 1e-12 of the dense run after 100 steps,
 // or 10 times the dense run's own motion from a W0 moved by one ulp where the flow amplifies
 // rounding more: GPU reductions and products add in another order) and the spectrum kept over
 // 1000 steps at N = 1024. Without a GPU every test but the first is skipped, by ctest's skip,
 // naming why (GTEST_SKIP).
+#include <ddb/core/skew_hermitian_eigenbasis.h>
 #include <ddb/cuda/cuda_backend.h>
 #include <ddb/cuda/cuda_device.h>
 #include <ddb/cuda/cuda_poisson_solver.h>
@@ -289,6 +290,40 @@ TEST(CudaBackend, LuSolvesAndReportsASingularMatrix) {
   CudaMatrix factored = toDevice(singular);
   Device::Lu lu;
   EXPECT_FALSE(lu.factor(factored));
+}
+
+// The eigenbasis (cuSOLVER's zheevd, four zgemm and the weighing kernel) against the dense
+// backend's: the phases, both phase functions (out may be in), the result exactly
+// skew-Hermitian; a non-finite x refused.
+TEST(CudaBackend, EigenbasisAgreesWithTheDenseOne) {
+  SKIP_WITHOUT_GPU();
+  for (const Eigen::Index n : {1, 7, 64, 100}) {
+    const Matrix r = randomMatrix(n, n, 21), s = randomMatrix(n, n, 22);
+    const Matrix x = (r - r.adjoint()) / std::sqrt(double(n)), a = s - s.adjoint();
+    Device::Eigenbasis basis;
+    ASSERT_TRUE(basis.compute(toDevice(x))) << n;
+    SkewHermitianEigenbasis<Matrix> dense;
+    ASSERT_TRUE(dense.compute(x));
+    EXPECT_LT((basis.phases() - dense.phases()).cwiseAbs().maxCoeff(),
+              1e-13 * (1.0 + dense.phases().cwiseAbs().maxCoeff()))
+        << n;
+    EXPECT_NEAR(basis.adRadius(), dense.adRadius(), 1e-13 * (1.0 + dense.adRadius())) << n;
+    for (const PhaseFunction f :
+         {PhaseFunction::kCoadjointIncrement, PhaseFunction::kInverseDexpInverseDual}) {
+      CudaMatrix inout = toDevice(a);
+      basis.apply(f, 0.8, inout, inout);
+      const Matrix result = toHost(inout);
+      Matrix reference;
+      dense.apply(f, 0.8, a, reference);
+      EXPECT_LT((result - reference).norm(), 1e-13 * a.norm()) << n << ", " << int(f);
+      EXPECT_TRUE(result == Matrix(-result.adjoint())) << n << ", " << int(f);
+    }
+  }
+  Matrix x = randomMatrix(5, 5, 23);
+  x = x - x.adjoint();
+  x(2, 4) = NAN;
+  Device::Eigenbasis basis;
+  EXPECT_FALSE(basis.compute(toDevice(x)));
 }
 
 // The Poisson solve against HoppeYauLaplacian's on the host, and against Δ itself.

@@ -4,7 +4,7 @@
 // exponential; the in-place conjugations against Uᴴ μ U with U formed by Eigen; the DDB
 // methods on the Manakov body at N = 3 against the rigid body on SO(3), whose closed forms
 // are Rodrigues' (groups/so3.h); the injectivity limit.
-#include <ddb/groups/skew_hermitian_eigenbasis.h>
+#include <ddb/core/skew_hermitian_eigenbasis.h>
 #include <ddb/integrators/matrix_kernels/matrix_retraction.h>
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/manakov_body.h>

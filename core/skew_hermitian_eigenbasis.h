@@ -1,5 +1,6 @@
 // SkewHermitianEigenbasis: the spectral calculus of a skew-Hermitian (real: skew-symmetric)
-// matrix x, on which the exponential retraction of SO(N) and SU(N) rests
+// dense matrix x, on which the exponential retraction of SO(N) and SU(N) rests, and the dense
+// backend's Eigenbasis (MatrixBackend<X>::Eigenbasis, docs/design/matrix-backend.md)
 // (docs/reference/conventions.md §1, "Matrix algebras"). x = V diag(iθ) Vᴴ, θ real ascending, from
 // the Hermitian −ix; in x's eigenbasis (Â = Vᴴ A V) ad_x multiplies entry (a, b) by
 // i(θ_a − θ_b). So every function of ad_x with real Taylor coefficients (dexp, dexp⁻¹, their
@@ -13,6 +14,7 @@
 
 #include <ddb/core/detail/hermitian_eigensolver.h>
 #include <ddb/core/matrix_backend.h>
+#include <ddb/core/phase_function.h>
 
 #include <Eigen/Core>
 #include <cmath>
@@ -20,26 +22,14 @@
 
 namespace ddb {
 
-/// e^{iη} − 1, without the cancellation of cos η − 1 at small η.
-inline std::complex<double> expm1OfI(double eta) {
-  const double s = std::sin(0.5 * eta);
-  return {-2.0 * s * s, std::sin(eta)};
-}
-
-/// (e^{iη} − 1)/(iη), 1 at η = 0: the factor of dexp_x (z = iη), an entire function.
-inline std::complex<double> expm1OfIOverI(double eta) {
-  if (eta == 0.0) return 1.0;
-  const double s = std::sin(0.5 * eta);
-  return {std::sin(eta) / eta, 2.0 * s * s / eta};
-}
-
 template <class Matrix>
 class SkewHermitianEigenbasis {
  public:
   using Complex = Eigen::MatrixXcd;
   static constexpr bool kReal = !Eigen::NumTraits<typename Matrix::Scalar>::IsComplex;
 
-  /// Decomposes x. Returns false when x is not finite (the eigensolver did not converge).
+  /// Decomposes x (skew-Hermitian). Returns false when x is not finite (the eigensolver did
+  /// not converge).
   bool compute(const Matrix& x) {
     allocate(x.rows());
     hermitian_ = x.template cast<std::complex<double>>() * std::complex<double>(0.0, -1.0);
@@ -60,6 +50,16 @@ class SkewHermitianEigenbasis {
     applyEntrywise(
         [&](Eigen::Index a, Eigen::Index b) { return factor(scale * (theta(a) - theta(b))); }, in,
         out);
+  }
+
+  /// apply() of a named function (core/phase_function.h): the backend's contract.
+  void apply(PhaseFunction f, double scale, const Matrix& in, Matrix& out) {
+    // One loop per function, the function inlined in it.
+    if (f == PhaseFunction::kCoadjointIncrement) {
+      apply([](double eta) { return expm1OfI(-eta); }, scale, in, out);
+    } else {
+      apply([](double eta) { return expm1OfIOverI(-eta); }, scale, in, out);
+    }
   }
 
   /// out = V [F ∘ (Vᴴ in V)] Vᴴ with F_ab = weight(a, b) and weight(b, a) = conj(weight(a, b)),

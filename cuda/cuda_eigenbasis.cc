@@ -1,0 +1,123 @@
+// CudaEigenbasis (cuda/cuda_eigenbasis.h): cuSOLVER's zheevd with kept workspaces, cuBLAS's
+// zgemm and the weighing kernel of cuda/detail/cuda_kernels.cu.
+#include <cuda_runtime.h>
+#include <ddb/cuda/cuda_eigenbasis.h>
+#include <ddb/cuda/detail/cuda_check.h>
+#include <ddb/cuda/detail/cuda_kernels.h>
+#include <ddb/cuda/detail/cuda_libraries.h>
+
+#include <string>
+
+namespace ddb {
+
+namespace {
+
+cuDoubleComplex* complexData(CudaMatrix& x) {
+  return reinterpret_cast<cuDoubleComplex*>(x.deviceData());
+}
+const cuDoubleComplex* complexData(const CudaMatrix& x) {
+  return reinterpret_cast<const cuDoubleComplex*>(x.deviceData());
+}
+
+// out = op_a(a) op_b(b), all n×n (n > 0).
+void gemm(cublasOperation_t op_a, const CudaMatrix& a, cublasOperation_t op_b, const CudaMatrix& b,
+          CudaMatrix& out) {
+  const cuDoubleComplex one = make_cuDoubleComplex(1.0, 0.0), zero = make_cuDoubleComplex(0.0, 0.0);
+  const int n = static_cast<int>(a.rows());
+  checkCublas(cublasZgemm(cublasHandle(), op_a, op_b, n, n, n, &one, complexData(a), n,
+                          complexData(b), n, &zero, complexData(out), n),
+              "cublasZgemm");
+}
+
+}  // namespace
+
+struct CudaEigenbasis::Workspace {
+  long n = -1;
+  CudaMatrix vectors, product, hat;
+  double* phases = nullptr;
+  int* info = nullptr;
+  cuDoubleComplex* scratch = nullptr;
+  int scratch_length = 0;
+
+  ~Workspace() { release(); }
+  void release() {
+    cudaFree(phases);
+    cudaFree(info);
+    cudaFree(scratch);
+    phases = nullptr;
+    info = nullptr;
+    scratch = nullptr;
+    n = -1;
+  }
+  // Sized for n×n matrices (a new size frees the old buffers first).
+  void reserve(long size) {
+    if (size == n) return;
+    release();
+    vectors = CudaMatrix(size, size);
+    product = CudaMatrix(size, size);
+    hat = CudaMatrix(size, size);
+    const int rows = static_cast<int>(size);
+    checkCusolver(cusolverDnZheevd_bufferSize(cusolverHandle(), CUSOLVER_EIG_MODE_VECTOR,
+                                              CUBLAS_FILL_MODE_LOWER, rows, complexData(vectors),
+                                              rows, phases, &scratch_length),
+                  "cusolverDnZheevd_bufferSize");
+    checkCuda(cudaMalloc(&phases, sizeof(double) * (rows > 0 ? rows : 1)), "cudaMalloc");
+    checkCuda(cudaMalloc(&info, sizeof(int)), "cudaMalloc");
+    checkCuda(
+        cudaMalloc(&scratch, sizeof(cuDoubleComplex) * (scratch_length > 0 ? scratch_length : 1)),
+        "cudaMalloc");
+    n = size;
+  }
+};
+
+CudaEigenbasis::CudaEigenbasis() : workspace_(std::make_unique<Workspace>()) {}
+CudaEigenbasis::~CudaEigenbasis() = default;
+CudaEigenbasis::CudaEigenbasis(CudaEigenbasis&&) noexcept = default;
+CudaEigenbasis& CudaEigenbasis::operator=(CudaEigenbasis&&) noexcept = default;
+
+bool CudaEigenbasis::compute(const CudaMatrix& x) {
+  const long count = 2 * x.size();
+  if (cuda_kernels::countNotFinite(count, reinterpret_cast<const double*>(x.deviceData())) > 0) {
+    return false;
+  }
+  Workspace& w = *workspace_;
+  w.reserve(x.rows());
+  const int n = static_cast<int>(x.rows());
+  if (n == 0) return true;
+  // −ix, exactly: (re, im)·(0, −1) = (im, −re).
+  checkCuda(cudaMemcpy(w.vectors.deviceData(), x.deviceData(),
+                       sizeof(CudaMatrix::Scalar) * x.size(), cudaMemcpyDeviceToDevice),
+            "cudaMemcpy (on the device)");
+  const cuDoubleComplex minus_i = make_cuDoubleComplex(0.0, -1.0);
+  checkCublas(
+      cublasZscal(cublasHandle(), static_cast<int>(x.size()), &minus_i, complexData(w.vectors), 1),
+      "cublasZscal");
+  checkCusolver(
+      cusolverDnZheevd(cusolverHandle(), CUSOLVER_EIG_MODE_VECTOR, CUBLAS_FILL_MODE_LOWER, n,
+                       complexData(w.vectors), n, w.phases, w.scratch, w.scratch_length, w.info),
+      "cusolverDnZheevd");
+  int info = 0;
+  checkCuda(cudaMemcpy(&info, w.info, sizeof(int), cudaMemcpyDeviceToHost),
+            "cudaMemcpy (to the host)");
+  if (info < 0) throw CudaError("cusolverDnZheevd rejected its argument " + std::to_string(-info));
+  if (info > 0) return false;
+  phases_.resize(n);
+  checkCuda(cudaMemcpy(phases_.data(), w.phases, sizeof(double) * n, cudaMemcpyDeviceToHost),
+            "cudaMemcpy (to the host)");
+  return true;
+}
+
+void CudaEigenbasis::apply(PhaseFunction f, double scale, const CudaMatrix& in, CudaMatrix& out) {
+  Workspace& w = *workspace_;
+  if (in.rows() == 0) return;
+  gemm(CUBLAS_OP_N, in, CUBLAS_OP_N, w.vectors, w.product);     // in V
+  gemm(CUBLAS_OP_C, w.vectors, CUBLAS_OP_N, w.product, w.hat);  // Vᴴ in V
+  cuda_kernels::weighByPhases(in.rows(), w.phases, scale, f,
+                              reinterpret_cast<double*>(w.hat.deviceData()));
+  gemm(CUBLAS_OP_N, w.vectors, CUBLAS_OP_N, w.hat, w.product);  // V (F ∘ Â)
+  if (out.rows() != in.rows() || out.cols() != in.cols()) out = CudaMatrix(in.rows(), in.cols());
+  gemm(CUBLAS_OP_N, w.product, CUBLAS_OP_C, w.vectors, out);
+  cuda_kernels::makeSkewHermitian(out.rows(), reinterpret_cast<double*>(out.deviceData()));
+}
+
+}  // namespace ddb
