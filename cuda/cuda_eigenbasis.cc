@@ -6,6 +6,7 @@
 #include <ddb/cuda/detail/cuda_kernels.h>
 #include <ddb/cuda/detail/cuda_libraries.h>
 
+#include <stdexcept>
 #include <string>
 
 namespace ddb {
@@ -80,10 +81,11 @@ bool CudaEigenbasis::compute(const CudaMatrix& x) {
   if (cuda_kernels::countNotFinite(count, reinterpret_cast<const double*>(x.deviceData())) > 0) {
     return false;
   }
+  const int n = static_cast<int>(x.rows());
+  phases_.resize(n);
+  if (n == 0) return true;  // cuSOLVER asks lda ≥ 1
   Workspace& w = *workspace_;
   w.reserve(x.rows());
-  const int n = static_cast<int>(x.rows());
-  if (n == 0) return true;
   // −ix, exactly: (re, im)·(0, −1) = (im, −re).
   checkCuda(cudaMemcpy(w.vectors.deviceData(), x.deviceData(),
                        sizeof(CudaMatrix::Scalar) * x.size(), cudaMemcpyDeviceToDevice),
@@ -101,7 +103,6 @@ bool CudaEigenbasis::compute(const CudaMatrix& x) {
             "cudaMemcpy (to the host)");
   if (info < 0) throw CudaError("cusolverDnZheevd rejected its argument " + std::to_string(-info));
   if (info > 0) return false;
-  phases_.resize(n);
   checkCuda(cudaMemcpy(phases_.data(), w.phases, sizeof(double) * n, cudaMemcpyDeviceToHost),
             "cudaMemcpy (to the host)");
   return true;
@@ -109,6 +110,10 @@ bool CudaEigenbasis::compute(const CudaMatrix& x) {
 
 void CudaEigenbasis::apply(PhaseFunction f, double scale, const CudaMatrix& in, CudaMatrix& out) {
   Workspace& w = *workspace_;
+  if (in.rows() != phases_.size() || in.cols() != in.rows()) {
+    throw std::logic_error(
+        "CudaEigenbasis::apply: a matrix of another size than the decomposed one");
+  }
   if (in.rows() == 0) return;
   gemm(CUBLAS_OP_N, in, CUBLAS_OP_N, w.vectors, w.product);     // in V
   gemm(CUBLAS_OP_C, w.vectors, CUBLAS_OP_N, w.product, w.hat);  // Vᴴ in V

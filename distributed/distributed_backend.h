@@ -116,9 +116,10 @@ struct MatrixBackend<DistributedMatrix> {
     return !(x.layout().grid().max(x.local().allFinite() ? 0.0 : 1.0) > 0.0);
   }
   static void flushSubnormals(X& x) { Dense::flushSubnormals(x.local()); }
+  /// Every entry exactly zero on every rank (NaN is not zero, as in the dense backend).
   static bool isZero(const X& x) {
-    const double largest = x.local().size() > 0 ? x.local().cwiseAbs().maxCoeff() : 0.0;
-    return !(x.layout().grid().max(largest) > 0.0);
+    const bool nonzero = (x.local().array() != Scalar(0.0)).any();
+    return !(x.layout().grid().max(nonzero ? 1.0 : 0.0) > 0.0);
   }
 
   /// out(s) = x(indices(s)), column-major linear indices into the whole matrix: each entry

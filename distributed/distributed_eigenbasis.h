@@ -39,7 +39,9 @@ class DistributedEigenbasis {
              vectors_.data(), &one, &one, vectors_.descriptor(), work_.data(), &lwork_,
              rwork_.data(), &lrwork_, iwork_.data(), &liwork_, &info);
     if (grid.max(info != 0 ? 1.0 : 0.0) > 0.0) return false;
-    // The same bits of θ on every rank, so that every rank's branches on them agree.
+    // θ from rank 0 on every rank: pzheevd_ leaves the eigenvalues on every rank only when
+    // its tridiagonal solver runs distributed (for N ≤ the block size PDSTEDC runs on process
+    // (0, 0) alone), and every rank's branches on θ must agree to the bit.
     MPI_Bcast(phases_.data(), n, MPI_DOUBLE, 0, grid.comm());
     return true;
   }
@@ -80,9 +82,9 @@ class DistributedEigenbasis {
     }
   }
 
-  // The matrices and pzheevd_'s workspaces for a layout: its query, raised to the minima
-  // its documentation states (some ScaLAPACK releases under-report the real and integer
-  // workspaces).
+  // The matrices and pzheevd_'s workspaces for a layout: its query, the real and integer
+  // workspaces raised to the minima its documentation states (LRWORK ≥ 1 + 9N + 3·NP·NQ,
+  // LIWORK ≥ 7N + 8·NPCOL + 2), in case a release under-reports them.
   void allocate(const BlockCyclicLayout& layout) {
     if (adjoints_.isFor(layout)) return;
     for (DistributedMatrix* m : {&hermitian_, &vectors_, &product_, &hat_}) {

@@ -4,9 +4,10 @@
 // fixed point K ← f(μ + h A K) while it contracts, then Newton–Krylov, GMRES (MatrixFreeGmres) on
 // the exact Jacobian–vector products (J δ)_i = δ_i − Df(Y_i)[h Σ_j a_ij δ_j], Df from
 // hessianTimes and the linearised brackets (LiePoissonSystem::vectorFieldDerivativeInto).
-// The S stages are the N × N blocks of one N × SN matrix, so GMRES's inner product
-// Re tr(XᴴY) is the sum over the stages. Workspaces are sized on the first step of a size
-// and reused: a step allocates nothing after that.
+// The S stage slopes are a StageTuple (integrators/solvers/stage_tuple.h), so GMRES's inner
+// product Re tr(XᴴY) is the sum over the stages. Written against the matrix backend
+// (core/matrix_backend.h): the stages may be distributed matrices. Workspaces are sized on the
+// first step of a size and reused: a step allocates nothing after that.
 //
 // Convergence: the fixed point's error bound ρ/(1 − ρ)·‖update‖ (ρ the measured rate) or
 // Newton's residual ‖K − f(Y(K))‖, below relative_tolerance·(√S‖f(μ)‖ + ‖μ‖), the scale of
@@ -20,6 +21,7 @@
 #include <ddb/integrators/methods/butcher_tableau.h>
 #include <ddb/integrators/methods/one_step_method.h>
 #include <ddb/integrators/solvers/matrix_free_gmres.h>
+#include <ddb/integrators/solvers/stage_tuple.h>
 
 #include <algorithm>
 #include <array>
@@ -35,6 +37,9 @@ class MatrixFreeImplicitRungeKutta : public OneStepMethod<G> {
 
  public:
   using Dual = typename G::template Dual<double>;
+  using B = MatrixBackend<Dual>;
+  using Stages = StageTuple<Dual, S>;
+  using StagesBackend = MatrixBackend<Stages>;
 
   /// A fixed-point sweep that shrinks the update by less than this hands over to Newton.
   static constexpr double kSlowContraction = 0.5;
@@ -59,53 +64,50 @@ class MatrixFreeImplicitRungeKutta : public OneStepMethod<G> {
   Dual step(const Dual& mu, double t, double h) override { return this->stepInPlace(mu, t, h); }
 
   void advance(Dual& mu, double t, double h) override {
-    allocate(mu.rows());
-    const Eigen::Index n = mu.rows();
+    allocate(mu);
     system_->vectorFieldInto(mu, field_[0], f0_);
-    for (int i = 0; i < S; ++i) stages_.middleCols(i * n, n) = f0_;  // warm start K_i = f(μ)
-    const double tolerance =
-        options_.relative_tolerance * (f0_.norm() * std::sqrt(double(S)) + mu.norm());
+    for (int i = 0; i < S; ++i) B::copy(f0_, stages_[i]);  // warm start K_i = f(μ)
+    const double tolerance = options_.relative_tolerance *
+                             (B::frobeniusNorm(f0_) * std::sqrt(double(S)) + B::frobeniusNorm(mu));
     sweeps_ = newton_ = 0;
     double residual = newton_only_ ? INFINITY : fixedPoint(mu, h, tolerance);
     if (!(residual <= tolerance)) residual = newtonKrylov(mu, h, tolerance);
     if (!std::isfinite(residual)) {
-      throw NonFiniteState("Runge-Kutta stage equations (matrix-free)", -1, t, h, stages_,
-                           "stage slopes");
+      throw NonFiniteState("Runge-Kutta stage equations (matrix-free)", -1, t, h,
+                           StagesBackend::describe(stages_), "stage slopes");
     }
     if (!(residual <= tolerance)) {
       throw SolveFailure(std::string("Runge-Kutta stage equations (matrix-free, ") +
                              (newton_ > 0 ? "Newton-Krylov" : "fixed point") + ")",
                          -1, t, h, residual, tolerance);
     }
-    for (int i = 0; i < S; ++i) mu += (h * tableau_.b[i]) * stages_.middleCols(i * n, n);
+    for (int i = 0; i < S; ++i) B::axpy(h * tableau_.b[i], stages_[i], mu);
   }
 
  private:
-  void allocate(Eigen::Index n) {
-    if (f0_.rows() == n) return;
-    f0_.setZero(n, n);
-    stage_.setZero(n, n);
-    slope_.setZero(n, n);
-    for (Dual* m : {&stages_, &next_, &residual_, &delta_}) m->setZero(n, S * n);
-    for (auto& w : field_) w.resize(f0_);
+  void allocate(const Dual& like) {
+    if (B::sameShape(f0_, like)) return;
+    for (Dual* m : {&f0_, &stage_, &slope_}) B::zeroLike(*m, like);
+    for (Stages* m : {&stages_, &next_, &residual_, &delta_}) {
+      for (int i = 0; i < S; ++i) B::zeroLike((*m)[i], like);
+    }
+    for (auto& w : field_) w.resize(like);
   }
 
-  // Y_i = μ + h Σ_j a_ij K_j from the blocks of `slopes`, into stage_.
-  void stageValue(const Dual& mu, const Dual& slopes, int i, double h) {
-    const Eigen::Index n = mu.rows();
-    stage_ = mu;
+  // stage_ = Σ_j h a_ij v_j, added to stage_'s value.
+  void addCombination(const Stages& v, int i, double h) {
     for (int j = 0; j < S; ++j) {
-      if (tableau_.a[i][j] != 0.0) stage_ += (h * tableau_.a[i][j]) * slopes.middleCols(j * n, n);
+      if (tableau_.a[i][j] != 0.0) B::axpy(h * tableau_.a[i][j], v[j], stage_);
     }
   }
 
-  // next_ = f(Y(stages_)) block by block; each stage's workspace keeps its Y_i for Df(Y_i).
+  // next_ = f(Y(stages_)) stage by stage, Y_i = μ + h Σ_j a_ij K_j; each stage's workspace
+  // keeps its Y_i for Df(Y_i).
   void evaluate(const Dual& mu, double h) {
-    const Eigen::Index n = mu.rows();
     for (int i = 0; i < S; ++i) {
-      stageValue(mu, stages_, i, h);
-      system_->vectorFieldInto(stage_, field_[i], slope_);
-      next_.middleCols(i * n, n) = slope_;
+      B::copy(mu, stage_);
+      addCombination(stages_, i, h);
+      system_->vectorFieldInto(stage_, field_[i], next_[i]);
     }
   }
 
@@ -117,7 +119,7 @@ class MatrixFreeImplicitRungeKutta : public OneStepMethod<G> {
     for (int k = 0; k < kMaxFixedPoint; ++k) {
       evaluate(mu, h);
       ++sweeps_;
-      const double update = (next_ - stages_).norm();
+      const double update = StagesBackend::frobeniusDistance(next_, stages_);
       if (!std::isfinite(update)) return INFINITY;
       stages_.swap(next_);
       if (update == 0.0) return 0.0;
@@ -134,33 +136,30 @@ class MatrixFreeImplicitRungeKutta : public OneStepMethod<G> {
 
   // Newton on r(K) = K − f(Y(K)) with GMRES on J δ = −r. Returns the last ‖r‖.
   double newtonKrylov(const Dual& mu, double h, double tolerance) {
-    const Eigen::Index n = mu.rows();
     gmres_.resize(stages_);  // its basis only when Newton–Krylov is needed
     double residual = INFINITY;
     for (int k = 0; k <= kMaxNewton; ++k) {
       evaluate(mu, h);
-      residual_ = stages_ - next_;
-      residual = residual_.norm();
+      StagesBackend::sum(1.0, stages_, -1.0, next_, residual_);
+      residual = StagesBackend::frobeniusNorm(residual_);
       if (!std::isfinite(residual) || residual <= tolerance || k == kMaxNewton) return residual;
       ++newton_;
-      residual_ = -residual_;
-      delta_.setZero();
-      const auto apply = [&](const Dual& v, Dual& out) {
+      StagesBackend::scale(-1.0, residual_, residual_);
+      StagesBackend::setZero(delta_);
+      const auto apply = [&](const Stages& v, Stages& out) {
         // (J v)_i = v_i − Df(Y_i)[h Σ_j a_ij v_j]
         for (int i = 0; i < S; ++i) {
-          stage_.setZero();
-          for (int j = 0; j < S; ++j) {
-            if (tableau_.a[i][j] != 0.0) stage_ += (h * tableau_.a[i][j]) * v.middleCols(j * n, n);
-          }
+          B::setZero(stage_);
+          addCombination(v, i, h);
           system_->vectorFieldDerivativeInto(stage_, field_[i], slope_);
-          out.middleCols(i * n, n) = v.middleCols(i * n, n) - slope_;
+          B::sum(1.0, v[i], -1.0, slope_, out[i]);
         }
       };
-      // Inexact Newton: GMRES to 1e-4 of the current residual (never below a tenth of the
-      // final tolerance), as in the Legendre solver's Newton–Krylov.
+      // Inexact Newton: GMRES to 1e-4 of the current residual (never below a tenth of
+      // the final tolerance), as in the Legendre solver's Newton–Krylov.
       const double forcing = std::max(0.1 * tolerance, 1e-4 * residual);
       gmres_.solve(apply, residual_, delta_, forcing, kMaxKrylov);
-      stages_ += delta_;
+      StagesBackend::axpy(1.0, delta_, stages_);
     }
     return residual;
   }
@@ -171,9 +170,9 @@ class MatrixFreeImplicitRungeKutta : public OneStepMethod<G> {
   bool newton_only_ = false;
   int sweeps_ = 0, newton_ = 0;
   Dual f0_, stage_, slope_;
-  Dual stages_, next_, residual_, delta_;  // N × SN: the S stage slopes side by side
+  Stages stages_, next_, residual_, delta_;
   std::array<MatrixFieldWorkspace<G>, S> field_;
-  MatrixFreeGmres<Dual> gmres_;
+  MatrixFreeGmres<Stages> gmres_;
 };
 
 }  // namespace ddb

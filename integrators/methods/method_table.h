@@ -126,7 +126,7 @@ inline constexpr std::array<MethodInfo, 15> kMethods{{
    kFixedSizeGroups | kMatrixGroups | kBackendMatrixGroups, false, false, false, 4, 4,
    MethodKind::kExplicitRk4, RetractionKind::kNone, SchemeKind::kNone, ""},
   {"lobatto3c", "Lobatto IIIC, 3 stages, order 4 (does not keep Casimirs)",
-   kFixedSizeGroups | kMatrixGroups, false, false, false, 4, 4,
+   kFixedSizeGroups | kMatrixGroups | kBackendMatrixGroups, false, false, false, 4, 4,
    MethodKind::kLobattoIIIC, RetractionKind::kNone, SchemeKind::kNone, ""},
   {"reference", "adaptive Runge-Kutta-Fehlberg 7(8), tolerance 1e-13",
    kFixedSizeGroups | kMatrixGroups, false, false, false, 0, 0,
@@ -291,10 +291,9 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(const MethodInfo& method,
     case MethodKind::kLobattoIIIC:
       if constexpr (!isDynamicGroup<G>) {
         return std::make_unique<ImplicitRungeKutta<G, 3>>(system, kLobattoIIIC3);
-      } else if constexpr (kDenseOnly) {
+      } else {
         return std::make_unique<MatrixFreeImplicitRungeKutta<G, 3>>(system, kLobattoIIIC3);
       }
-      break;
     case MethodKind::kReference:
       if constexpr (kDenseOnly) return std::make_unique<ReferenceSolver<G>>(system);
       break;

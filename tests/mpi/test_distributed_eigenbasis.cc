@@ -1,4 +1,5 @@
-// The distributed backend's eigenbasis (distributed/distributed_eigenbasis.h) on 1–4 ranks:
+// The distributed backend's eigenbasis (distributed/distributed_eigenbasis.h) on 1–4 ranks, N
+// from one block (where ScaLAPACK's tridiagonal solver runs on one process) to many:
 // the phases against Eigen's eigensolver of the gathered −ix, the same bits on every rank;
 // Ad*_{exp(sx)} − id against Eigen's matrix exponential; both phase functions against the
 // dense backend's eigenbasis; the result exactly skew-Hermitian; a non-finite x refused on
@@ -113,7 +114,7 @@ TEST_P(DistributedEigenbasisTest, RefusesANonFiniteMatrixOnEveryRank) {
 }
 
 INSTANTIATE_TEST_SUITE_P(SizesAndBlocks, DistributedEigenbasisTest,
-                         testing::Combine(testing::Values(16, 33, 64), testing::Values(5, 7)),
+                         testing::Combine(testing::Values(4, 16, 33, 64), testing::Values(5, 7)),
                          test::sizeAndBlockName);
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <ddb/distributed/rank_zero_record_reader.h>
 #include <gtest/gtest.h>
 
+#include <complex>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -171,6 +172,25 @@ TEST_P(DistributedMatrixTest, AllFiniteAgreesOnEveryRankAndFlushSubnormalsIsTheD
   a(n() - 1, n() - 1) = {NAN, 0.0};  // on the last rank's block for most layouts
   da.scatterFrom(a);
   EXPECT_FALSE(D::allFinite(da));
+}
+
+// isZero is "every entry exactly zero", alike on every rank: an entry whose square underflows
+// (1e-200) or a NaN on any one rank's block makes it false everywhere, as in the dense backend.
+TEST_P(DistributedMatrixTest, IsZeroIsExactAndAgreesOnEveryRank) {
+  using D = MatrixBackend<DistributedMatrix>;
+  Eigen::MatrixXcd a = Eigen::MatrixXcd::Zero(n(), n());
+  DistributedMatrix da(grid_, n(), block());
+  da.scatterFrom(a);
+  EXPECT_TRUE(D::isZero(da));
+  for (const std::complex<double> entry : {std::complex<double>(0.0, 1e-200), {NAN, 0.0}}) {
+    for (const int i : {0, n() - 1}) {
+      a.setZero();
+      a(i, n() - 1 - i) = entry;
+      da.scatterFrom(a);
+      EXPECT_FALSE(D::isZero(da)) << entry << " at (" << i << ", " << n() - 1 - i << ")";
+      EXPECT_EQ(D::isZero(da), MatrixBackend<Eigen::MatrixXcd>::isZero(a));
+    }
+  }
 }
 
 // The backend's adjoints (AdjointExchange) against Eigen's on the gathered matrix: out +
