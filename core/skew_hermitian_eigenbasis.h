@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <complex>
+#include <stdexcept>
 
 namespace ddb {
 
@@ -32,6 +33,7 @@ class SkewHermitianEigenbasis {
   /// not converge).
   bool compute(const Matrix& x) {
     allocate(x.rows());
+    weighted_ = false;  // a new basis takes new weights
     hermitian_ = x.template cast<std::complex<double>>() * std::complex<double>(0.0, -1.0);
     return solver_.compute(hermitian_);
   }
@@ -82,6 +84,26 @@ class SkewHermitianEigenbasis {
     MatrixBackend<Matrix>::makeSkewHermitian(out);
   }
 
+  /// The weights of applyWeights after compute(): W_ab = weight(a, b), real and symmetric.
+  template <class Weight>
+  void setWeights(const Weight& weight) {
+    const Eigen::Index n = phases().size();
+    weights_.resize(n, n);
+    for (Eigen::Index b = 0; b < n; ++b) {
+      for (Eigen::Index a = 0; a < n; ++a) weights_(a, b) = weight(a, b);
+    }
+    weighted_ = true;
+  }
+  /// out = V [W ∘ (Vᴴ in V)] Vᴴ, projected onto the skew-Hermitian matrices; `in`
+  /// skew-Hermitian. out may be in. Throws std::logic_error if no weights were set since
+  /// compute().
+  void applyWeights(const Matrix& in, Matrix& out) {
+    if (!weighted_ || in.rows() != phases().size()) {
+      throw std::logic_error("SkewHermitianEigenbasis::applyWeights: no weights for this basis");
+    }
+    applyEntrywise([this](Eigen::Index a, Eigen::Index b) { return weights_(a, b); }, in, out);
+  }
+
   /// The phases of a skew-Hermitian y on x's eigenvectors: π_a = Im (Vᴴ y V)_aa (y's
   /// eigenvalues iπ_a when y commutes with x). One product.
   void diagonalPhasesOf(const Matrix& y, Eigen::VectorXd& out) {
@@ -125,6 +147,8 @@ class SkewHermitianEigenbasis {
 
   HermitianEigensolver solver_;
   Complex hermitian_, product_, hat_;
+  Eigen::MatrixXd weights_;  // of applyWeights, kept between bases of one size
+  bool weighted_ = false;    // weights_ are this basis's
 };
 
 }  // namespace ddb

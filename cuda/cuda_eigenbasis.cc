@@ -36,16 +36,21 @@ struct CudaEigenbasis::Workspace {
   long n = -1;
   CudaMatrix vectors, product, hat;
   double* phases = nullptr;
+  double* diagonal = nullptr;  // n, for diagonalPhasesOf
+  double* weights = nullptr;   // n², for applyWeights, allocated on its first use
+  bool weighted = false;       // weights are those of the current basis
   int* info = nullptr;
   cuDoubleComplex* scratch = nullptr;
   int scratch_length = 0;
 
   ~Workspace() { release(); }
   void release() {
-    cudaFree(phases);
+    for (double* buffer : {phases, diagonal, weights}) cudaFree(buffer);
     cudaFree(info);
     cudaFree(scratch);
     phases = nullptr;
+    diagonal = nullptr;
+    weights = nullptr;
     info = nullptr;
     scratch = nullptr;
     n = -1;
@@ -62,7 +67,9 @@ struct CudaEigenbasis::Workspace {
                                               CUBLAS_FILL_MODE_LOWER, rows, complexData(vectors),
                                               rows, phases, &scratch_length),
                   "cusolverDnZheevd_bufferSize");
-    checkCuda(cudaMalloc(&phases, sizeof(double) * (rows > 0 ? rows : 1)), "cudaMalloc");
+    const std::size_t length = rows > 0 ? rows : 1;
+    checkCuda(cudaMalloc(&phases, sizeof(double) * length), "cudaMalloc");
+    checkCuda(cudaMalloc(&diagonal, sizeof(double) * length), "cudaMalloc");
     checkCuda(cudaMalloc(&info, sizeof(int)), "cudaMalloc");
     checkCuda(
         cudaMalloc(&scratch, sizeof(cuDoubleComplex) * (scratch_length > 0 ? scratch_length : 1)),
@@ -86,6 +93,7 @@ bool CudaEigenbasis::compute(const CudaMatrix& x) {
   if (n == 0) return true;  // cuSOLVER asks lda ≥ 1
   Workspace& w = *workspace_;
   w.reserve(x.rows());
+  w.weighted = false;  // a new basis takes new weights
   // −ix, exactly: (re, im)·(0, −1) = (im, −re).
   checkCuda(cudaMemcpy(w.vectors.deviceData(), x.deviceData(),
                        sizeof(CudaMatrix::Scalar) * x.size(), cudaMemcpyDeviceToDevice),
@@ -110,15 +118,69 @@ bool CudaEigenbasis::compute(const CudaMatrix& x) {
 
 void CudaEigenbasis::apply(PhaseFunction f, double scale, const CudaMatrix& in, CudaMatrix& out) {
   Workspace& w = *workspace_;
-  if (in.rows() != phases_.size() || in.cols() != in.rows()) {
-    throw std::logic_error(
-        "CudaEigenbasis::apply: a matrix of another size than the decomposed one");
+  const auto weigh = [&] {
+    cuda_kernels::weighByPhases(in.rows(), w.phases, scale, f,
+                                reinterpret_cast<double*>(w.hat.deviceData()));
+  };
+  transform(in, out, weigh, "apply");
+}
+
+void CudaEigenbasis::uploadWeights(const Eigen::MatrixXd& weights) {
+  requireDecomposedSize(weights.rows(), weights.cols(), "setWeights");
+  Workspace& w = *workspace_;
+  if (weights.size() > 0) {
+    if (w.weights == nullptr) {
+      checkCuda(cudaMalloc(&w.weights, sizeof(double) * weights.size()), "cudaMalloc");
+    }
+    checkCuda(cudaMemcpy(w.weights, weights.data(), sizeof(double) * weights.size(),
+                         cudaMemcpyHostToDevice),
+              "cudaMemcpy (to the device)");
   }
+  w.weighted = true;
+}
+
+void CudaEigenbasis::applyWeights(const CudaMatrix& in, CudaMatrix& out) {
+  Workspace& w = *workspace_;
+  if (!w.weighted) {
+    throw std::logic_error("CudaEigenbasis::applyWeights: no weights for this basis");
+  }
+  const auto weigh = [&] {
+    cuda_kernels::weighEntrywise(in.size(), w.weights,
+                                 reinterpret_cast<double*>(w.hat.deviceData()));
+  };
+  transform(in, out, weigh, "applyWeights");
+}
+
+void CudaEigenbasis::diagonalPhasesOf(const CudaMatrix& y, Eigen::VectorXd& out) {
+  requireDecomposedSize(y.rows(), y.cols(), "diagonalPhasesOf");
+  const long n = y.rows();
+  out.resize(n);
+  if (n == 0) return;
+  Workspace& w = *workspace_;
+  gemm(CUBLAS_OP_N, y, CUBLAS_OP_N, w.vectors, w.product);      // y V
+  gemm(CUBLAS_OP_C, w.vectors, CUBLAS_OP_N, w.product, w.hat);  // Vᴴ y V
+  cuda_kernels::imaginaryDiagonal(n, reinterpret_cast<const double*>(w.hat.deviceData()),
+                                  w.diagonal);
+  checkCuda(cudaMemcpy(out.data(), w.diagonal, sizeof(double) * n, cudaMemcpyDeviceToHost),
+            "cudaMemcpy (to the host)");
+}
+
+void CudaEigenbasis::requireDecomposedSize(long rows, long cols, const char* function) const {
+  if (rows != phases_.size() || cols != rows) {
+    throw std::logic_error(std::string("CudaEigenbasis::") + function +
+                           ": a matrix of another size than the decomposed one");
+  }
+}
+
+template <class Weigh>
+void CudaEigenbasis::transform(const CudaMatrix& in, CudaMatrix& out, const Weigh& weigh,
+                               const char* function) {
+  Workspace& w = *workspace_;
+  requireDecomposedSize(in.rows(), in.cols(), function);
   if (in.rows() == 0) return;
   gemm(CUBLAS_OP_N, in, CUBLAS_OP_N, w.vectors, w.product);     // in V
   gemm(CUBLAS_OP_C, w.vectors, CUBLAS_OP_N, w.product, w.hat);  // Vᴴ in V
-  cuda_kernels::weighByPhases(in.rows(), w.phases, scale, f,
-                              reinterpret_cast<double*>(w.hat.deviceData()));
+  weigh();                                                      // Â ← F ∘ Â
   gemm(CUBLAS_OP_N, w.vectors, CUBLAS_OP_N, w.hat, w.product);  // V (F ∘ Â)
   if (out.rows() != in.rows() || out.cols() != in.cols()) out = CudaMatrix(in.rows(), in.cols());
   gemm(CUBLAS_OP_N, w.product, CUBLAS_OP_C, w.vectors, out);

@@ -3,7 +3,8 @@
 // the exponential's steps rest on the device (docs/reference/conventions.md §1, "Matrix
 // algebras"). x = V diag(iθ) Vᴴ from the Hermitian −ix by cuSOLVER's zheevd (V and θ on the
 // device, θ copied back for adRadius); apply() forms V [F ∘ (Vᴴ A V)] Vᴴ by four zgemm and
-// one kernel, F_ab = f(scale (θ_a − θ_b)) (core/phase_function.h), then projects the rounding
+// one kernel, F_ab = f(scale (θ_a − θ_b)) (core/phase_function.h) or given weights W_ab
+// (applyWeights), then projects the rounding
 // onto the skew-Hermitian matrices as the dense eigenbasis does
 // (core/skew_hermitian_eigenbasis.h). Workspaces are kept between decompositions of one size.
 #pragma once
@@ -33,8 +34,34 @@ class CudaEigenbasis {
   /// out = V [F ∘ (Vᴴ in V)] Vᴴ with F_ab = f(scale (θ_a − θ_b)), projected onto the
   /// skew-Hermitian matrices; `in` skew-Hermitian. out may be in.
   void apply(PhaseFunction f, double scale, const CudaMatrix& in, CudaMatrix& out);
+  /// The weights of applyWeights after compute(): W_ab = weight(a, b), real and symmetric,
+  /// evaluated on the host and copied to the device.
+  template <class Weight>
+  void setWeights(const Weight& weight) {
+    const Eigen::Index n = phases_.size();
+    Eigen::MatrixXd weights(n, n);
+    for (Eigen::Index b = 0; b < n; ++b) {
+      for (Eigen::Index a = 0; a < n; ++a) weights(a, b) = weight(a, b);
+    }
+    uploadWeights(weights);
+  }
+  /// out = V [W ∘ (Vᴴ in V)] Vᴴ, projected onto the skew-Hermitian matrices; `in`
+  /// skew-Hermitian. out may be in. Throws std::logic_error if no weights were set since
+  /// compute().
+  void applyWeights(const CudaMatrix& in, CudaMatrix& out);
+  /// π_a = Im (Vᴴ y V)_aa for a skew-Hermitian y (y's eigenvalues iπ_a when y commutes with
+  /// x), on the host. Two products.
+  void diagonalPhasesOf(const CudaMatrix& y, Eigen::VectorXd& out);
 
  private:
+  // Copies W (N×N) to the device, allocating its buffer on first use.
+  void uploadWeights(const Eigen::MatrixXd& weights);
+  // Throws std::logic_error unless rows = cols = the decomposed size.
+  void requireDecomposedSize(long rows, long cols, const char* function) const;
+  // out = V [F ∘ (Vᴴ in V)] Vᴴ, projected, where weigh() sets Â ← F ∘ Â on the device.
+  template <class Weigh>
+  void transform(const CudaMatrix& in, CudaMatrix& out, const Weigh& weigh, const char* function);
+
   struct Workspace;
   std::unique_ptr<Workspace> workspace_;
   Eigen::VectorXd phases_;

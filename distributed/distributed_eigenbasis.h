@@ -3,7 +3,8 @@
 // exponential's steps rest on MPI ranks (docs/reference/conventions.md §1, "Matrix algebras").
 // x = V diag(iθ) Vᴴ from the Hermitian −ix by pzheevd_ (V in x's layout, θ ascending on every
 // rank); apply() forms V [F ∘ (Vᴴ A V)] Vᴴ by four pzgemm_ and a Hadamard product on each
-// rank's local entries, F_ab = f(scale (θ_a − θ_b)) at their global indices, then projects
+// rank's local entries, F_ab = f(scale (θ_a − θ_b)) at their global indices (or given
+// weights W_ab, applyWeights), then projects
 // the rounding onto the skew-Hermitian matrices as the dense eigenbasis does
 // (core/skew_hermitian_eigenbasis.h). Workspaces are sized on the first decomposition of a
 // layout, then reused. All functions are collective.
@@ -19,6 +20,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <complex>
+#include <stdexcept>
 #include <vector>
 
 namespace ddb {
@@ -29,6 +31,7 @@ class DistributedEigenbasis {
   /// eigensolver did not converge.
   bool compute(const DistributedMatrix& x) {
     allocate(x.layout());
+    weighted_ = false;  // a new basis takes new weights
     const ProcessGrid& grid = x.layout().grid();
     if (grid.max(x.local().allFinite() ? 0.0 : 1.0) > 0.0) return false;
     // −ix: (re, im) ↦ (im, −re), exact.
@@ -54,13 +57,69 @@ class DistributedEigenbasis {
   /// out = V [F ∘ (Vᴴ in V)] Vᴴ with F_ab = f(scale (θ_a − θ_b)) (core/phase_function.h),
   /// projected onto the skew-Hermitian matrices; `in` skew-Hermitian. out may be in.
   void apply(PhaseFunction f, double scale, const DistributedMatrix& in, DistributedMatrix& out) {
-    multiplyInto(1.0, in, vectors_, 0.0, product_);                      // in V
-    multiplyInto(1.0, vectors_, product_, 0.0, hat_, Factor::kAdjoint);  // Vᴴ in V
     // One loop per function, the function inlined in it.
     if (f == PhaseFunction::kCoadjointIncrement) {
-      weigh([](double eta) { return expm1OfI(-eta); }, scale);
+      transform(in, out, [&](int k, int l) {
+        return expm1OfI(-(scale * (phases_(rowOf(k)) - phases_(colOf(l)))));
+      });
     } else {
-      weigh([](double eta) { return expm1OfIOverI(-eta); }, scale);
+      transform(in, out, [&](int k, int l) {
+        return expm1OfIOverI(-(scale * (phases_(rowOf(k)) - phases_(colOf(l)))));
+      });
+    }
+  }
+
+  /// The weights of applyWeights after compute(): W_ab = weight(a, b), real and symmetric,
+  /// the same function on every rank, evaluated at this rank's entries only.
+  template <class Weight>
+  void setWeights(const Weight& weight) {
+    const BlockCyclicLayout& layout = hat_.layout();
+    local_weights_.resize(layout.localRows(), layout.localCols());
+    for (int l = 0; l < layout.localCols(); ++l) {
+      for (int k = 0; k < layout.localRows(); ++k) {
+        local_weights_(k, l) = weight(rowOf(k), colOf(l));
+      }
+    }
+    weighted_ = true;
+  }
+  /// out = V [W ∘ (Vᴴ in V)] Vᴴ, projected onto the skew-Hermitian matrices; `in`
+  /// skew-Hermitian. out may be in. Throws std::logic_error (on every rank alike) if no
+  /// weights were set since compute().
+  void applyWeights(const DistributedMatrix& in, DistributedMatrix& out) {
+    if (!weighted_ || !in.sameLayout(hat_)) {
+      throw std::logic_error("DistributedEigenbasis::applyWeights: no weights for this basis");
+    }
+    transform(in, out, [&](int k, int l) { return local_weights_(k, l); });
+  }
+
+  /// The phases of a skew-Hermitian y on x's eigenvectors, on every rank: π_a = Im (Vᴴ y V)_aa
+  /// (y's eigenvalues iπ_a when y commutes with x). Two products.
+  void diagonalPhasesOf(const DistributedMatrix& y, Eigen::VectorXd& out) {
+    multiplyInto(1.0, y, vectors_, 0.0, product_);                       // y V
+    multiplyInto(1.0, vectors_, product_, 0.0, hat_, Factor::kAdjoint);  // Vᴴ y V
+    const BlockCyclicLayout& layout = hat_.layout();
+    diagonal_.setZero(layout.size());
+    for (int l = 0; l < layout.localCols(); ++l) {
+      for (int k = 0; k < layout.localRows(); ++k) {
+        if (rowOf(k) == colOf(l)) diagonal_(rowOf(k)) = hat_.local()(k, l).imag();
+      }
+    }
+    // Each entry is held by one rank and zero on the others: the sum is that entry, exactly.
+    out.resize(layout.size());
+    MPI_Allreduce(diagonal_.data(), out.data(), layout.size(), MPI_DOUBLE, MPI_SUM,
+                  layout.grid().comm());
+  }
+
+ private:
+  // out = V [F ∘ (Vᴴ in V)] Vᴴ, projected, with F at this rank's local entry (k, l) of Â
+  // weight(k, l).
+  template <class Weight>
+  void transform(const DistributedMatrix& in, DistributedMatrix& out, const Weight& weight) {
+    multiplyInto(1.0, in, vectors_, 0.0, product_);                      // in V
+    multiplyInto(1.0, vectors_, product_, 0.0, hat_, Factor::kAdjoint);  // Vᴴ in V
+    Eigen::MatrixXcd& local = hat_.local();
+    for (int l = 0; l < local.cols(); ++l) {
+      for (int k = 0; k < local.rows(); ++k) local(k, l) *= weight(k, l);
     }
     multiplyInto(1.0, vectors_, hat_, 0.0, product_);  // V (F ∘ Â)
     if (!out.sameLayout(in)) out = DistributedMatrix(in.layout());
@@ -68,19 +127,9 @@ class DistributedEigenbasis {
     adjoints_.makeSkewHermitian(out.local());
   }
 
- private:
-  // Â_ab ← f(scale (θ_a − θ_b)) Â_ab over this rank's entries, a and b their global indices.
-  template <class Function>
-  void weigh(const Function& function, double scale) {
-    const BlockCyclicLayout& layout = hat_.layout();
-    Eigen::MatrixXcd& local = hat_.local();
-    for (int l = 0; l < layout.localCols(); ++l) {
-      const double theta_b = phases_(layout.globalCol(l));
-      for (int k = 0; k < layout.localRows(); ++k) {
-        local(k, l) *= function(scale * (phases_(layout.globalRow(k)) - theta_b));
-      }
-    }
-  }
+  // The global row and column of this rank's local row k and column l.
+  int rowOf(int k) const { return hat_.layout().globalRow(k); }
+  int colOf(int l) const { return hat_.layout().globalCol(l); }
 
   // The matrices and pzheevd_'s workspaces for a layout: its query, the real and integer
   // workspaces raised to the minima its documentation states (LRWORK ≥ 1 + 9N + 3·NP·NQ,
@@ -110,7 +159,9 @@ class DistributedEigenbasis {
 
   DistributedMatrix hermitian_, vectors_, product_, hat_;
   AdjointExchange adjoints_;
-  Eigen::VectorXd phases_;
+  Eigen::VectorXd phases_, diagonal_;
+  Eigen::MatrixXd local_weights_;  // of applyWeights, at this rank's entries
+  bool weighted_ = false;          // local_weights_ are this basis's
   std::vector<std::complex<double>> work_;
   std::vector<double> rwork_;
   std::vector<int> iwork_;

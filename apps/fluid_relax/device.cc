@@ -1,7 +1,6 @@
 #include "fluid_relax/device.h"
 
 #include <ddb/groups/sun.h>
-#include <ddb/integrators/methods/method_table.h>
 
 #include "common/cli.h"
 #include "common/exit_status.h"
@@ -19,7 +18,7 @@ Device deviceOf(const std::string& text) {
 
 Eigen::Index maxN(Device device) { return device == Device::kCuda ? SUN::kMaxN : kMaxN; }
 
-void requireRunsOn(Device device, const Options& o, Eigen::Index n) {
+void requireRunsOn(Device device, Eigen::Index n) {
   if (device == Device::kCpu) {
     if (n > kMaxN) {
       app::usageError("--device", "cpu",
@@ -27,16 +26,6 @@ void requireRunsOn(Device device, const Options& o, Eigen::Index n) {
                           "; on the CPU N <= " + std::to_string(kMaxN) + " (give --device cuda)");
     }
     return;
-  }
-  if (o.newton) {
-    throw app::UsageError(
-        "--device cuda, --newton: the Newton search runs on the CPU only (it works on dense "
-        "matrices); give --device cpu");
-  }
-  if ((findMethod(o.method)->groups & kBackendMatrixGroups) == 0) {
-    app::usageError("--method", o.method,
-                    "--device cuda runs the methods written against the matrix backend alone: " +
-                        methodList(kBackendMatrixGroups));
   }
 #ifdef DDB_FLUID_RELAX_CUDA
   if (const auto why = cudaUnavailable()) app::usageError("--device", "cuda", *why);

@@ -19,10 +19,10 @@ Device deviceOf(const std::string& text);
 /// there), the group's on the GPU (the spectrum only at history rows).
 Eigen::Index maxN(Device device);
 
-/// Whether the run `o` of size n (its method, --newton) can run on `device` here: a
-/// UsageError naming the flag and the reason if not (a method that needs dense matrices,
-/// --newton, N too large for the CPU, no CUDA backend in this build, no usable GPU).
-void requireRunsOn(Device device, const Options& o, Eigen::Index n);
+/// Whether a run of size n can run on `device` here (every --method and --newton run on
+/// either): a UsageError naming the flag and the reason if not (N too large for the CPU, no
+/// CUDA backend in this build, no usable GPU).
+void requireRunsOn(Device device, Eigen::Index n);
 
 /// What summary.json records: "cpu", or "cuda: " and the GPU's name.
 std::string deviceDescription(Device device);

@@ -278,9 +278,9 @@ int runRelax(int argc, char** argv) {
   addOptions(cli, o, kMaxN);
   cli.add_option("--device", o.device,
                  "where the states live: cpu, or cuda (one GPU, N <= " +
-                     std::to_string(maxN(Device::kCuda)) + ", the methods " +
-                     methodList(kBackendMatrixGroups) +
-                     "; docs/guide/gpu.md); a checkpoint resumes on either")
+                     std::to_string(maxN(Device::kCuda)) +
+                     ", every --method and --newton; docs/guide/gpu.md); a checkpoint resumes "
+                     "on either")
       ->capture_default_str();
   if (const auto status = app::parseCommandLine(cli, argc, argv)) return *status;
   app::setupLogging(o.log);
@@ -290,13 +290,13 @@ int runRelax(int argc, char** argv) {
     const app::RunFolderLock lock = lockResumeFolder(o.resume);
     Checkpoint c = readCheckpoint(o.resume);
     resumeSettings(cli, o, c);
-    requireRunsOn(device, c.options, c.settings.W0.rows());
+    requireRunsOn(device, c.settings.W0.rows());
     checkResumeFolder(o.resume, c);
     const int status = relaxOn(device, c.options, c.settings, c.given, &c);
     return makeFigures(c.options, c.settings.out, status, DDB_PLOT_SCRIPT, DDB_ANIMATE_SCRIPT);
   }
   const Settings s = settings(cli, o, maxN(device));
-  requireRunsOn(device, o, s.W0.rows());
+  requireRunsOn(device, s.W0.rows());
   const app::RunFolderLock lock =
       app::claimNewRunFolder("--out", o.out, s.out, runFiles(), o.overwrite, "--overwrite");
   const int status = relaxOn(device, o, s, givenFlags(cli), nullptr);

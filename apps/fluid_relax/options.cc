@@ -12,7 +12,9 @@ namespace ddb::fluid {
 std::vector<std::pair<std::string, std::string>> fluidMethods() {
   std::vector<std::pair<std::string, std::string>> methods;
   for (const MethodInfo& m : kMethods) {
-    if ((m.groups & kMatrixGroups) != 0 && m.kind != MethodKind::kReference) {
+    // Those that run on every backend: the CPU's, one GPU's (--device cuda) and the MPI ranks'
+    // (fluid-relax-mpi) alike.
+    if ((m.groups & kBackendMatrixGroups) != 0) {
       methods.emplace_back(m.name, m.description);
     }
   }

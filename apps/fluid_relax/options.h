@@ -24,8 +24,9 @@ constexpr long kMaxSteps = 1000000000L;
 // the last one: a killed run loses at most about this much work.
 constexpr double kCheckpointSeconds = 300.0;
 
-/// The methods for the fluid: every entry of the method table for matrix groups but the
-/// dense reference, with the table's descriptions.
+/// The methods for the fluid: the method table's entries for any backend's matrices (every
+/// matrix-group method but the reference), which fluid-relax runs on the CPU or one GPU and
+/// fluid-relax-mpi on MPI ranks, with the table's descriptions.
 std::vector<std::pair<std::string, std::string>> fluidMethods();
 
 /// The options as given (numbers as text where messages quote them).

@@ -103,18 +103,23 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   const Eigen::Index n = run.n;
 
   // fluid-relax's run, on distributed states: the library's fluid, method and Relaxation
-  // (docs/design/distributed.md, "One step formula"). A resumed run starts from the zero matrix of
-  // the layout, which the checkpoint's state replaces.
+  // (docs/design/distributed.md, "One step formula"). A resumed run starts from W₀ too (rank
+  // 0's, from the checkpoint), which the checkpoint's state replaces: the Newton search takes
+  // its direction from W₀'s energy rate, as fluid-relax's resumed search does.
   DistributedMatrix W0(grid, static_cast<int>(n), run.block);
-  if (resume == nullptr) W0.scatterFrom(s.W0);  // rank 0's
+  W0.scatterFrom(s.W0);  // rank 0's
   const auto system = makeDistributedZeitlinFluid(W0.layout(), s.alpha);
   std::unique_ptr<OneStepMethod<DistributedSUN>> method;
   std::optional<Relaxation<DistributedSUN>> relaxing;
   // The library's checks of the run (InvalidArgument) are bad input, agreed by every rank.
   if (const int status = onEveryRank(grid, [&] {
         try {
-          method = makeMethod<DistributedSUN>(o.method, system);
-          relaxing.emplace(*method, *system, W0, s.h, s.relax);
+          method = makeMethod<DistributedSUN>(o.method, system);  // not used by a Newton search
+          if (s.relax.newton) {
+            relaxing.emplace(*system, W0, s.relax);
+          } else {
+            relaxing.emplace(*method, *system, W0, s.h, s.relax);
+          }
         } catch (const InvalidArgument& e) {
           throw app::UsageError(e.what());
         }
@@ -155,16 +160,27 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   }
   const RelaxState& at = relaxation.state();
   if (resume != nullptr) spdlog::info("resuming {} at step {}, t = {}", s.out.string(), at.k, at.t);
-  spdlog::info("N = {}, alpha = {}, {} init, {} on {} ranks ({}x{} grid, block {}): {}{}{}", n,
-               s.alpha, s.init, o.method, grid.size(), grid.rows(), grid.cols(), run.block,
-               s.relax.control.adaptive ? "adaptive steps from h = "
-                                        : fmt::format("{} steps of h = ", s.steps),
-               s.h, s.default_h && resume == nullptr ? " (default)" : "");
+  const std::string method_name = s.relax.newton ? "newton" : o.method;
+  const std::string ranks_text = fmt::format("{} ranks ({}x{} grid, block {})", grid.size(),
+                                             grid.rows(), grid.cols(), run.block);
+  if (s.relax.newton) {
+    spdlog::info(
+        "N = {}, alpha = {}, {} init, Newton search on {} to r <= {}, at most {} "
+        "iterations",
+        n, s.alpha, s.init, ranks_text, s.relax.tolerance, s.steps);
+  } else {
+    spdlog::info("N = {}, alpha = {}, {} init, {} on {}: {}{}{}", n, s.alpha, s.init, method_name,
+                 ranks_text,
+                 s.relax.control.adaptive ? "adaptive steps from h = "
+                                          : fmt::format("{} steps of h = ", s.steps),
+                 s.h, s.default_h && resume == nullptr ? " (default)" : "");
+  }
   app::warnAboutSlowBlasKernels();
 
   const bool watch_energy =
-      app::EnergyRises::applies(findMethod(o.method)->keeps_casimirs, s.alpha);
-  const bool counts_iterations = method->solvesEquations();
+      app::EnergyRises::applies(s.relax.newton || findMethod(o.method)->keeps_casimirs, s.alpha);
+  // Every method that solves equations reports its iterations; rk4 and a Newton search none.
+  const bool counts_iterations = !s.relax.newton && method->solvesEquations();
   std::string write_error;  // rank 0's first failed write
   const auto onRoot = [&](const std::function<void()>& write) {
     if (!root || !write_error.empty()) return;
@@ -221,7 +237,7 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   }
   app::Progress progress(o.log.quiet || !root);
   const std::string label =
-      o.method + " N=" + std::to_string(n) + " P=" + std::to_string(grid.size());
+      method_name + " N=" + std::to_string(n) + " P=" + std::to_string(grid.size());
   app::StopSignals signals;
   StepFlags flags;
   // Relaxation decides every step from values reduced alike on every rank, so every rank
@@ -255,8 +271,8 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
   const double runtime_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   onRoot([&] {
-    tally.rises.warnIfAny(o.method);
-    app::Json summary = runSummary(o, s, outputs->system(), result, tally, o.method,
+    tally.rises.warnIfAny(method_name);
+    app::Json summary = runSummary(o, s, outputs->system(), result, tally, method_name,
                                    counts_iterations, watch_energy, runtime_s, "cpu");
     summary["mpi_ranks"] = grid.size();
     summary["process_grid"] = {grid.rows(), grid.cols()};

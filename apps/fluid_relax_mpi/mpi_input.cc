@@ -20,43 +20,6 @@ namespace ddb::fluid_mpi {
 
 namespace {
 
-bool runsDistributed(const std::string& method) {
-  const MethodInfo* info = findMethod(method);
-  return info != nullptr && (info->groups & kBackendMatrixGroups) != 0;
-}
-
-// What fluid-relax has and this app does not yet (docs/design/distributed.md, "Not done yet").
-void refuseUnsupported(const CLI::App& cli, const fluid::Options& o) {
-  if (!runsDistributed(o.method)) {
-    app::usageError("--method", o.method,
-                    "fluid-relax-mpi runs the methods whose step is written against the matrix "
-                    "backend alone: " +
-                        methodList(kBackendMatrixGroups) + " (docs/design/matrix-backend.md)");
-  }
-  if (cli.count("--newton") > 0) {
-    throw app::UsageError(
-        "--newton: not available in fluid-relax-mpi (docs/design/distributed.md); run "
-        "fluid-relax for it");
-  }
-}
-
-// A checkpoint of a run this app cannot continue (fluid-relax's other methods, --newton) is
-// refused naming --resume.
-void refuseForeignRun(const std::string& dir, const fluid::Checkpoint& c) {
-  std::string what;
-  if (c.settings.relax.newton) {
-    what = "--newton";
-  } else if (!runsDistributed(c.options.method)) {
-    what = "--method " + c.options.method;
-  }
-  if (!what.empty()) {
-    app::usageError("--resume", dir,
-                    "its run used " + what +
-                        ", which fluid-relax-mpi does not have (docs/design/distributed.md); "
-                        "resume it with fluid-relax");
-  }
-}
-
 // The run's definition (options, given flags, settings but W₀) and N, made on rank 0, on
 // every rank: written and read as the checkpoint writes and reads them, each value broadcast
 // by a RankZeroRecordReader. The other ranks never hold W₀ whole.
@@ -149,9 +112,9 @@ void addMpiOptions(CLI::App& cli, MpiOptions& o) {
   cli.footer(
       "\nfluid-relax-mpi is fluid-relax's relaxation with every N x N matrix "
       "distributed over the MPI ranks\n(docs/design/distributed.md): start it with mpirun -np P. "
-      "Methods here: " +
+      "Methods (--method), and --newton: fluid-relax's, " +
       methodList(kBackendMatrixGroups) +
-      "; not available: the other methods, --newton.\n\nInitial "
+      ".\n\nInitial "
       "vorticities (--init; all scaled to ||W||_F = sqrt(N), seeded by --seed):\n" +
       app::describeChoices(app::initDescriptions()) +
       "\nFiles in --out (written by rank 0): history.csv, W_final.csv, omega_initial.csv, "
@@ -164,10 +127,7 @@ void addMpiOptions(CLI::App& cli, MpiOptions& o) {
 
 MpiRun mpiRun(const CLI::App& cli, const MpiOptions& o, const ProcessGrid& grid) {
   MpiRun run;
-  if (const int status = onEveryRank(grid, [&] {
-        refuseUnsupported(cli, o.relax);
-        run.grid_rows = readGridRows(o, grid.size());
-      })) {
+  if (const int status = onEveryRank(grid, [&] { run.grid_rows = readGridRows(o, grid.size()); })) {
     throw Reported{status};
   }
   if (!o.relax.resume.empty()) {
@@ -183,7 +143,6 @@ MpiRun mpiRun(const CLI::App& cli, const MpiOptions& o, const ProcessGrid& grid)
     }
     shareDefinition(grid, c.options, c.given, c.settings, run.n);
     const int status = onEveryRank(grid, [&] {
-      refuseForeignRun(dir, c);
       fluid::resumeSettings(cli, o.relax, c);
       run.block = readBlock(o, grid.size(), run.grid_rows, run.n);
     });

@@ -229,6 +229,17 @@ void weighByPhases(long n, const double* phases, double scale, PhaseFunction f, 
   });
 }
 
+void weighEntrywise(long count, const double* weights, double* x) {
+  launch(count, [=] __device__(long k) {
+    x[2 * k] = x[2 * k] * weights[k];
+    x[2 * k + 1] = x[2 * k + 1] * weights[k];
+  });
+}
+
+void imaginaryDiagonal(long n, const double* x, double* out) {
+  launch(n, [=] __device__(long i) { out[i] = x[2 * (i + i * n) + 1]; });
+}
+
 void addToDiagonal(long rows, long count, double* x, double c_real, double c_imag) {
   launch(count, [=] __device__(long i) {
     const long at = 2 * (i + i * rows);

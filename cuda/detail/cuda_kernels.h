@@ -30,6 +30,10 @@ void addToDiagonal(long rows, long count, double* x, double c_real, double c_ima
 /// x(a, b) ← f(scale (θ_a − θ_b))·x(a, b) for the n×n x and the n phases θ (a device array):
 /// an eigenbasis's weights (core/phase_function.h, cuda/cuda_eigenbasis.h).
 void weighByPhases(long n, const double* phases, double scale, PhaseFunction f, double* x);
+/// x(a, b) ← w(a, b)·x(a, b) for the `count` entries of x and the reals w (device arrays).
+void weighEntrywise(long count, const double* weights, double* x);
+/// out(i) = Im x(i, i) for the n×n x (device arrays).
+void imaginaryDiagonal(long n, const double* x, double* out);
 /// values(s) = x at linear index indices(s) (device arrays of `count`).
 void gather(long count, const double* x, const long* indices, double* values);
 

@@ -224,10 +224,6 @@ class Relaxation {
  public:
   using Dual = typename G::template Dual<double>;
 
-  /// Whether the Newton search runs on G's states: OrbitNewton and its preconditioner are
-  /// written on dense matrices (docs/design/matrix-backend.md, "What runs on any backend").
-  static constexpr bool kNewtonSearch = !isDynamicGroup<G> || isEigenMatrix<Dual>;
-
   /// Starts at mu0 with the step h0 (options: when to stop, how to choose h). Bad arguments
   /// throw InvalidArgument; calls method.reset().
   Relaxation(OneStepMethod<G>& method, const LiePoissonSystem<G>& system, const Dual& mu0,
@@ -249,11 +245,6 @@ class Relaxation {
   Relaxation(const LiePoissonSystem<G>& system, const Dual& mu0, const RelaxOptions& options)
       : system_(system), options_(checked(options)), probing_(true), probe_(system) {
     if (!options.newton) throwInvalid("newton", "false", "this constructor is the Newton search's");
-    if constexpr (!kNewtonSearch) {
-      throwInvalid("newton", "true",
-                   std::string("the Newton search (OrbitNewton) runs on dense matrices, not on ") +
-                       G::kName + "'s");
-    }
     if (options.control.adaptive) {
       throwInvalid("adaptive", "true", "a Newton search chooses its own steps");
     }
@@ -265,7 +256,7 @@ class Relaxation {
                    "a Newton search simulates no time: cap it by max_steps");
     }
     start(mu0, "newton");
-    if constexpr (kNewtonSearch) newton_.emplace(system, probe_.energyRate() < 0 ? 1.0 : -1.0);
+    newton_.emplace(system, probe_.energyRate() < 0 ? 1.0 : -1.0);
   }
 
   /// The accepted state: its index, time, step, energy and residual, and the state itself.
@@ -279,9 +270,7 @@ class Relaxation {
   /// why). A failed step is recorded in the result; the state stays the last accepted one.
   bool advance() {
     if (stopped_) return false;
-    if constexpr (kNewtonSearch) {
-      if (newton_) return advanceByNewton();
-    }
+    if (newton_) return advanceByNewton();
     while (true) {
       if (probing_ && state().residual <= options_.tolerance) return stop(RelaxStop::kSteady);
       if (state().k >= options_.max_steps) return stop(RelaxStop::kStepCap);
@@ -336,7 +325,7 @@ class Relaxation {
   void save(BinaryRecordWriter& out) const {
     saveRelaxCursor(out, state(), result_.final, result_.steps_rejected, times_);
     if (newton_) {
-      if constexpr (kNewtonSearch) newton_->save(out);
+      newton_->save(out);
     } else {
       control_->save(out);
       method_->saveWarmStart(out);
@@ -346,7 +335,7 @@ class Relaxation {
   void load(BinaryRecordReader& in) {
     loadRelaxCursor(in, cursor(), result_.final, result_.steps_rejected, times_);
     if (newton_) {
-      if constexpr (kNewtonSearch) newton_->load(in);
+      newton_->load(in);
     } else {
       control_->load(in);
       method_->loadWarmStart(in, result_.final);

@@ -95,11 +95,11 @@ inline constexpr std::array<MethodInfo, 15> kMethods{{
    MethodKind::kDdb, RetractionKind::kExponential, SchemeKind::kNone, ""},
   {"ddb-cay-implicit",
    "DDB Cayley step, dissipative factor linearly implicit: moves the energy the flow's way at any h (order 1, order 2 at alpha = 0)",
-   kFixedSizeGroups | kMatrixGroups, true, false, true, 1, 2,
+   kFixedSizeGroups | kMatrixGroups | kBackendMatrixGroups, true, false, true, 1, 2,
    MethodKind::kLinearlyImplicitDdb, RetractionKind::kCayley, SchemeKind::kNone, ""},
   {"ddb-exp-implicit",
    "DDB exp step (closed-form dexp^-1), dissipative factor linearly implicit: moves the energy the flow's way at any h (order 1, order 2 at alpha = 0)",
-   kFixedSizeGroups | kMatrixGroups, true, false, true, 1, 2,
+   kFixedSizeGroups | kMatrixGroups | kBackendMatrixGroups, true, false, true, 1, 2,
    MethodKind::kLinearlyImplicitDdb, RetractionKind::kExponential, SchemeKind::kNone, ""},
   {"sddb-paper-cay", "the paper's symmetric DDB, Cayley (order 1 as written; Lagrangian only)",
    kFixedSizeGroups, true, true, false, 1, 2,
@@ -269,10 +269,7 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(const MethodInfo& method,
     case MethodKind::kDdb:
       return detail::withRetraction<G, Ddb>(method.retraction, system, form);
     case MethodKind::kLinearlyImplicitDdb:
-      if constexpr (kDenseOnly) {
-        return detail::withRetraction<G, LinearlyImplicitDdb>(method.retraction, system, form);
-      }
-      break;
+      return detail::withRetraction<G, LinearlyImplicitDdb>(method.retraction, system, form);
     case MethodKind::kSymmetricDdb:
       return detail::withRetraction<G, SymmetricDdb>(method.retraction, system, form);
     case MethodKind::kPaperSymmetricDdb:

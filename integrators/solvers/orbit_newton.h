@@ -22,12 +22,16 @@
 // rounding, as by the DDB steps) with f no higher beyond rounding: the energy moves the way
 // the flow moves it, at every step. The steady state reached is a critical point near the
 // path, not the flow's limit from μ₀ (docs/guide/steady-states.md compares them).
+// On matrix groups every operation is the backend's (docs/design/matrix-backend.md): the
+// brackets are products and adjoints, the CG's vectors combine by its element-wise
+// operations and pair by its innerProduct, the preconditioner is its Eigenbasis.
 #pragma once
 
 #include <ddb/core/binary_record.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
+#include <ddb/core/matrix_backend.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/integrators/drivers/energy_step_control.h>
 #include <ddb/integrators/matrix_kernels/matrix_conjugation.h>
@@ -47,6 +51,7 @@ class OrbitNewton {
  public:
   using Algebra = typename G::template Algebra<double>;
   using Dual = typename G::template Dual<double>;
+  using B = MatrixBackend<Dual>;  ///< the matrix groups' arithmetic
 
   static constexpr double kFirstRadius = 0.1;  ///< Δ of the first step, on ‖x‖
   static constexpr double kMaxRadius = 1.0;    ///< Δ's cap: cay x stays far from its pole
@@ -79,7 +84,7 @@ class OrbitNewton {
     if (!(slope < 0)) {
       // Not a descent direction (rounding near a steady state): the preconditioned gradient.
       precondition(now_.gradient, v_);
-      v_ *= -std::min(1.0, radius_ / norm(v_));
+      scale(-std::min(1.0, radius_ / norm(v_)), v_, v_);
       slope = dot(now_.gradient, v_);
     }
     hessianTimes(now_, v_, jv_);
@@ -123,7 +128,7 @@ class OrbitNewton {
       // antisymmetric part is of the size of ∇f): its direction may not descend. The
       // preconditioned gradient, scaled by about τ, does.
       precondition(now_.gradient, v_);
-      v_ *= -std::min(1.0, kMaxRadius / norm(v_));
+      scale(-std::min(1.0, kMaxRadius / norm(v_)), v_, v_);
       slope = dot(now_.gradient, v_);
       if (!(slope < 0)) return true;  // ∇f is rounding: at rest, no step
     }
@@ -166,8 +171,8 @@ class OrbitNewton {
   void evaluate(const Dual& mu, Evaluation& e) {
     if constexpr (isDynamicGroup<G>) {
       allocate(mu);
-      if (e.argument.rows() != mu.rows()) {
-        for (Dual* m : {&e.argument, &e.xi, &e.gradient}) m->setZero(mu.rows(), mu.cols());
+      if (!B::sameShape(e.argument, mu)) {
+        for (Dual* m : {&e.argument, &e.xi, &e.gradient}) B::zeroLike(*m, mu);
       }
       system_.velocityInto(mu, e.argument, e.xi);
       bracket(e.argument, e.xi, e.gradient);
@@ -176,9 +181,9 @@ class OrbitNewton {
       e.xi = system_.velocity(mu);
       e.gradient = Algebra(G::adDual(e.xi, mu));
     }
-    e.gradient *= -sigma_;
-    const double scale = norm(e.xi) * norm(e.argument);
-    e.relative = scale > 0 ? norm(e.gradient) / scale : 0.0;
+    scale(-sigma_, e.gradient, e.gradient);
+    const double size = norm(e.xi) * norm(e.argument);
+    e.relative = size > 0 ? norm(e.gradient) / size : 0.0;
   }
 
   // out = J v at e: −σ(ad*_ξ δμ + ad*_{δξ} μ), δμ = ad*_v μ, δξ = D²H(μ)[δμ].
@@ -188,13 +193,13 @@ class OrbitNewton {
       system_.velocityDerivativeInto(e.argument, moved_, product_, dxi_);
       bracket(moved_, e.xi, out);
       bracket(e.argument, dxi_, added_);
-      out += added_;
+      B::axpy(1.0, added_, out);
     } else {
       const Dual moved = G::adDual(v, e.argument);
       const Algebra dxi = system_.hamiltonian().hessianTimes(e.argument, moved);
       out = Algebra(G::adDual(e.xi, moved) + G::adDual(dxi, e.argument));
     }
-    out *= -sigma_;
+    scale(-sigma_, out, out);
   }
 
   // v: truncated preconditioned CG on (J + shift) v = −∇f within ‖v‖ ≤ radius. Returns its
@@ -206,16 +211,16 @@ class OrbitNewton {
     const Algebra& g = now_.gradient;
     if constexpr (isDynamicGroup<G>) {
       if (!preconditioner_.refresh(now_.argument, now_.xi, shift)) {
-        throw NonFiniteState("orbit newton", -1, NAN, NAN, mu, "state");
+        throw NonFiniteState("orbit newton", -1, NAN, NAN, B::describe(mu), "state");
       }
     }
-    v_ = Algebra::Zero(g.rows(), g.cols());
-    res_ = -g;
+    setZero(v_);
+    scale(-1.0, g, res_);
     precondition(res_, z_);
-    p_ = z_;
+    copy(z_, p_);
     double rz = dot(res_, z_);
     double stop = (shift > 0 ? 0.5 : std::min(0.5, std::sqrt(now_.relative))) * norm(g);
-    const long cap = std::max<long>(100, kCgPerDimension * static_cast<long>(mu.size()));
+    const long cap = std::max<long>(100, kCgPerDimension * static_cast<long>(unknowns(mu)));
     long k = 0;
     while (k < cap && norm(res_) > stop) {
       hessianTimes(now_, p_, jv_);
@@ -223,32 +228,38 @@ class OrbitNewton {
       if (k == 1 && shift > 0) {
         stop = std::min(stop, std::abs(dot(p_, jv_)) / dot(p_, p_) / shift * norm(g));
       }
-      if (shift > 0) jv_ += shift * p_;
+      if (shift > 0) axpy(shift, p_, jv_);
       const double curvature = dot(p_, jv_);
       if (curvature == 0.0 || (curvature < 0.0 && !roundoff_)) {
         // Negative curvature: the search goes to the radius along p (the first time, the
         // preconditioned gradient); past rounding f cannot tell a saddle from a minimum and CG
         // goes on. The minimizing movement keeps the descent direction it has (the first time,
         // the preconditioned residual, whose preconditioner includes the shift 1/τ).
-        if (k == 1) v_ = shift > 0 ? p_ : p_ * (radius / norm(p_));
+        if (k == 1) {
+          if (shift > 0) {
+            copy(p_, v_);
+          } else {
+            scale(radius / norm(p_), p_, v_);
+          }
+        }
         break;
       }
       const double a = rz / curvature;
-      x_ = v_ + a * p_;
+      sum(1.0, v_, a, p_, x_);
       if (norm(x_) >= radius) {
         const double pp = dot(p_, p_), vp = dot(v_, p_), vv = dot(v_, v_);
         const double tau = (-vp + std::sqrt(vp * vp + pp * (radius * radius - vv))) / pp;
-        v_ += tau * p_;
+        axpy(tau, p_, v_);
         break;
       }
       std::swap(v_, x_);
-      res_ -= a * jv_;
+      axpy(-a, jv_, res_);
       precondition(res_, z_);
       const double rz_next = dot(res_, z_);
-      p_ = z_ + (rz_next / rz) * p_;
+      sum(1.0, z_, rz_next / rz, p_, p_);
       rz = rz_next;
     }
-    if (shift > 0 && norm(v_) > radius) v_ *= radius / norm(v_);
+    if (shift > 0 && norm(v_) > radius) scale(radius / norm(v_), v_, v_);
     return k;
   }
 
@@ -266,7 +277,7 @@ class OrbitNewton {
                                      bool residual_must_fall, Report& report) {
     double s = 1.0;
     for (int halving = 0; halving <= kMaxHalvings; ++halving, s *= 0.5) {
-      x_ = s * v_;
+      scale(s, v_, x_);
       if (!retract(mu, x_, trial_mu_)) continue;
       const double trial_energy = system_.energy(trial_mu_);
       if (!std::isfinite(trial_energy)) continue;
@@ -304,35 +315,90 @@ class OrbitNewton {
     try {
       if constexpr (isDynamicGroup<G>) {
         conjugation_.prepare(x);
-        out = mu;
+        B::copy(mu, out);
         conjugation_.apply(out);
+        return B::allFinite(out);
       } else {
         out = G::cayTransport(x, Algebra::Zero().eval(), mu);
+        return out.allFinite();
       }
     } catch (const SolveFailure&) {
       return false;
     }
-    return out.allFinite();
   }
 
   // out = [a, b] = ab − (ab)ᴴ for skew-Hermitian (real: skew-symmetric) a, b: one product.
   void bracket(const Dual& a, const Dual& b, Dual& out) {
-    product_.noalias() = a * b;
-    out = product_ - product_.adjoint();
+    B::multiply(a, b, product_);
+    B::copy(product_, out);
+    B::addAdjoint(-1.0, product_, out);
   }
 
+  // Every matrix workspace of like's shape (and layout), once per shape.
   void allocate(const Dual& like) {
-    if (product_.rows() == like.rows()) return;
-    for (Dual* m : {&product_, &moved_, &dxi_, &added_}) m->setZero(like.rows(), like.cols());
+    if (B::sameShape(product_, like)) return;
+    for (Dual* m : {&product_, &moved_, &dxi_, &added_, &trial_mu_}) B::zeroLike(*m, like);
+    for (Algebra* m : {&v_, &x_, &res_, &z_, &p_, &jv_}) B::zeroLike(*m, like);
   }
 
-  template <class A>
-  static double dot(const A& a, const A& b) {
-    return std::real(a.conjugate().cwiseProduct(b).sum());
+  // The vectors' arithmetic: Eigen's expressions on a small group's vectors, the matrix
+  // backend's operations on a matrix group's states (as in RungeKutta).
+  static void copy(const Algebra& x, Algebra& out) {
+    if constexpr (isDynamicGroup<G>) {
+      B::copy(x, out);
+    } else {
+      out = x;
+    }
   }
-  template <class A>
-  static double norm(const A& a) {
-    return a.norm();
+  static void setZero(Algebra& x) {
+    if constexpr (isDynamicGroup<G>) {
+      B::setZero(x);
+    } else {
+      x.setZero();
+    }
+  }
+  static void scale(double a, const Algebra& x, Algebra& out) {
+    if constexpr (isDynamicGroup<G>) {
+      B::scale(a, x, out);
+    } else {
+      out = a * x;
+    }
+  }
+  static void axpy(double a, const Algebra& x, Algebra& y) {
+    if constexpr (isDynamicGroup<G>) {
+      B::axpy(a, x, y);
+    } else {
+      y += a * x;
+    }
+  }
+  static void sum(double a, const Algebra& x, double b, const Algebra& y, Algebra& out) {
+    if constexpr (isDynamicGroup<G>) {
+      B::sum(a, x, b, y, out);
+    } else {
+      out = a * x + b * y;
+    }
+  }
+  /// Re ⟨a, b⟩, the pairing of docs/reference/conventions.md §1.
+  static double dot(const Algebra& a, const Algebra& b) {
+    if constexpr (isDynamicGroup<G>) {
+      return B::innerProduct(a, b);
+    } else {
+      return std::real(a.conjugate().cwiseProduct(b).sum());
+    }
+  }
+  static double norm(const Algebra& a) {
+    if constexpr (isDynamicGroup<G>) {
+      return B::frobeniusNorm(a);
+    } else {
+      return a.norm();
+    }
+  }
+  static long unknowns(const Dual& mu) {
+    if constexpr (isDynamicGroup<G>) {
+      return static_cast<long>(B::globalSize(mu));
+    } else {
+      return static_cast<long>(mu.size());
+    }
   }
 
   const LiePoissonSystem<G>& system_;

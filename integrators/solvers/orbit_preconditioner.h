@@ -10,10 +10,13 @@
 // of the largest d_ab, and leaves the diagonal (μ's commutant, which does not move μ) alone.
 // For the shifted Hessian J + s·I of the minimizing movement (OrbitNewton::advanceProximal)
 // it divides by d_ab + s instead, and the diagonal by s.
-// Four products per application, one decomposition per refresh.
+// Four products per application, one decomposition and the phases π per refresh, all by the
+// backend's Eigenbasis (docs/design/matrix-backend.md): the weights are a function of θ and π,
+// which every backend (every rank) has alike.
 #pragma once
 
-#include <ddb/core/skew_hermitian_eigenbasis.h>
+#include <ddb/core/matrix_backend.h>
+#include <ddb/core/skew_hermitian_eigenbasis.h>  // the dense backend's Eigenbasis
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -35,34 +38,28 @@ class OrbitPreconditioner {
     basis_.diagonalPhasesOf(xi, pi_);
     const Eigen::VectorXd& theta = basis_.phases();
     const Eigen::Index n = theta.size();
-    inverse_.resize(n, n);
+    const auto d = [&](Eigen::Index a, Eigen::Index b) {
+      return std::abs((theta(a) - theta(b)) * (pi_(a) - pi_(b)));
+    };
     double largest = 0.0;
     for (Eigen::Index b = 0; b < n; ++b) {
-      for (Eigen::Index a = 0; a < n; ++a) {
-        inverse_(a, b) = std::abs((theta(a) - theta(b)) * (pi_(a) - pi_(b)));
-        largest = std::max(largest, inverse_(a, b));
-      }
+      for (Eigen::Index a = 0; a < n; ++a) largest = std::max(largest, d(a, b));
     }
     const double floor = largest > 0 ? kFloor * largest : 1.0;
-    for (Eigen::Index b = 0; b < n; ++b) {
-      for (Eigen::Index a = 0; a < n; ++a) {
-        inverse_(a, b) = a == b ? (shift > 0 ? 1.0 / shift : 1.0)
-                                : 1.0 / (std::max(inverse_(a, b), floor) + shift);
-      }
-    }
+    // The weights as a function of (a, b): each rank of a distributed backend evaluates its
+    // own entries only (no N×N matrix on every rank).
+    basis_.setWeights([&](Eigen::Index a, Eigen::Index b) {
+      return a == b ? (shift > 0 ? 1.0 / shift : 1.0) : 1.0 / (std::max(d(a, b), floor) + shift);
+    });
     return true;
   }
 
   /// out = V [d⁻¹ ∘ (Vᴴ in V)] Vᴴ. out may be in.
-  void apply(const Matrix& in, Matrix& out) {
-    basis_.applyEntrywise([this](Eigen::Index a, Eigen::Index b) { return inverse_(a, b); }, in,
-                          out);
-  }
+  void apply(const Matrix& in, Matrix& out) { basis_.applyWeights(in, out); }
 
  private:
-  SkewHermitianEigenbasis<Matrix> basis_;
+  typename MatrixBackend<Matrix>::Eigenbasis basis_;
   Eigen::VectorXd pi_;
-  Eigen::MatrixXd inverse_;
 };
 
 }  // namespace ddb

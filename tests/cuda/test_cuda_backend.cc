@@ -293,8 +293,9 @@ TEST(CudaBackend, LuSolvesAndReportsASingularMatrix) {
 }
 
 // The eigenbasis (cuSOLVER's zheevd, four zgemm and the weighing kernel) against the dense
-// backend's: the phases, both phase functions (out may be in), the result exactly
-// skew-Hermitian; a non-finite x refused.
+// backend's: the phases, both phase functions and given weights (out may be in), the phases
+// of another matrix on the eigenvectors, the result exactly skew-Hermitian; a non-finite x
+// refused.
 TEST(CudaBackend, EigenbasisAgreesWithTheDenseOne) {
   SKIP_WITHOUT_GPU();
   for (const Eigen::Index n : {1, 7, 64, 100}) {
@@ -318,6 +319,24 @@ TEST(CudaBackend, EigenbasisAgreesWithTheDenseOne) {
       EXPECT_LT((result - reference).norm(), 1e-13 * a.norm()) << n << ", " << int(f);
       EXPECT_TRUE(result == Matrix(-result.adjoint())) << n << ", " << int(f);
     }
+    // The preconditioner's members: the phases of a on x's eigenvectors, and weights.
+    Eigen::VectorXd pi, pi_reference;
+    basis.diagonalPhasesOf(toDevice(a), pi);
+    dense.diagonalPhasesOf(a, pi_reference);
+    EXPECT_LT((pi - pi_reference).cwiseAbs().maxCoeff(), 1e-13 * a.norm()) << n;
+    Eigen::MatrixXd weights(n, n);
+    for (Eigen::Index b = 0; b < n; ++b) {
+      for (Eigen::Index c = 0; c < n; ++c) weights(c, b) = 1.0 / (1.0 + std::abs(b - c));
+    }
+    basis.setWeights(weights);
+    dense.setWeights(weights);
+    CudaMatrix inout = toDevice(a);
+    basis.applyWeights(inout, inout);
+    const Matrix result = toHost(inout);
+    Matrix reference;
+    dense.applyWeights(a, reference);
+    EXPECT_LT((result - reference).norm(), 1e-13 * a.norm()) << n << ", weights";
+    EXPECT_TRUE(result == Matrix(-result.adjoint())) << n << ", weights";
   }
   Matrix x = randomMatrix(5, 5, 23);
   x = x - x.adjoint();
@@ -406,6 +425,31 @@ TEST(CudaRelaxation, EveryMethodForAnyBackendFollowsTheDenseRun) {
       }
     }
   }
+}
+
+// The Newton search on the GPU reaches the dense search's steady state. Its iterates follow the
+// dense ones only for a few iterations, as on MPI ranks (docs/design/distributed.md, "The
+// Newton search on the ranks"); at N = 16, α = −0.5 the search converges to one critical point:
+// both stop at r ≤ 1e-10, within 1e-8 of each other.
+TEST(CudaRelaxation, TheNewtonSearchReachesTheDenseSearchsSteadyState) {
+  SKIP_WITHOUT_GPU();
+  const Eigen::Index n = 16;
+  const Matrix W0 = randomVorticity(n, 22);
+  RelaxOptions options;
+  options.newton = true;
+  options.tolerance = 1e-10;
+  options.max_steps = 400;
+  const auto dense_fluid = makeZeitlinFluid(n, -0.5);
+  const auto device_fluid = makeCudaZeitlinFluid(n, -0.5);
+  Relaxation<SUN> dense(*dense_fluid, W0, options);
+  while (dense.advance()) {
+  }
+  Relaxation<CudaSUN> device(*device_fluid, toDevice(W0), options);
+  while (device.advance()) {
+  }
+  ASSERT_EQ(dense.result().stop, RelaxStop::kSteady) << dense.result().failure;
+  EXPECT_EQ(device.result().stop, RelaxStop::kSteady) << device.result().failure;
+  EXPECT_LE(relativeDifference(toHost(device.current()), dense.current()), 1e-8);
 }
 
 // On one device a run repeats to the bit (the reductions add in a fixed tree; cuBLAS and

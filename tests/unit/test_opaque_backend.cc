@@ -6,8 +6,8 @@
 // every method of the method table's kBackendMatrixGroups family built by makeMethod (the
 // Legendre solver with its predictor, certified frozen solution and Newton–Krylov fallback,
 // the exponential's sweep in the backend's eigenbasis, the transports and the conjugations),
-// integrate() and Relaxation with its step control, probe and record; they take the dense backend's
-// bits state by state. The other methods are refused by name.
+// integrate() and Relaxation with its step control, probe and record, and the Newton search;
+// they take the dense backend's bits state by state. The other methods are refused by name.
 #include <ddb/core/matrix_backend.h>
 #include <ddb/core/skew_hermitian_eigenbasis.h>
 #include <ddb/groups/sun.h>
@@ -65,6 +65,15 @@ struct MatrixBackend<OpaqueMatrix> {
     void apply(PhaseFunction f, double scale, const X& in, X& out) {
       basis_.apply(f, scale, in.entries_, out.entries_);
     }
+    const Eigen::VectorXd& phases() const { return basis_.phases(); }
+    void diagonalPhasesOf(const X& y, Eigen::VectorXd& out) {
+      basis_.diagonalPhasesOf(y.entries_, out);
+    }
+    template <class Weight>
+    void setWeights(const Weight& weight) {
+      basis_.setWeights(weight);
+    }
+    void applyWeights(const X& in, X& out) { basis_.applyWeights(in.entries_, out.entries_); }
 
    private:
     Dense::Eigenbasis basis_;
@@ -277,14 +286,32 @@ TEST(OpaqueBackend, TheOtherMethodsAreRefusedByName) {
                     ::testing::EndsWith(": " + valid))))
         << m.name;
   }
-  // The Newton search's OrbitNewton is written on dense matrices: refused by name.
-  RelaxOptions options;
-  options.newton = true;
-  options.tolerance = 1e-8;
-  options.max_steps = 10;
-  EXPECT_THAT(
-      [&] { Relaxation<OpaqueSUN>(*fluid, OpaqueKernels::wrap(randomVorticity(8, 1)), options); },
-      ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("newton")));
+}
+
+// The Newton search (OrbitNewton: its brackets, conjugate gradients, line search and
+// preconditioner through the backend) takes the dense backend's bits iterate by iterate, and
+// lowers the residual (at N = 16 from a random vorticity it takes hundreds of iterations to
+// 1e-10, at N = 33 and α < 0 about 60).
+TEST(OpaqueBackend, TheNewtonSearchTakesTheDenseBackendsBits) {
+  for (const auto& [n, alpha] : {std::pair{Eigen::Index{16}, 0.5}, {Eigen::Index{33}, -0.5}}) {
+    const Eigen::MatrixXcd W0 = randomVorticity(n, 9);
+    const auto dense_fluid = makeZeitlinFluid(n, alpha);
+    const auto opaque_fluid = makeOpaqueZeitlinFluid(n, alpha);
+    RelaxOptions options;
+    options.newton = true;
+    options.tolerance = 1e-10;
+    options.max_steps = 60;
+    Relaxation<SUN> dense(*dense_fluid, W0, options);
+    Relaxation<OpaqueSUN> opaque(*opaque_fluid, OpaqueKernels::wrap(W0), options);
+    const Record<SUN> a = relaxAndRecord(dense, [](const Eigen::MatrixXcd& W) { return W; });
+    const Record<OpaqueSUN> b =
+        relaxAndRecord(opaque, [](const OpaqueMatrix& W) { return OpaqueKernels::reveal(W); });
+    const std::string what = "newton, N = " + std::to_string(n);
+    EXPECT_TRUE(a.stop == RelaxStop::kSteady || a.stop == RelaxStop::kStepCap) << what;
+    ASSERT_GT(a.states.size(), 10u) << what;
+    EXPECT_LT(a.states.back().residual, 0.1 * a.states[1].residual) << what;
+    expectSameRecords(a, b, what);
+  }
 }
 
 // Newton–Krylov forced from the first iterate (the certificate's fallback) on both backends.
