@@ -3,7 +3,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <charconv>
 #include <cmath>
+#include <complex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -15,6 +17,8 @@ class InvalidArgument : public std::invalid_argument {
  public:
   using std::invalid_argument::invalid_argument;
 };
+
+std::string formatValue(double v);
 
 /// An implicit equation that the solver did not bring below its tolerance.
 /// `step` is the index k of the step from t_k that failed (-1 while unknown to
@@ -53,11 +57,9 @@ class SolveFailure : public std::runtime_error {
  private:
   static std::string describe(const std::string& what_failed, long step, double time, double h,
                               double residual, double tolerance) {
-    std::ostringstream os;
-    os.precision(17);
-    os << what_failed << " did not converge at step " << step << " (t = " << time << ", h = " << h
-       << "): residual " << residual << " > tolerance " << tolerance;
-    return os.str();
+    return what_failed + " did not converge at step " + std::to_string(step) +
+           " (t = " + formatValue(time) + ", h = " + formatValue(h) + "): residual " +
+           formatValue(residual) + " > tolerance " + formatValue(tolerance);
   }
 
   std::string what_failed_;
@@ -65,7 +67,6 @@ class SolveFailure : public std::runtime_error {
   double time_, h_, residual_, tolerance_;
 };
 
-std::string formatValue(double v);
 template <class Derived>
 std::string formatValue(const Eigen::DenseBase<Derived>& v);
 /// A value already written out, e.g. by a matrix backend whose entries are not on the host
@@ -103,11 +104,9 @@ class NonFiniteState : public SolveFailure {
 
   static std::string describe(const std::string& method, long step, double time, double h,
                               const std::string& quantity, const std::string& value) {
-    std::ostringstream os;
-    os.precision(17);
-    os << method << " step " << step << " (t = " << time << ", h = " << h << ") made the "
-       << quantity << " non-finite (overflow or NaN): " << quantity << " = " << value;
-    return os.str();
+    return method + " step " + std::to_string(step) + " (t = " + formatValue(time) +
+           ", h = " + formatValue(h) + ") made the " + quantity +
+           " non-finite (overflow or NaN): " + quantity + " = " + value;
   }
   std::string method_, quantity_, value_, message_;
 };
@@ -168,12 +167,27 @@ class InjectivityLimit : public SolveFailure {
   std::string message_;
 };
 
+/// v in the shortest form that reads back as the same double ("0.1", not
+/// "0.10000000000000001"; std::to_chars, which ignores the locale); "nan", "inf", "-inf".
 inline std::string formatValue(double v) {
+  char buffer[32];
+  return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, v).ptr);
+}
+
+namespace detail {
+/// An entry of a vector or matrix as formatValue writes it: a double in the shortest form, a
+/// complex one as (re,im), another scalar (an automatic-differentiation Jet) as it prints itself.
+inline std::string formatEntry(double v) { return formatValue(v); }
+inline std::string formatEntry(const std::complex<double>& v) {
+  return "(" + formatValue(v.real()) + "," + formatValue(v.imag()) + ")";
+}
+template <class Scalar>
+std::string formatEntry(const Scalar& v) {
   std::ostringstream os;
-  os.precision(17);
   os << v;
   return os.str();
 }
+}  // namespace detail
 
 /// Small vectors in full; a larger object (a 256×256 state) by its size and its
 /// largest-magnitude (or first non-finite) entry, never entry by entry.
@@ -181,11 +195,11 @@ template <class Derived>
 std::string formatValue(const Eigen::DenseBase<Derived>& v) {
   constexpr Eigen::Index kListed = 12;
   std::ostringstream os;
-  os.precision(17);
   const auto* data = v.derived().data();
   if (v.size() <= kListed) {
     os << "(";
-    for (Eigen::Index i = 0; i < v.size(); ++i) os << (i ? ", " : "") << data[i];
+    for (Eigen::Index i = 0; i < v.size(); ++i)
+      os << (i ? ", " : "") << detail::formatEntry(data[i]);
     os << ")";
     return os.str();
   }
@@ -200,7 +214,7 @@ std::string formatValue(const Eigen::DenseBase<Derived>& v) {
   }
   const Eigen::Index rows = v.rows() > 0 ? v.rows() : 1;
   os << "a " << v.rows() << "x" << v.cols() << " object whose largest entry is [" << worst % rows
-     << ", " << worst / rows << "] = " << data[worst];
+     << ", " << worst / rows << "] = " << detail::formatEntry(data[worst]);
   return os.str();
 }
 

@@ -53,10 +53,13 @@ inline std::string textArgument(const std::string& name, pybind11::handle object
   return object.cast<std::string>();
 }
 
-/// `object` (a sequence or array of `size` real numbers) as an Eigen vector (a copy).
+/// `object` (a sequence or array of `size` real numbers; any number of them if size < 0) as an
+/// Eigen vector (a copy). A refusal says what it must be: `size` numbers, or `requirement`
+/// where given (e.g. "a 1-D array of N numbers J_i > 0, 2 <= N <= 4096").
 template <int Rows = Eigen::Dynamic>
 Eigen::Matrix<double, Rows, 1> vectorArgument(const std::string& name, pybind11::handle object,
-                                              Eigen::Index size = Rows) {
+                                              Eigen::Index size = Rows,
+                                              const std::string& requirement = "") {
   namespace py = pybind11;
   const py::array array = py::array::ensure(object);
   const std::string what = std::string(py::repr(object));
@@ -65,7 +68,15 @@ Eigen::Matrix<double, Rows, 1> vectorArgument(const std::string& name, pybind11:
     throwInvalid(name, what, "must be a sequence of real numbers");
   }
   if (array.ndim() != 1 || (size >= 0 && array.shape(0) != size)) {
-    throwInvalid(name, what, "must be " + std::to_string(size) + " numbers");
+    const std::string shape = array.ndim() == 1
+                                  ? std::to_string(array.shape(0)) + " numbers"
+                                  : "an array of " + std::to_string(array.ndim()) + " dimensions";
+    throwInvalid(name, what,
+                 "must be " +
+                     (!requirement.empty() ? requirement
+                      : size >= 0          ? "a 1-D array of " + std::to_string(size) + " numbers"
+                                           : std::string("a 1-D array of numbers")) +
+                     ", not " + shape);
   }
   const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
   return Eigen::Map<const Eigen::Matrix<double, Rows, 1>>(values.data(), values.shape(0));

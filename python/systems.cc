@@ -55,7 +55,10 @@ void bindSystems(py::module_& m) {
   m.def(
       "manakov",
       [](py::handle J, py::handle alpha) {
-        const Eigen::VectorXd j = vectorArgument("J", J, -1);
+        const Eigen::VectorXd j =
+            vectorArgument("J", J, -1,
+                           "a 1-D array of N numbers J_i > 0, one per axis of SO(N), 2 <= N <= " +
+                               std::to_string(SON::kMaxN));
         // The body keeps N x N matrices (1/(J_i + J_j), and every state): refused here, before
         // they are allocated, past the N that the group's states allow.
         if (j.size() > SON::kMaxN) {

@@ -7,7 +7,8 @@ Usage: plot_fluid.py OUT_DIR
 vorticity_sphere.png  the vorticity on the sphere, initial and final, Mollweide projection,
                       one colour scale, evaluated from omega_initial.csv / omega_final.csv
 history.png           energy, enstrophy, ||[P,W]||_F (log) and spectrum drift (log, zeros
-                      omitted) against t, from history.csv
+                      omitted) against t, from history.csv; for a Newton search (--newton),
+                      whose rows all have t = 0 and no h, against the iteration k
 
 The vorticity is omega(theta, phi) = sum omega_lm Y_lm(theta, phi) with the real spherical
 harmonics of docs/reference/conventions.md §2 (theta colatitude, phi longitude):
@@ -88,7 +89,9 @@ def plot_sphere(out, summary):
     ]
     limit = max(np.abs(f).max() for f in fields)
     fig = plt.figure(figsize=(12, 4.2), layout="constrained")
-    titles = ["initial, t = 0", "final, t = %.4g" % summary["t_end"]]
+    titles = ["initial", "final, after %d Newton iterations" % summary["steps"]]
+    if not summary.get("newton"):
+        titles = ["initial, t = 0", "final, t = %.4g" % summary["t_end"]]
     for i, (field, title) in enumerate(zip(fields, titles)):
         ax = fig.add_subplot(1, 2, i + 1, projection="mollweide")
         mesh = ax.pcolormesh(longitude, latitude, field, cmap="RdBu_r", vmin=-limit, vmax=limit,
@@ -104,9 +107,23 @@ def plot_sphere(out, summary):
     save(fig, out, "vorticity_sphere.png")
 
 
+def iterations(rows, summary):
+    """The iteration k of each history row of a Newton search: every --every-th iteration
+    from 0 and the last one, summary["steps"] (docs/reference/command-lines-and-files.md)."""
+    every, last = int(summary["every"]), int(summary["steps"])
+    k = list(range(0, last + 1, every))
+    if k[-1] != last:
+        k.append(last)
+    if len(k) != rows:
+        sys.exit("history.csv has %d rows, but a Newton search of %d iterations with --every %d "
+                 "writes %d" % (rows, last, every, len(k)))
+    return np.array(k, dtype=float)
+
+
 def plot_history(out, summary):
     h = read_columns(os.path.join(out, "history.csv"))
-    t = h["t"]
+    newton = bool(summary.get("newton"))
+    t = iterations(h["energy"].size, summary) if newton else h["t"]
     fig, axes = plt.subplots(2, 2, figsize=(11, 7), sharex=True)
     axes[0, 0].plot(t, h["energy"], color="tab:blue")
     axes[0, 0].set_ylabel("energy E = Re tr(WP)/(2N)")
@@ -121,12 +138,13 @@ def plot_history(out, summary):
         else:
             ax.text(0.5, 0.5, "zero at every t", transform=ax.transAxes, ha="center")
         ax.set_ylabel(label + (" (zeros omitted)" if not keep.all() and keep.any() else ""))
-        ax.set_xlabel("t")
+        ax.set_xlabel("Newton iteration k" if newton else "t")
     for ax in axes.flat:
         ax.grid(alpha=0.3)
-    fig.suptitle("N = %d, alpha = %g, %s, h = %.4g, %d steps, init %s" %
-                 (summary["n"], summary["alpha"], summary["method"], summary["h"],
-                  summary["steps"], summary["init"]))
+    steps = ("Newton search, %d iterations" % summary["steps"] if newton else
+             "%s, h = %.4g, %d steps" % (summary["method"], summary["h"], summary["steps"]))
+    fig.suptitle("N = %d, alpha = %g, %s, init %s" %
+                 (summary["n"], summary["alpha"], steps, summary["init"]))
     fig.tight_layout()
     save(fig, out, "history.png")
 

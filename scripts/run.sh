@@ -11,4 +11,4 @@ cmake -S . -B build-quickstart -DCMAKE_BUILD_TYPE=Release -DDDB_BUILD_TESTS=OFF 
   -DDDB_BUILD_BENCH=OFF -DDDB_BUILD_PYTHON=OFF -DDDB_BUILD_MPI=OFF
 cmake --build build-quickstart -j2 --target ddb-compare
 ./build-quickstart/bin/ddb-compare --scenario A --sweep-h 1e-3:1:13 --plot \
-  --out results/scenario-A "$@"
+  --out results/scenario-A --overwrite "$@"

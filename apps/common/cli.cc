@@ -136,6 +136,16 @@ void addSeedOption(CLI::App& cli, std::uint64_t& seed, const std::string& descri
           "");
 }
 
+void addRunFolderFlags(CLI::App& cli, std::string& out, bool& overwrite) {
+  cli.add_option("--out", out,
+                 "output folder; one process writes it at a time (OUT/run.lock), and a new run "
+                 "into a folder that holds another run's files is refused without --overwrite")
+      ->capture_default_str();
+  cli.add_flag("--overwrite", overwrite,
+               "let a new run replace the run whose files are in --out: every file of that run "
+               "is removed first (files of other names are kept)");
+}
+
 std::string projectVersion() { return DDB_VERSION; }
 
 void addVersionFlag(CLI::App& cli, const std::string& app) {

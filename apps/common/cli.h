@@ -74,6 +74,10 @@ CLI::Validator fitsIn() {
 /// CLI11 would otherwise wrap around to 2^64 - 1 without a word.
 void addSeedOption(CLI::App& cli, std::uint64_t& seed, const std::string& description);
 
+/// Adds `--out` (the run folder: one writer, another run's files refused) and `--overwrite`
+/// (docs/reference/command-lines-and-files.md, "Run folders: one writer, `--overwrite`").
+void addRunFolderFlags(CLI::App& cli, std::string& out, bool& overwrite);
+
 /// The project version from CMake ("0.2.0").
 std::string projectVersion();
 

@@ -22,4 +22,8 @@ inline Json jsonArray(const Eigen::Ref<const Eigen::VectorXd>& v) {
 /// instead of failing the run.
 void writeJsonFile(const std::filesystem::path& path, const Json& json);
 
+/// The JSON document in `path` (a summary.json an app wrote); an IoError naming the file if it
+/// cannot be read or parsed.
+Json readJsonFile(const std::filesystem::path& path);
+
 }  // namespace ddb::app

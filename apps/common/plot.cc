@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/exit_status.h"
+#include "common/json.h"
 
 extern char** environ;
 
@@ -110,16 +111,23 @@ std::string plotFailure(const std::string& interpreter, const std::string& scrip
          (last.empty() ? " (no message on stderr)" : "; the end of its stderr:" + last);
 }
 
-int runPlotScript(const std::string& script, const std::filesystem::path& out) {
+std::string runPlotScript(const std::string& script, const std::filesystem::path& out) {
   return runPlotScript(script, std::vector<std::string>{out.string()});
 }
 
-int runPlotScript(const std::string& script, const std::vector<std::string>& arguments) {
+std::string runPlotScript(const std::string& script, const std::vector<std::string>& arguments) {
   const std::string interpreter = pythonInterpreter();
   spdlog::info("plotting: {} {} {}", interpreter, script, fmt::join(arguments, " "));
   const std::string failure = plotFailure(interpreter, script, arguments);
-  if (failure.empty()) return kExitOk;
-  spdlog::error("plotting failed: {}", failure);
+  if (!failure.empty()) spdlog::error("plotting failed: {}", failure);
+  return failure;
+}
+
+int recordFiguresFailure(const std::filesystem::path& summary, const std::string& failure) {
+  Json json = readJsonFile(summary);
+  if (json.contains("status") && json["status"] == "ok") json["status"] = "figures_failed";
+  json["figures_failure"] = failure;
+  writeJsonFile(summary, json);
   return kExitFailed;
 }
 

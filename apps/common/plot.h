@@ -24,12 +24,17 @@ std::string plotFailure(const std::string& interpreter, const std::string& scrip
 std::string plotFailure(const std::string& interpreter, const std::string& script,
                         const std::vector<std::string>& arguments);
 
-/// plotFailure() with pythonInterpreter(); returns kExitOk, or logs the failure and
-/// returns kExitFailed.
-int runPlotScript(const std::string& script, const std::filesystem::path& out);
+/// plotFailure() with pythonInterpreter(); logs a failure and returns it ("" if none).
+std::string runPlotScript(const std::string& script, const std::filesystem::path& out);
 
 /// runPlotScript() with the arguments `script arguments...` (scripts/animate_fluid.py's
 /// input file and output video).
-int runPlotScript(const std::string& script, const std::vector<std::string>& arguments);
+std::string runPlotScript(const std::string& script, const std::vector<std::string>& arguments);
+
+/// A run whose figures failed (`failure`, not empty) after its files were written: its
+/// summary.json (`summary`) says so, so that it never reads "ok" beside exit status 1
+/// (docs/reference/command-lines-and-files.md, "Figures (`--plot`)"): "figures_failure" is
+/// the failure, and a "status" of "ok" becomes "figures_failed". Returns kExitFailed.
+int recordFiguresFailure(const std::filesystem::path& summary, const std::string& failure);
 
 }  // namespace ddb::app

@@ -106,6 +106,8 @@ std::vector<std::string> RunFiles::in(const std::filesystem::path& folder) const
   std::vector<std::string> found;
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+    // A folder under a run file's name is nobody's run: writing the file there fails, naming it.
+    if (entry.is_directory(ec)) continue;
     const std::string name = entry.path().filename().string();
     if (std::find(names.begin(), names.end(), name) != names.end() || isTemporary(name)) {
       found.push_back(name);
@@ -117,7 +119,8 @@ std::vector<std::string> RunFiles::in(const std::filesystem::path& folder) const
 
 RunFolderLock claimNewRunFolder(const std::string& flag, const std::string& text,
                                 const std::filesystem::path& folder, const RunFiles& files,
-                                bool overwrite, const std::string& overwrite_flag) {
+                                bool overwrite, const std::string& overwrite_flag,
+                                const std::string& resume_flag) {
   // The refusals first, while nothing is created: a holder, then another run's files.
   const auto refuseOthers = [&](const std::vector<std::string>& found) {
     std::vector<std::string> runs;
@@ -126,8 +129,9 @@ RunFolderLock claimNewRunFolder(const std::string& flag, const std::string& text
     if (!runs.empty() && !overwrite) {
       usageError(flag, text,
                  "the folder holds another run's files (" + listed(runs) + "): give " +
-                     overwrite_flag + " to replace that run, --resume " + text +
-                     " to continue it, or another " + flag);
+                     overwrite_flag + " to replace that run, " +
+                     (resume_flag.empty() ? "" : resume_flag + " " + text + " to continue it, ") +
+                     "or another " + flag);
     }
   };
   if (std::filesystem::is_directory(folder)) {

@@ -47,7 +47,8 @@ class RunFolderLock {
 struct RunFiles {
   std::vector<std::string> names;
 
-  /// Those of FOLDER's entries that are the run's files or their temporaries, sorted.
+  /// Those of FOLDER's entries that are the run's files or their temporaries, sorted (not
+  /// folders of those names, which hold no run).
   std::vector<std::string> in(const std::filesystem::path& folder) const;
   /// Whether `name` is a temporary of one of the files.
   bool isTemporary(const std::string& name) const;
@@ -58,9 +59,12 @@ struct RunFiles {
 /// files (`files`) is refused with a UsageError naming them, before anything is created or
 /// locked, unless `overwrite`: then they are removed once the lock is held (an IoError names
 /// one that cannot be). Temporaries alone are a killed run's leftovers and always removed.
+/// The refusal names `resume_flag` too where the app can continue a run (fluid-relax's
+/// --resume); "" where it cannot (ddb-compare).
 RunFolderLock claimNewRunFolder(const std::string& flag, const std::string& text,
                                 const std::filesystem::path& folder, const RunFiles& files,
-                                bool overwrite, const std::string& overwrite_flag);
+                                bool overwrite, const std::string& overwrite_flag,
+                                const std::string& resume_flag);
 
 /// Removes the temporaries of `files` in FOLDER (a resumed run's, once its checks passed and
 /// its lock is held); an IoError names one that cannot be removed.

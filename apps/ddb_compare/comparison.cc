@@ -18,8 +18,11 @@
 #include "common/energy_rises.h"
 #include "common/exit_status.h"
 #include "common/logging.h"
+#include "common/plot.h"
 #include "common/progress.h"
+#include "common/run_folder.h"
 #include "common/spectrum_drift.h"
+#include "ddb_compare/output_files.h"
 #include "ddb_compare/report.h"
 
 namespace ddb::compare {
@@ -116,7 +119,8 @@ int runComparison(const Options& o, const Settings& s, const Problem<G>& problem
   if (s.relax.control.adaptive) requireDissipation(o, s, problem);
   std::vector<std::unique_ptr<OneStepMethod<G>>> methods;
   for (const auto& name : names) methods.push_back(makeMethod<G>(name, problem.system));
-  app::prepareOutputFolder("--out", o.out, s.out);
+  const app::RunFolderLock lock =
+      app::claimNewRunFolder("--out", o.out, s.out, outputFiles(), o.overwrite, "--overwrite", "");
   // ---- from here on, files are written: failures are exit status 1 ----
 
   // With --adaptive the cap is the time itself; else the steps of h, which end at t_reached.
@@ -301,6 +305,10 @@ int runComparison(const Options& o, const Settings& s, const Problem<G>& problem
   summary["parameters"] = problem.parameters;
   report.write(s.out, summary);
   spdlog::info("wrote {}", s.out.string());
+  if (o.plot) {
+    const std::string failure = app::runPlotScript(DDB_PLOT_SCRIPT, s.out);
+    if (!failure.empty()) return app::recordFiguresFailure(s.out / "summary.json", failure);
+  }
   return any_failed ? app::kExitFailed : app::kExitOk;
 }
 

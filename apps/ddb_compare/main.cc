@@ -4,13 +4,11 @@
 // (docs/reference/conventions.md §2), with the command line and files of
 // docs/reference/command-lines-and-files.md. Exit status (apps/common/exit_status.h): 2 for bad
 // input, checked in full before anything is written; 1 if a method failed (its valid prefix is
-// still written and it is marked FAILED) or a file could not be written.
-#include <algorithm>
-
+// still written and it is marked FAILED), a file could not be written or --plot failed
+// (summary.json's figures_failure says why).
 #include "common/cli.h"
 #include "common/exit_status.h"
 #include "common/logging.h"
-#include "common/plot.h"
 #include "ddb_compare/options.h"
 #include "ddb_compare/system_table.h"
 
@@ -28,9 +26,7 @@ int runCompare(int argc, char** argv) {
 
   const SystemRow& system = findSystem(o.system);
   rejectFlagsNotTaken(cli, system);
-  int status = system.compare(cli, o);
-  if (o.plot) status = std::max(status, app::runPlotScript(DDB_PLOT_SCRIPT, o.out));
-  return status;
+  return system.compare(cli, o);
 }
 
 }  // namespace

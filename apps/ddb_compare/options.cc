@@ -102,7 +102,7 @@ void addOptions(CLI::App& cli, Options& o) {
   cli.add_option("--every", o.every, "write every K-th state and the last one to <method>.csv")
       ->capture_default_str()
       ->check(app::fitsIn<decltype(o.every)>());
-  cli.add_option("--out", o.out, "output folder")->capture_default_str();
+  app::addRunFolderFlags(cli, o.out, o.overwrite);
   cli.add_flag("--plot", o.plot, "render PNG figures with matplotlib");
   cli.add_option("--sweep-h", o.sweep, "HMIN:HMAX:COUNT log-spaced step sizes -> error_vs_h.csv");
   cli.add_option("--repeat", o.repeat,
@@ -161,7 +161,12 @@ void addOptions(CLI::App& cli, Options& o) {
 long stepCount(double t_end, double h, const std::string& flag, const std::string& text) {
   const double n = std::round(t_end / h);
   if (n > static_cast<double>(kMaxSteps)) {
-    app::usageError(flag, text, fmt::format("more than 1e9 steps of h = {} to t-end {}", h, t_end));
+    // --sweep-h's steps are fixed; --h and --t-end may be a first step and a time cap instead.
+    const char* adaptive = flag == "--sweep-h" ? ""
+                                               : " (or give --adaptive, whose --h is only "
+                                                 "the first step)";
+    app::usageError(flag, text,
+                    fmt::format("more than 1e9 steps of h = {} to t-end {}{}", h, t_end, adaptive));
   }
   return std::max(1L, static_cast<long>(n));
 }
@@ -195,9 +200,14 @@ Settings commonSettings(const Options& o, double default_t_end) {
   s.t_end = optionalNumber("--t-end", o.t_end, default_t_end);
   if (!(s.t_end > 0)) app::usageError("--t-end", o.t_end, "must be > 0");
   // The message names both; the flag is --t-end if given (every default t-end takes at
-  // most 2500 steps of the default h), else --h.
-  s.steps = o.t_end.empty() ? stepCount(s.t_end, s.h, "--h", o.h)
-                            : stepCount(s.t_end, s.h, "--t-end", o.t_end);
+  // most 2500 steps of the default h), else --h. With --adaptive, --h is only the first step,
+  // which the step control grows: any h > 0 can run, and the caps are the time and kMaxSteps.
+  if (o.relax.adaptive) {
+    s.steps = kMaxSteps;
+  } else {
+    s.steps = o.t_end.empty() ? stepCount(s.t_end, s.h, "--h", o.h)
+                              : stepCount(s.t_end, s.h, "--t-end", o.t_end);
+  }
   if (o.repeat < 1 || o.repeat > kMaxRepeat) {
     app::usageError("--repeat", std::to_string(o.repeat), "must be in [1, 1000]");
   }

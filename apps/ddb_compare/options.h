@@ -39,6 +39,7 @@ struct Options {
   std::string j, mu0_file, init = "random", init_file;
   app::RelaxFlags relax;  // --until-steady, --adaptive, --adaptive-tol
   bool plot = false;
+  bool overwrite = false;  // a new run may replace another run's files in --out
   int repeat = 5;
   long every = 1;
   app::LogFlags log;

@@ -142,24 +142,31 @@ Settings settings(const CLI::App& cli, const Options& o, Eigen::Index max_n) {
     if (!(s.h > 0)) app::usageError("--h", o.h, "must be > 0");
   }
   s.steps = o.steps;
-  if (by_time) {
+  // With --adaptive, --t-end caps the time and --steps the accepted steps; without,
+  // both are the step count.
+  const bool time_cap = by_time && o.relax.adaptive;
+  if (time_cap) {
+    // --h is only the first step, which the step control grows: any h > 0 can run, and the
+    // cap is the time (and kMaxSteps accepted steps).
+    s.steps = kMaxSteps;
+  } else if (by_time) {
     // With the default h, equal steps that end exactly at T and are no longer than it.
     const double count = s.default_h ? std::ceil(t_end / s.h) : std::round(t_end / s.h);
     if (count > static_cast<double>(kMaxSteps)) {
-      app::usageError("--t-end", o.t_end, fmt::format("more than 1e9 steps of h = {}", s.h));
+      app::usageError("--t-end", o.t_end,
+                      fmt::format("more than 1e9 steps of h = {} (or give --adaptive, whose --h "
+                                  "is only the first step)",
+                                  s.h));
     }
     s.steps = std::max(1L, static_cast<long>(count));
     if (s.default_h) s.h = t_end / static_cast<double>(s.steps);
   }
   requireRepresentableStep(cli, o, s);
-  // With --adaptive, --t-end caps the time and --steps the accepted steps; without,
-  // both are the step count.
-  const bool time_cap = by_time && o.relax.adaptive;
-  s.relax.max_steps = time_cap ? kMaxSteps : s.steps;
+  s.relax.max_steps = s.steps;
   if (time_cap) s.relax.t_end = t_end;
   // Only valid input is warned about: bad input gives its one line and nothing else.
   const double reached = static_cast<double>(s.steps) * s.h;
-  if (by_time && std::abs(reached - t_end) > 1e-9 * t_end) {
+  if (by_time && !time_cap && std::abs(reached - t_end) > 1e-9 * t_end) {
     spdlog::warn("--t-end {} is not a multiple of --h {}: {} steps end at t = {}", t_end, s.h,
                  s.steps, reached);
   }

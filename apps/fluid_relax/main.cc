@@ -126,8 +126,9 @@ int relax(const std::shared_ptr<const LiePoissonSystem<G>>& system,
     // With --adaptive h changes, so the cap is a number of steps, not a time.
     const std::string steps_text =
         s.relax.control.adaptive
-            ? fmt::format("adaptive steps from h = {}{}, at most {}", s.h,
-                          s.default_h ? " (default)" : "", s.steps)
+            ? fmt::format("adaptive steps from h = {}{}, {}", s.h, s.default_h ? " (default)" : "",
+                          std::isfinite(s.relax.t_end) ? fmt::format("to t = {}", s.relax.t_end)
+                                                       : fmt::format("at most {}", s.steps))
             : fmt::format("{} steps of h = {}{} to t = {}", s.steps, s.h,
                           s.default_h ? " (default)" : "", static_cast<double>(s.steps) * s.h);
     spdlog::info("N = {}, alpha = {}, {}, {}: {}", n, s.alpha, init_text, o.method, steps_text);
@@ -297,8 +298,8 @@ int runRelax(int argc, char** argv) {
   }
   const Settings s = settings(cli, o, maxN(device));
   requireRunsOn(device, s.W0.rows());
-  const app::RunFolderLock lock =
-      app::claimNewRunFolder("--out", o.out, s.out, runFiles(), o.overwrite, "--overwrite");
+  const app::RunFolderLock lock = app::claimNewRunFolder("--out", o.out, s.out, runFiles(),
+                                                         o.overwrite, "--overwrite", "--resume");
   const int status = relaxOn(device, o, s, givenFlags(cli), nullptr);
   return makeFigures(o, s.out, status, DDB_PLOT_SCRIPT, DDB_ANIMATE_SCRIPT);
 }

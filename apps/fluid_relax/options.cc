@@ -56,13 +56,7 @@ void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n) {
   cli.add_option("--every", o.every, "write every K-th state and the last one to history.csv")
       ->capture_default_str()
       ->check(app::fitsIn<long>());
-  cli.add_option("--out", o.out,
-                 "output folder; one process writes it at a time (OUT/run.lock), and a new run "
-                 "into a folder that holds another run's files is refused without --overwrite")
-      ->capture_default_str();
-  cli.add_flag("--overwrite", o.overwrite,
-               "let a new run replace the run whose files are in --out: every file of that run "
-               "is removed first (files of other names are kept)");
+  app::addRunFolderFlags(cli, o.out, o.overwrite);
   cli.add_option("--checkpoint-every", o.checkpoint_every,
                  "write OUT/checkpoint.ddb every K accepted steps (default: every " +
                      app::number(kCheckpointSeconds) +

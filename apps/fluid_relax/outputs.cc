@@ -3,6 +3,8 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <string>
+#include <vector>
 
 #include "common/cli.h"
 #include "common/exit_status.h"
@@ -81,13 +83,16 @@ int makeFigures(const Options& o, const std::filesystem::path& out, int status,
     if (figures_asked && status == app::kExitFailed) spdlog::error("no figures: the run failed");
     return status;
   }
-  int figures = app::kExitOk;
+  std::vector<std::string> failures;
   if (o.animate) {
-    figures = app::runPlotScript(animate_script,
-                                 {(out / kFluidH5).string(), (out / "fluid.mp4").string()});
+    failures.push_back(app::runPlotScript(
+        animate_script, {(out / kFluidH5).string(), (out / "fluid.mp4").string()}));
   }
-  if (o.plot) figures = std::max(figures, app::runPlotScript(plot_script, out));
-  return figures;
+  if (o.plot) failures.push_back(app::runPlotScript(plot_script, out));
+  failures.erase(std::remove(failures.begin(), failures.end(), ""), failures.end());
+  if (failures.empty()) return app::kExitOk;
+  return app::recordFiguresFailure(out / "summary.json",
+                                   fmt::format("{}", fmt::join(failures, "; ")));
 }
 
 FluidH5Attributes h5Attributes(const Options& o, const Settings& s, double hbar) {

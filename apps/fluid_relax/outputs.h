@@ -85,7 +85,8 @@ class HistoryFiles {
 
 /// The figures a finished run asks for, once it ended with exit status `status`: with
 /// --animate fluid.hdf5's animation (fluid.mp4) by `animate_script`, with --plot the figures
-/// by `plot_script` (the app's own paths); none after a failure. Returns the app's exit status.
+/// by `plot_script` (the app's own paths); none after a failure. Returns the app's exit status:
+/// kExitFailed if a figure failed, which summary.json then records (app::recordFiguresFailure).
 int makeFigures(const Options& o, const std::filesystem::path& out, int status,
                 const char* plot_script, const char* animate_script);
 

@@ -148,7 +148,7 @@ int relax(MpiRun& run, const ProcessGrid& grid) {
           app::removeTemporaries(s.out, runFiles());
         } else {
           run.lock.emplace(app::claimNewRunFolder("--out", o.out, s.out, runFiles(), o.overwrite,
-                                                  "--overwrite"));
+                                                  "--overwrite", "--resume"));
         }
       })) {
     throw Reported{status};
@@ -335,8 +335,12 @@ int run(int argc, char** argv, const ProcessGrid& grid) {
   std::optional<ProcessGrid> shaped;
   if (run.grid_rows != grid.rows()) shaped.emplace(grid.comm(), run.grid_rows);
   const int result = relax(run, shaped ? *shaped : grid);
-  if (grid.rank() != 0) return result;
-  return makeFigures(run.options, run.settings.out, result, DDB_PLOT_SCRIPT, DDB_ANIMATE_SCRIPT);
+  // Rank 0 makes the figures; every rank exits with its status.
+  int exit_status = grid.rank() == 0 ? makeFigures(run.options, run.settings.out, result,
+                                                   DDB_PLOT_SCRIPT, DDB_ANIMATE_SCRIPT)
+                                     : result;
+  MPI_Bcast(&exit_status, 1, MPI_INT, 0, grid.comm());
+  return exit_status;
 }
 
 }  // namespace

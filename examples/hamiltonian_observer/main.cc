@@ -52,6 +52,7 @@ int main() {
       std::make_shared<const ddb::ScaledIdentityMetric<ddb::SO3>>(alpha));
 
   // The Hamiltonian form, since the system carries no Lagrangian.
+  // Ddb's default form, kLagrangian, would throw InvalidArgument; makeMethod picks it itself.
   ddb::Ddb<ddb::Cayley<ddb::SO3>> ddb_cay(system, ddb::Cayley<ddb::SO3>(),
                                           ddb::LegendreForm::kHamiltonian);
 

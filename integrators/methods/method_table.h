@@ -168,6 +168,14 @@ inline std::string methodList(unsigned families = kFixedSizeGroups | kMatrixGrou
   return list;
 }
 
+/// The names of the methods for matrix groups (SO(N), SU(N)), in table order.
+[[deprecated(
+    "use methodNames(kMatrixGroups); removed in 0.3.0 (CHANGELOG.md, 0.2.0)")]] inline std::
+    vector<std::string>
+    matrixGroupMethodNames() {
+  return methodNames(kMatrixGroups);
+}
+
 /// (name, one-line description) of the entries that run on any of `families`.
 inline std::vector<std::pair<std::string, std::string>> methodDescriptions(
     unsigned families = kFixedSizeGroups | kMatrixGroups) {
@@ -208,7 +216,9 @@ template <class G>
     throwInvalid("method", name,
                  "is not one of the methods for matrix groups: " + methodList(kMatrixGroups));
   } else {
-    throwInvalid("method", name, "unknown method");
+    throwInvalid("method", name,
+                 "is not one of the methods for " + std::string(G::kName) + ": " +
+                     methodList(kFixedSizeGroups));
   }
 }
 

@@ -61,8 +61,18 @@ namespace ddb {
 
 /// How the matrix-free solver proceeds: kAuto is the fixed point with Newton–Krylov as
 /// the fallback; the others force one path (for tests and comparisons). kExternal is set by
-/// setExternalSolver.
-enum class MatrixLegendreStrategy { kAuto, kFixedPoint, kNewtonKrylov, kExternal };
+/// setExternalSolver. kCeres, which solved by Ceres inside this solver until 0.2.0, is
+/// Newton–Krylov now (the same equation to the same tolerance); Ceres is useCeres(solver) of
+/// matrix_legendre_ceres.h (CHANGELOG.md, 0.2.0).
+enum class MatrixLegendreStrategy {
+  kAuto,
+  kFixedPoint,
+  kNewtonKrylov,
+  kExternal,
+  kCeres [[deprecated("kCeres solves by Newton-Krylov now; for Ceres call useCeres(solver) of "
+                      "<ddb/integrators/solvers/matrix_legendre_ceres.h>; removed in 0.3.0")]] =
+      kNewtonKrylov
+};
 
 template <class R, class System = LiePoissonSystem<typename R::Group>>
 class MatrixLegendreSolver {

@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -39,6 +40,52 @@ int runApp(const std::string& arguments) { return run("--quiet " + arguments).st
 
 fs::path freshFolder(const std::string& name) {
   return ddb::test::freshFolder("ddb_compare_test_", name);
+}
+
+// A run folder holds one run (docs/reference/command-lines-and-files.md, "ddb-compare"): a second
+// run into a finished folder is refused and changes nothing; with --overwrite it replaces the
+// first run's files, all of them, and keeps the files ddb-compare does not write.
+TEST(DdbCompare, ASecondRunIntoAFinishedFolderIsRefusedOrReplacesTheFirst) {
+  const fs::path out = freshFolder("second_run");
+  ASSERT_EQ(runApp("--t-end 1 --method ddb-cay,rk4 --repeat 1 --out " + out.string()), 0);
+  std::ofstream(out / "notes.txt") << "the user's own file\n";
+  const std::string first_csv = readFile(out / "ddb-cay.csv");
+  const std::string first_summary = readFile(out / "summary.json");
+
+  const AppResult refused =
+      run("--quiet --t-end 1 --h 0.05 --method ddb-cay --repeat 1 --out " + out.string());
+  EXPECT_EQ(refused.status, 2) << refused.output;
+  EXPECT_THAT(refused.error, ::testing::HasSubstr("another run's files"));
+  EXPECT_THAT(refused.error, ::testing::HasSubstr("--overwrite"));
+  EXPECT_THAT(refused.error, ::testing::Not(::testing::HasSubstr("--resume")));
+  EXPECT_EQ(std::count(refused.error.begin(), refused.error.end(), '\n'), 1) << refused.error;
+  EXPECT_EQ(readFile(out / "ddb-cay.csv"), first_csv);
+  EXPECT_EQ(readFile(out / "summary.json"), first_summary);
+  EXPECT_TRUE(fs::exists(out / "rk4.csv"));
+
+  ASSERT_EQ(
+      runApp("--t-end 1 --h 0.05 --method ddb-cay --repeat 1 --overwrite --out " + out.string()),
+      0);
+  EXPECT_FALSE(fs::exists(out / "rk4.csv"));  // the first run's, which the summary would not list
+  EXPECT_EQ(readJson(out / "summary.json")["h"], 0.05);
+  EXPECT_EQ(readJson(out / "summary.json")["methods"].size(), 1u);
+  EXPECT_EQ(readFile(out / "notes.txt"), "the user's own file\n");
+}
+
+TEST(DdbCompare, AdaptiveTakesAnyFirstStepAndGrowsIt) {
+  // --h is only the first step with --adaptive: 1e-300 runs to the time cap, where it was
+  // refused as "more than 1e9 steps"; without --adaptive it is refused, naming --adaptive.
+  const fs::path out = freshFolder("tiny_first_step");
+  ASSERT_EQ(runApp("--adaptive --h 1e-300 --t-end 5 --method ddb-cay --repeat 1 --out " +
+                   out.string()),
+            0);
+  const auto method = readJson(out / "summary.json")["methods"]["ddb-cay"];
+  EXPECT_EQ(method["stop"], "time cap");
+  EXPECT_NEAR(method["t_final"].get<double>(), 5.0, 1e-12);
+  EXPECT_GT(method["h_final"].get<double>(), 1e-3);
+  const AppResult refused = run("--h 1e-300 --t-end 5 --out " + (out / "fixed").string());
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_THAT(refused.error, ::testing::HasSubstr("--adaptive, whose --h is only the first step"));
 }
 
 TEST(DdbCompare, WritesContractFilesMatchingTheLibrary) {
@@ -337,14 +384,15 @@ TEST(DdbCompare, ParametersThatChangeTheScenarioAreRecordedAsCustom) {
 
   // The scenario's own values given explicitly leave it as it is.
   ASSERT_EQ(runApp("--scenario C --inertia 1,1,0.5 --alpha 0.5 --omega0 0,0.05,1 --t-end 0.2 "
-                   "--method ddb-cay --repeat 1 --out " +
+                   "--method ddb-cay --repeat 1 --overwrite --out " +
                    out.string()),
             0);
   summary = readJson(out / "summary.json");
   EXPECT_EQ(summary["scenario"], "C");
   EXPECT_FALSE(summary.contains("scenario_base"));
 
-  ASSERT_EQ(runApp("--system heavy-top --mgl 2 --t-end 0.2 --method ddb-cay --repeat 1 --out " +
+  ASSERT_EQ(runApp("--system heavy-top --mgl 2 --t-end 0.2 --method ddb-cay --repeat 1 "
+                   "--overwrite --out " +
                    out.string()),
             0);
   summary = readJson(out / "summary.json");
@@ -445,7 +493,10 @@ TEST(DdbCompare, UnwritableFileIsExitOneNamingItAndLeavesNoTemporary) {
   EXPECT_EQ(r.status, 1);
   EXPECT_THAT(r.output, ::testing::HasSubstr((out / "rk4.csv").string()));
   for (const auto& entry : fs::directory_iterator(out)) {
-    EXPECT_EQ(entry.path().filename().string(), "rk4.csv") << "left behind: " << entry.path();
+    // The folder in rk4.csv's place, and the folder's lock (empty: "Run folders").
+    const std::string name = entry.path().filename().string();
+    EXPECT_TRUE(name == "rk4.csv" || (name == "run.lock" && fs::file_size(entry.path()) == 0))
+        << "left behind: " << entry.path();
   }
 }
 
@@ -457,7 +508,7 @@ TEST(DdbCompare, MemoryDoesNotGrowWithTheNumberOfSteps) {
       run("--quiet --method rk4 --h 1e-3 --t-end 20 --every 1000 --repeat 1 --out " + out.string());
   const AppResult long_run =
       run("--quiet --method rk4 --h 1e-3 --t-end 2000 --every 1000 "
-          "--repeat 1 --out " +
+          "--repeat 1 --overwrite --out " +
           out.string());
   ASSERT_EQ(short_run.status, 0);
   ASSERT_EQ(long_run.status, 0);

@@ -59,7 +59,7 @@ void expectSameFilesApartFromRuntimes(const fs::path& first, const fs::path& sec
   ASSERT_EQ(fileNames(first), fileNames(second));
   for (const std::string& name : fileNames(first)) {
     const std::string a = readFile(first / name), b = readFile(second / name);
-    // fluid-relax's lock of its folder is empty by design
+    // The apps' lock of their folder is empty by design
     // (docs/reference/command-lines-and-files.md, "Run folders").
     if (name == "run.lock") {
       EXPECT_EQ(a + b, "");
@@ -80,7 +80,7 @@ TEST(Determinism, DdbCompareWritesTheSameFilesTwice) {
   const fs::path second = freshFolder("ddb_determinism_", "second");
   ASSERT_EQ(runProgram(DDB_COMPARE_PATH, arguments + first.string()).status, 0);
   ASSERT_EQ(runProgram(DDB_COMPARE_PATH, arguments + second.string()).status, 0);
-  EXPECT_EQ(fileNames(first).size(), 10u);  // 7 trajectories, summary, table, sweep
+  EXPECT_EQ(fileNames(first).size(), 11u);  // 7 trajectories, summary, table, sweep, run.lock
   expectSameFilesApartFromRuntimes(first, second);
 }
 

@@ -243,6 +243,19 @@ TEST(FluidRelax, AdaptiveTimeCapStopsAtTEnd) {
   EXPECT_EQ(jsonNumber(summary, "energy_rises"), 0);
 }
 
+TEST(FluidRelax, AdaptiveTakesAnyFirstStepAndGrowsIt) {
+  // --h is only the first step with --adaptive: 1e-300 runs (doubling every 4 good steps,
+  // about 4000 steps) to the time cap, where it was refused as "more than 1e9 steps".
+  const fs::path out = freshFolder("tiny_first_step");
+  const AppResult r = run("--quiet --n 8 --adaptive --h 1e-300 --t-end 1 --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto summary = readJson(out / "summary.json");
+  EXPECT_EQ(summary["stop"], "time cap");
+  EXPECT_NEAR(jsonNumber(summary, "t_end"), 1.0, 1e-12);
+  EXPECT_EQ(jsonNumber(summary, "h"), 1e-300);
+  EXPECT_GT(jsonNumber(summary, "h_final"), 1e-3);
+}
+
 TEST(FluidRelax, DefaultStepIsTwoHundredthsOfHbarOverTheStreamNorm) {
   const fs::path out = freshFolder("default_h");
   ASSERT_EQ(run("--quiet --n 8 --init l1 --seed 2 --t-end 0.5 --out " + out.string()).status, 0);

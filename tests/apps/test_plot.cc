@@ -1,6 +1,8 @@
 // --plot without a shell (docs/reference/bad-inputs.md): the plotter's failure messages name what
 // failed (a missing interpreter, the script's own error), and an output folder whose name
-// a shell would read as commands reaches the script as one argument in both apps.
+// a shell would read as commands reaches the script as one argument in both apps. A Newton
+// search gets its figures; a figure that fails is exit status 1 and summary.json says so
+// (docs/reference/command-lines-and-files.md, "Figures (`--plot`)").
 #include <gmock/gmock.h>
 #include <sys/stat.h>
 
@@ -111,6 +113,45 @@ TEST(Plot, FolderWithSpacesAndAccentsGetsItsFigures) {
     const AppResult r = runWithPlot(app, out);
     ASSERT_EQ(r.status, 0) << app.name << ": " << r.output;
     EXPECT_TRUE(hasPng(out)) << app.name;
+  }
+}
+
+TEST(Plot, ANewtonSearchGetsItsFigures) {
+  // Its rows all have t = 0 and its summary h = null: the history is drawn against k.
+  const fs::path out = freshFolder("newton");
+  const AppResult r = runProgram(
+      FLUID_RELAX_PATH, {"--quiet", "--n", "8", "--newton", "--until-steady", "1e-12", "--steps",
+                         "6", "--every", "4", "--plot", "--out", out.string()});
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::is_regular_file(out / "history.png"));
+  EXPECT_TRUE(fs::is_regular_file(out / "vorticity_sphere.png"));
+  EXPECT_EQ(readJson(out / "summary.json")["status"], "ok");
+}
+
+TEST(Plot, AFailedFigureIsExitStatusOneAndSummaryJsonSaysWhy) {
+  // A matplotlib that cannot be imported, first on the interpreter's path.
+  const fs::path dir = freshFolder("broken_matplotlib");
+  fs::create_directories(dir / "site" / "matplotlib");
+  writeText(dir / "site" / "matplotlib" / "__init__.py",
+            "raise ImportError('this matplotlib is broken on purpose')\n");
+  RunEnvironment environment;
+  environment.variables = {"PYTHONPATH=" + (dir / "site").string()};
+  for (const App& app : apps()) {
+    SCOPED_TRACE(app.name);
+    const fs::path out = dir / app.name;
+    std::vector<std::string> words = app.arguments;
+    words.insert(words.end(), {"--plot", "--out", out.string()});
+    const AppResult r = runProgram(app.program, words, environment);
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_THAT(r.output, HasSubstr("plotting failed"));
+    const auto summary = readJson(out / "summary.json");
+    EXPECT_THAT(summary["figures_failure"].get<std::string>(),
+                HasSubstr("this matplotlib is broken on purpose"));
+    // fluid-relax's run status says it; ddb-compare's methods keep theirs.
+    if (summary.contains("status")) {
+      EXPECT_EQ(summary["status"], "figures_failed");
+    }
+    EXPECT_FALSE(hasPng(out));
   }
 }
 

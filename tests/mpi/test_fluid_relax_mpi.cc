@@ -387,6 +387,58 @@ TEST(FluidRelaxMpi, RefusesBadInputOnEveryRankOnce) {
   }
 }
 
+// Every rank's own exit status, not only mpiexec's (which reports the first nonzero one): each
+// rank runs under a shell that writes its status to DIR/status.<rank>.
+std::vector<int> rankStatuses(int ranks, const std::string& arguments, const fs::path& dir,
+                              const RunEnvironment& environment = kMpiEnvironment) {
+  fs::create_directories(dir);
+  const std::string script =
+      "\"$0\" \"$@\"; echo $? > " + dir.string() + "/status.$OMPI_COMM_WORLD_RANK";
+  std::vector<std::string> words{"-n",   std::to_string(ranks), "/bin/sh", "-c",
+                                 script, FLUID_RELAX_MPI_PATH};
+  std::istringstream in(arguments);
+  for (std::string word; in >> word;) words.push_back(word);
+  runProgram(MPIEXEC_PATH, words, environment);
+  std::vector<int> statuses;
+  for (int rank = 0; rank < ranks; ++rank) {
+    std::ifstream in(dir / ("status." + std::to_string(rank)));
+    int status = -1;
+    in >> status;
+    statuses.push_back(status);
+  }
+  return statuses;
+}
+
+TEST(FluidRelaxMpi, EveryRankExitsWithTheSameStatus) {
+  const fs::path dir = freshFolder("ddb_mpi_", "rank_statuses");
+  const fs::path out = dir / "out";
+  for (const std::string arguments :
+       {"--n 8 --steps 10 --grid-rows 3", "--n 8 --steps 10 --grid-rows 0",
+        "--n 8 --steps 10 --bogus", "--n 4097 --steps 10", "--n 8 --steps 10 --block 9"}) {
+    SCOPED_TRACE(arguments);
+    const std::vector<int> statuses =
+        rankStatuses(2, arguments + " --quiet --out " + out.string(), dir / "statuses");
+    for (std::size_t rank = 0; rank < statuses.size(); ++rank) {
+      EXPECT_EQ(statuses[rank], 2) << "rank " << rank;
+    }
+    EXPECT_FALSE(fs::exists(out));
+    fs::remove_all(dir / "statuses");
+  }
+  // A figure that fails on rank 0 (a matplotlib that cannot be imported) is every rank's
+  // exit status 1, not rank 0's alone.
+  fs::create_directories(dir / "site" / "matplotlib");
+  std::ofstream(dir / "site" / "matplotlib" / "__init__.py")
+      << "raise ImportError('this matplotlib is broken on purpose')\n";
+  RunEnvironment environment = kMpiEnvironment;
+  environment.variables.push_back("PYTHONPATH=" + (dir / "site").string());
+  const std::vector<int> statuses = rankStatuses(
+      2, "--n 8 --steps 2 --quiet --plot --out " + out.string(), dir / "statuses", environment);
+  for (std::size_t rank = 0; rank < statuses.size(); ++rank) {
+    EXPECT_EQ(statuses[rank], 1) << "rank " << rank;
+  }
+  EXPECT_EQ(readJson(out / "summary.json")["status"], "figures_failed");
+}
+
 // ---- Checkpoints, --resume and --h5 ----
 
 // Rows every 3 steps and a checkpoint every 7, so that a run of 20 ends on a held-back row

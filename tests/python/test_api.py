@@ -2,6 +2,7 @@
 failed solves as ddb.SolveFailure with the valid prefix, and bad arguments as ValueError."""
 import ctypes
 import os
+import re
 import subprocess
 import sys
 import threading
@@ -212,6 +213,41 @@ def test_bad_system_arguments_name_the_parameter():
         assert str(caught.value).startswith(parameter), str(caught.value)
 
 
+def test_an_unknown_method_lists_the_valid_ones():
+    # For each family of groups, the message lists the methods that run on it, so that a typo
+    # is mended from the message alone.
+    a = ddb.scenario("A")
+    cases = [(a.system(), a.mu0), (ddb.zeitlin(4, 0.5), ddb.zeitlin_vorticity("random", 4))]
+    for system, mu0 in cases:
+        with pytest.raises(ValueError) as caught:
+            ddb.integrate(system, "ddb-kay", mu0, 0.1, 1)
+        message = str(caught.value)
+        assert message.startswith("method = ddb-kay"), message
+        for name in system.methods():
+            assert name in message, (name, message)
+
+
+def test_numbers_in_messages_read_back_as_the_same_double():
+    # The shortest form that reads back (0.1, not 0.10000000000000001).
+    a = ddb.scenario("A")
+    for h in (-0.1, -1e-300, -2.5e-8, -(1 / 3)):
+        with pytest.raises(ValueError) as caught:
+            ddb.integrate(a.system(), "ddb-cay", a.mu0, h, 1)
+        written = str(caught.value).split(" is invalid")[0].removeprefix("h = ")
+        assert float(written) == h, str(caught.value)
+        assert written == repr(h), str(caught.value)
+
+
+def test_a_matrix_for_manakovs_j_is_refused_saying_what_j_must_be():
+    with pytest.raises(ValueError) as caught:
+        ddb.manakov(np.ones((2, 2)), 0.5)
+    message = str(caught.value)
+    assert message.startswith("J = "), message
+    assert "must be a 1-D array of N numbers" in message, message
+    assert "not an array of 2 dimensions" in message, message
+    assert "-1" not in message, message
+
+
 def test_help_explains_every_argument():
     doc = ddb.integrate.__doc__
     for argument in ("system:", "method:", "mu0:", "h:", "steps:", "every:", "SolveFailure"):
@@ -307,3 +343,20 @@ def test_import_says_once_when_openblas_runs_kernels_below_the_cpus():
             assert "RuntimeWarning" in child.stderr
             assert ("OPENBLAS_CORETYPE=SkylakeX" if avx512 else
                     "OPENBLAS_CORETYPE=Haswell") in child.stderr
+
+
+def test_the_version_is_one_number_everywhere():
+    # CMakeLists.txt's project version, the module's __version__, the package's
+    # ddbConfigVersion.cmake of the build the module comes from, and a CHANGELOG section.
+    root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+    with open(os.path.join(root, "CMakeLists.txt")) as f:
+        project = re.search(r"project\(ddb VERSION (\S+)", f.read()).group(1)
+    assert ddb.__version__ == project
+    config = os.path.join(os.path.dirname(ddb.__file__), "..", "ddbConfigVersion.cmake")
+    if os.path.exists(config):  # a pip install has none
+        with open(config) as f:
+            assert re.search(r'set\(PACKAGE_VERSION "([^"]+)"\)', f.read()).group(1) == project
+    with open(os.path.join(root, "CHANGELOG.md")) as f:
+        headings = re.findall(r"^## (.*)$", f.read(), re.M)
+    assert any(re.match(r"(Unreleased \()?%s\b" % re.escape(project), h) for h in headings), \
+        headings

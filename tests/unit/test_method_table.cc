@@ -126,6 +126,23 @@ TEST(MethodTable, NamesNotInTheTableAreRefusedByName) {
   EXPECT_FALSE(methodApplies("ddb-cayley", *a.system()));
 }
 
+TEST(MethodTable, AnUnknownNameOnAFixedSizeGroupListsEveryMethodForIt) {
+  // Not "unknown method" alone: the valid names, so that a typo is mended from the message.
+  const RigidBodyScenario& a = rigidBodyScenario("A");
+  std::string message;
+  try {
+    makeMethod<SO3>("ddb-cayley", a.system());
+  } catch (const InvalidArgument& e) {
+    message = e.what();
+  }
+  EXPECT_THAT(message, ::testing::StartsWith("method = ddb-cayley is invalid: "));
+  for (const MethodInfo& m : kMethods) {
+    if ((m.groups & kFixedSizeGroups) != 0) {
+      EXPECT_THAT(message, ::testing::HasSubstr(std::string(m.name))) << message;
+    }
+  }
+}
+
 /// The Legendre solver's own count of its last solve (fixed-point sweeps plus Newton steps) if
 /// `method` is of the DDB family with retraction R, else `found`.
 template <class R, class G>

@@ -1,0 +1,31 @@
+# A configure-only install with the defaults (nothing built: the header-only library alone)
+# succeeds wherever it is configured, CUDA's toolkit found or not, and skips what was not built
+# with a message (CMakeLists.txt; docs/guide/getting-started.md). Run by ctest as
+#   cmake -DSOURCE_DIR=<tree> -DWORK_DIR=<scratch> -P check_configure_only_install.cmake
+file(REMOVE_RECURSE ${WORK_DIR})
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/build
+                        -DDDB_BUILD_TESTS=OFF
+                RESULT_VARIABLE configured OUTPUT_VARIABLE configure_log ERROR_VARIABLE configure_log)
+if(NOT configured EQUAL 0)
+  message(FATAL_ERROR "the configure failed:\n${configure_log}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --install ${WORK_DIR}/build --prefix ${WORK_DIR}/prefix
+                RESULT_VARIABLE installed OUTPUT_VARIABLE install_log ERROR_VARIABLE install_log)
+if(NOT installed EQUAL 0)
+  message(FATAL_ERROR "the configure-only install failed:\n${install_log}")
+endif()
+if(NOT EXISTS ${WORK_DIR}/prefix/include/ddb/ddb.h OR
+   NOT EXISTS ${WORK_DIR}/prefix/share/ddb/cmake/ddbConfig.cmake)
+  message(FATAL_ERROR "the install lacks the headers or the package's config:\n${install_log}")
+endif()
+string(FIND "${configure_log}" "The CUDA backend is built" cuda_configured)
+if(NOT cuda_configured EQUAL -1)
+  string(FIND "${install_log}" "Skipping libddb_cuda.a: it was not built" skipped)
+  if(skipped EQUAL -1)
+    message(FATAL_ERROR "the install does not say that it skipped the CUDA library:\n${install_log}")
+  endif()
+  message(STATUS "CUDA's toolkit is found: the install skipped the unbuilt library, saying so")
+else()
+  message(STATUS "CUDA's toolkit is not found here: only the plain install is checked")
+endif()
+file(REMOVE_RECURSE ${WORK_DIR})
