@@ -76,9 +76,9 @@ TEST(DdbCompare, AdaptiveTakesAnyFirstStepAndGrowsIt) {
   // --h is only the first step with --adaptive: 1e-300 runs to the time cap, where it was
   // refused as "more than 1e9 steps"; without --adaptive it is refused, naming --adaptive.
   const fs::path out = freshFolder("tiny_first_step");
-  ASSERT_EQ(runApp("--adaptive --h 1e-300 --t-end 5 --method ddb-cay --repeat 1 --out " +
-                   out.string()),
-            0);
+  ASSERT_EQ(
+      runApp("--adaptive --h 1e-300 --t-end 5 --method ddb-cay --repeat 1 --out " + out.string()),
+      0);
   const auto method = readJson(out / "summary.json")["methods"]["ddb-cay"];
   EXPECT_EQ(method["stop"], "time cap");
   EXPECT_NEAR(method["t_final"].get<double>(), 5.0, 1e-12);
