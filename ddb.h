@@ -29,7 +29,6 @@
 #include <ddb/integrators/methods/matrix_free_runge_kutta.h>
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/integrators/methods/one_step_method.h>
-#include <ddb/integrators/methods/reference.h>
 #include <ddb/integrators/methods/runge_kutta.h>
 #include <ddb/integrators/methods/symmetric_ddb.h>
 #include <ddb/integrators/solvers/matrix_legendre.h>

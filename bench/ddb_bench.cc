@@ -7,6 +7,7 @@
 // ratios of times within one run (scripts/bench_ratios.py).
 #include <benchmark/benchmark.h>
 #include <ddb/integrators/methods/method_table.h>
+#include <ddb/integrators/methods/reference.h>
 #include <ddb/systems/heavy_top.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>

@@ -57,12 +57,8 @@ class HeavyTopHamiltonian final : public AutoDiffHamiltonian<HeavyTopHamiltonian
 };
 
 /// The heavy top; `metric` k (6 entries >= 0) gives k♯ = α diag(k).
-inline std::shared_ptr<const LiePoissonSystem<SE3>> makeHeavyTop(
+std::shared_ptr<const LiePoissonSystem<SE3>> makeHeavyTop(
     const Eigen::Vector3d& inertia, double mgl, const Eigen::Vector3d& chi, double alpha,
-    const Eigen::Matrix<double, 6, 1>& metric) {
-  return makeLiePoissonSystem("heavy-top",
-                              std::make_shared<const HeavyTopHamiltonian>(inertia, mgl, chi),
-                              std::make_shared<const DiagonalMetric<SE3>>(alpha, metric));
-}
+    const Eigen::Matrix<double, 6, 1>& metric);
 
 }  // namespace ddb

@@ -77,13 +77,8 @@ class KirchhoffHamiltonian final : public AutoDiffHamiltonian<KirchhoffHamiltoni
   Eigen::Matrix<double, 6, 1> inverse_weights_;
 };
 
-inline std::shared_ptr<const LiePoissonSystem<SE3>> makeKirchhoffBody(
+std::shared_ptr<const LiePoissonSystem<SE3>> makeKirchhoffBody(
     const Eigen::Vector3d& inertia, const Eigen::Vector3d& mass, double alpha,
-    const Eigen::Matrix<double, 6, 1>& metric) {
-  return makeLiePoissonSystem("kirchhoff",
-                              std::make_shared<const KirchhoffHamiltonian>(inertia, mass),
-                              std::make_shared<const DiagonalMetric<SE3>>(alpha, metric),
-                              std::make_shared<const KirchhoffLagrangian>(inertia, mass));
-}
+    const Eigen::Matrix<double, 6, 1>& metric);
 
 }  // namespace ddb

@@ -45,10 +45,7 @@ class ManakovHamiltonian final : public Hamiltonian<SON> {
 };
 
 /// The Manakov body with principal values J (all > 0) and damping α.
-inline std::shared_ptr<const LiePoissonSystem<SON>> makeManakovBody(const Eigen::VectorXd& J,
-                                                                    double alpha) {
-  return makeLiePoissonSystem("manakov-body", std::make_shared<const ManakovHamiltonian>(J),
-                              std::make_shared<const ScaledIdentityMetric<SON>>(alpha));
-}
+std::shared_ptr<const LiePoissonSystem<SON>> makeManakovBody(const Eigen::VectorXd& J,
+                                                             double alpha);
 
 }  // namespace ddb

@@ -14,11 +14,7 @@ namespace ddb {
 
 /// 𝕀⁻¹ of principal moments that must be finite and > 0, with 1/𝕀 finite too (a moment
 /// below ~1e-308 would make it inf).
-inline Eigen::Vector3d invertInertia(const Eigen::Vector3d& inertia) {
-  const Eigen::Vector3d inverse = requirePositive("inertia", inertia).cwiseInverse();
-  if (!inverse.allFinite()) throwInvalid("inertia", formatValue(inertia), "1/inertia overflows");
-  return inverse;
-}
+Eigen::Vector3d invertInertia(const Eigen::Vector3d& inertia);
 
 class RigidBodyLagrangian final : public AutoDiffLagrangian<RigidBodyLagrangian, SO3> {
  public:
@@ -71,11 +67,7 @@ class RigidBodyHamiltonian final : public AutoDiffHamiltonian<RigidBodyHamiltoni
 };
 
 /// The rigid body of principal moments `inertia` (all > 0) and damping `alpha`.
-inline std::shared_ptr<const LiePoissonSystem<SO3>> makeRigidBody(const Eigen::Vector3d& inertia,
-                                                                  double alpha) {
-  return makeLiePoissonSystem("rigid-body", std::make_shared<const RigidBodyHamiltonian>(inertia),
-                              std::make_shared<const ScaledIdentityMetric<SO3>>(alpha),
-                              std::make_shared<const RigidBodyLagrangian>(inertia));
-}
+std::shared_ptr<const LiePoissonSystem<SO3>> makeRigidBody(const Eigen::Vector3d& inertia,
+                                                           double alpha);
 
 }  // namespace ddb

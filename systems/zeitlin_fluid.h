@@ -98,9 +98,6 @@ class ZeitlinDiagnostics {
 };
 
 /// Zeitlin's fluid at resolution N with double-bracket coefficient α (any finite sign).
-inline std::shared_ptr<const LiePoissonSystem<SUN>> makeZeitlinFluid(Eigen::Index n, double alpha) {
-  return makeLiePoissonSystem("zeitlin", std::make_shared<const ZeitlinHamiltonian>(n),
-                              std::make_shared<const ScaledIdentityMetric<SUN>>(alpha));
-}
+std::shared_ptr<const LiePoissonSystem<SUN>> makeZeitlinFluid(Eigen::Index n, double alpha);
 
 }  // namespace ddb

@@ -16,7 +16,6 @@
 #include <ddb/systems/zeitlin_fluid.h>
 
 #include <Eigen/Core>
-#include <Eigen/QR>
 #include <cmath>
 #include <complex>
 #include <cstdint>
@@ -59,56 +58,21 @@ class NormalSource {
   double spare_ = 0.0;
 };
 
-inline Eigen::MatrixXcd normalised(Eigen::MatrixXcd W) {
-  W = SUN::vee(W);
-  W.diagonal().array() -= W.trace() / double(W.rows());
-  return W * (std::sqrt(double(W.rows())) / W.norm());
-}
+Eigen::MatrixXcd normalised(Eigen::MatrixXcd W);
 
-inline void requireResolution(Eigen::Index n) {
-  if (n < 2 || n > SUN::kMaxN) {
-    throwInvalid("N", std::to_string(n), "must be in [2, " + std::to_string(SUN::kMaxN) + "]");
-  }
-}
+void requireResolution(Eigen::Index n);
 }  // namespace detail
 
 /// X₃ = ħ i diag(j − (N−1)/2): the l = 1, m = 0 element (T_10 = √3 X₃).
-inline Eigen::MatrixXcd zeitlinX3(Eigen::Index n) {
-  Eigen::VectorXcd d(n);
-  for (Eigen::Index j = 0; j < n; ++j) {
-    d(j) = std::complex<double>(0.0, zeitlinHbar(n) * (double(j) - 0.5 * double(n - 1)));
-  }
-  return d.asDiagonal();
-}
+Eigen::MatrixXcd zeitlinX3(Eigen::Index n);
 
-inline Eigen::MatrixXcd randomVorticity(Eigen::Index n, std::uint64_t seed) {
-  detail::requireResolution(n);
-  detail::NormalSource source(seed);
-  return detail::normalised(source.complexMatrix(n));
-}
+Eigen::MatrixXcd randomVorticity(Eigen::Index n, std::uint64_t seed);
 
 /// A Haar-random unitary: Q of the QR of a normal matrix times the phases of R's diagonal.
-inline Eigen::MatrixXcd randomUnitary(Eigen::Index n, std::uint64_t seed) {
-  detail::NormalSource source(seed);
-  const Eigen::HouseholderQR<Eigen::MatrixXcd> qr(source.complexMatrix(n));
-  const Eigen::MatrixXcd Q = qr.householderQ();
-  const Eigen::VectorXcd phases = qr.matrixQR().diagonal().unaryExpr(
-      [](const std::complex<double>& r) { return r == 0.0 ? 1.0 : r / std::abs(r); });
-  return Q * phases.asDiagonal();
-}
+Eigen::MatrixXcd randomUnitary(Eigen::Index n, std::uint64_t seed);
 
-inline Eigen::MatrixXcd l1Vorticity(Eigen::Index n, std::uint64_t seed) {
-  detail::requireResolution(n);
-  const Eigen::MatrixXcd U = randomUnitary(n, seed);
-  return detail::normalised(U * zeitlinX3(n) * U.adjoint());
-}
+Eigen::MatrixXcd l1Vorticity(Eigen::Index n, std::uint64_t seed);
 
-inline Eigen::MatrixXcd zonalVorticity(Eigen::Index n, std::uint64_t seed) {
-  detail::requireResolution(n);
-  detail::NormalSource source(seed);
-  Eigen::VectorXcd d(n);
-  for (Eigen::Index j = 0; j < n; ++j) d(j) = std::complex<double>(0.0, source.next());
-  return detail::normalised(d.asDiagonal());
-}
+Eigen::MatrixXcd zonalVorticity(Eigen::Index n, std::uint64_t seed);
 
 }  // namespace ddb

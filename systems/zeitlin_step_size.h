@@ -24,18 +24,10 @@ constexpr double kZeitlinContractionRate = 0.02;
 constexpr double kZeitlinStiffness = 4.0;
 
 /// h = kZeitlinContractionRate·ħ/‖P₀‖₂, P₀ = Δ⁻¹W₀.
-inline double zeitlinContractionStep(const Eigen::MatrixXcd& W0) {
-  const ZeitlinHamiltonian hamiltonian(W0.rows());
-  return kZeitlinContractionRate * hamiltonian.hbar() /
-         SUN::spectralNorm(hamiltonian.streamMatrix(W0));
-}
+double zeitlinContractionStep(const Eigen::MatrixXcd& W0);
 
 /// h = min(kZeitlinContractionRate·ħ/‖P₀‖₂, kZeitlinStiffness·ħ/(|α|‖W₀‖₂²)); the second
 /// is no limit for α = 0.
-inline double zeitlinDefaultStep(const Eigen::MatrixXcd& W0, double alpha) {
-  const double norm = SUN::spectralNorm(W0);
-  return std::min(zeitlinContractionStep(W0),
-                  kZeitlinStiffness * zeitlinHbar(W0.rows()) / (std::abs(alpha) * norm * norm));
-}
+double zeitlinDefaultStep(const Eigen::MatrixXcd& W0, double alpha);
 
 }  // namespace ddb

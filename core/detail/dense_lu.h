@@ -34,15 +34,7 @@ class DenseLu {
   bool factor(Matrix& A) {
     allocate(A.rows());
 #ifdef DDB_USE_LAPACK
-    // The _work variants with column-major storage call ?getrf/?getrs directly: no copy,
-    // no NaN scan.
-    const auto n = static_cast<lapack_int>(A.rows());
-    if constexpr (std::is_same_v<Scalar, double>) {
-      return LAPACKE_dgetrf_work(LAPACK_COL_MAJOR, n, n, A.data(), n, pivots_.data()) == 0;
-    } else {
-      return LAPACKE_zgetrf_work(LAPACK_COL_MAJOR, n, n, lapackData(A.data()), n, pivots_.data()) ==
-             0;
-    }
+    return lapack::getrf(static_cast<lapack::Int>(A.rows()), A.data(), pivots_.data()) == 0;
 #else
     lu_.compute(A);
     // Eigen's partial-pivoting LU has no singularity flag: an exactly zero pivot shows.
@@ -56,16 +48,10 @@ class DenseLu {
     // The columns of X are independent: under a single-threaded BLAS, one getrs per chunk of
     // columns, on the library's threads, as products are (MatrixBackend::multiply).
     if (X.cols() == 0) return;
-    const auto n = static_cast<lapack_int>(A.rows());
+    const auto n = static_cast<lapack::Int>(A.rows());
     const auto solveColumns = [&](long first, long count) {
-      const auto columns = static_cast<lapack_int>(count);
-      if constexpr (std::is_same_v<Scalar, double>) {
-        LAPACKE_dgetrs_work(LAPACK_COL_MAJOR, 'N', n, columns, A.data(), n, pivots_.data(),
-                            X.col(first).data(), n);
-      } else {
-        LAPACKE_zgetrs_work(LAPACK_COL_MAJOR, 'N', n, columns, lapackData(A.data()), n,
-                            pivots_.data(), lapackData(X.col(first).data()), n);
-      }
+      lapack::getrs(n, static_cast<lapack::Int>(count), A.data(), pivots_.data(),
+                    X.col(first).data());
     };
     detail::forBlasColumnChunks(X.cols(), solveColumns);
 #else
@@ -88,7 +74,7 @@ class DenseLu {
 
   Eigen::Index size_ = -1;
 #ifdef DDB_USE_LAPACK
-  std::vector<lapack_int> pivots_;
+  std::vector<lapack::Int> pivots_;
 #else
   Eigen::PartialPivLU<Matrix> lu_;
   Matrix solved_;

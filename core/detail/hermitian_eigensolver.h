@@ -3,8 +3,8 @@
 // allocation per call). The exponential retraction of the matrix groups decomposes one or
 // two skew-Hermitian matrices per sweep and step (docs/reference/conventions.md §1, "Matrix
 // algebras"). With DDB_USE_LAPACK it calls ?heevd (divide and conquer) through LAPACKE's
-// _work variant; the fallback is Eigen's SelfAdjointEigenSolver, whose Householder
-// back-transformation allocates on every call.
+// _work variant (core/detail/lapack.h); the fallback is Eigen's SelfAdjointEigenSolver, whose
+// Householder back-transformation allocates on every call.
 #pragma once
 
 #include <ddb/core/detail/lapack.h>
@@ -27,13 +27,10 @@ class HermitianEigensolver {
     allocate(A.rows());
     vectors_ = A;
 #ifdef DDB_USE_LAPACK
-    const auto n = static_cast<lapack_int>(A.rows());
-    const lapack_int info = LAPACKE_zheevd_work(
-        LAPACK_COL_MAJOR, 'V', 'L', n, lapackData(vectors_.data()), n, values_.data(),
-        lapackData(work_.data()), static_cast<lapack_int>(work_.size()), rwork_.data(),
-        static_cast<lapack_int>(rwork_.size()), iwork_.data(),
-        static_cast<lapack_int>(iwork_.size()));
-    return info == 0;
+    return lapack::heevd(static_cast<lapack::Int>(A.rows()), vectors_.data(), values_.data(),
+                         work_.data(), static_cast<lapack::Int>(work_.size()), rwork_.data(),
+                         static_cast<lapack::Int>(rwork_.size()), iwork_.data(),
+                         static_cast<lapack::Int>(iwork_.size())) == 0;
 #else
     eigen_.compute(vectors_);
     if (eigen_.info() != Eigen::Success) return false;
@@ -54,15 +51,14 @@ class HermitianEigensolver {
     vectors_.setZero(n, n);
 #ifdef DDB_USE_LAPACK
     // The sizes ?heevd asks for in a workspace query (lwork = lrwork = liwork = −1).
-    const auto m = static_cast<lapack_int>(n);
     std::complex<double> work = 0;
     double rwork = 0;
-    lapack_int iwork = 0;
-    LAPACKE_zheevd_work(LAPACK_COL_MAJOR, 'V', 'L', m, lapackData(vectors_.data()), m,
-                        values_.data(), lapackData(&work), -1, &rwork, -1, &iwork, -1);
+    lapack::Int iwork = 0;
+    lapack::heevd(static_cast<lapack::Int>(n), vectors_.data(), values_.data(), &work, -1, &rwork,
+                  -1, &iwork, -1);
     work_.assign(static_cast<std::size_t>(std::max(std::real(work), 1.0)), 0.0);
     rwork_.assign(static_cast<std::size_t>(std::max(rwork, 1.0)), 0.0);
-    iwork_.assign(static_cast<std::size_t>(std::max<lapack_int>(iwork, 1)), 0);
+    iwork_.assign(static_cast<std::size_t>(std::max<lapack::Int>(iwork, 1)), 0);
 #else
     eigen_ = Eigen::SelfAdjointEigenSolver<Matrix>(n);
 #endif
@@ -74,7 +70,7 @@ class HermitianEigensolver {
 #ifdef DDB_USE_LAPACK
   std::vector<std::complex<double>> work_;
   std::vector<double> rwork_;
-  std::vector<lapack_int> iwork_;
+  std::vector<lapack::Int> iwork_;
 #else
   Eigen::SelfAdjointEigenSolver<Matrix> eigen_;
 #endif

@@ -22,6 +22,7 @@
 #pragma once
 
 #include <ddb/core/binary_record.h>
+#include <ddb/core/detail/energy_round_off.h>
 #include <ddb/core/errors.h>
 
 #include <algorithm>
@@ -30,15 +31,6 @@
 #include <string>
 
 namespace ddb {
-
-/// The rounding of an energy difference H(μ') − H(μ): the energy is a sum of a few rounded
-/// products, each good to ε relative, so honest round-off stays within kRoundOffUlps·ε of
-/// the larger of the two values.
-inline double energyRoundOff(double e0, double e1) {
-  constexpr double kRoundOffUlps = 8.0;
-  return kRoundOffUlps * std::numeric_limits<double>::epsilon() *
-         std::max(std::abs(e0), std::abs(e1));
-}
 
 struct StepSizeControl {
   bool adaptive = false;   ///< false: every step of the first h, none rejected

@@ -15,7 +15,6 @@
 #include <ddb/integrators/methods/ddb.h>
 #include <ddb/integrators/methods/linearly_implicit_ddb.h>
 #include <ddb/integrators/methods/matrix_free_runge_kutta.h>
-#include <ddb/integrators/methods/reference.h>
 #include <ddb/integrators/methods/runge_kutta.h>
 #include <ddb/integrators/methods/symmetric_ddb.h>
 
@@ -24,10 +23,17 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace ddb {
+
+// integrators/methods/reference.h, the one header that brings Boost.Odeint: the library compiles
+// makeMethod for its own groups with it (the end of this file), and makeMethod on a group of your
+// own needs it included once in that translation unit (checked below, with a message).
+template <class G>
+class ReferenceSolver;
 
 /// The groups a method runs on: the fixed-size ones (SO3, SE3 and any user group with
 /// static sizes), the matrix groups with N at run time (SON, SUN) on dense matrices, and the
@@ -242,6 +248,22 @@ MethodPointer<G> withRetraction(RetractionKind r, std::shared_ptr<const LiePoiss
   throw std::logic_error("method table: a retraction the group has not");
 }
 
+/// Whether T is a complete type at this point of the translation unit.
+template <class T, class = void>
+inline constexpr bool kIsComplete = false;
+template <class T>
+inline constexpr bool kIsComplete<T, std::void_t<decltype(sizeof(T))>> = true;
+
+/// The adaptive reference on G; its header is Boost.Odeint's, so a program includes it only
+/// where it builds the reference itself.
+template <class G>
+MethodPointer<G> makeReferenceSolver(std::shared_ptr<const LiePoissonSystem<G>> system) {
+  static_assert(kIsComplete<ReferenceSolver<G>>,
+                "makeMethod on a group of your own builds the 'reference' row too: include "
+                "<ddb/integrators/methods/reference.h> (Boost.Odeint) in this file");
+  return std::make_unique<ReferenceSolver<G>>(std::move(system));
+}
+
 inline const CompositionScheme& schemeOf(SchemeKind scheme) {
   if (scheme == SchemeKind::kYoshida6) return yoshida6();
   return tripleJump();
@@ -302,7 +324,7 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(const MethodInfo& method,
         return std::make_unique<MatrixFreeImplicitRungeKutta<G, 3>>(system, kLobattoIIIC3);
       }
     case MethodKind::kReference:
-      if constexpr (kDenseOnly) return std::make_unique<ReferenceSolver<G>>(system);
+      if constexpr (kDenseOnly) return detail::makeReferenceSolver<G>(system);
       break;
   }
   throw std::logic_error("method table: " + name + " cannot be built on this group");
@@ -317,4 +339,27 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(std::string_view name,
   return makeMethod<G>(*method, std::move(system));
 }
 
+// The library compiles makeMethod once for its own groups (instantiations/method_table_*.cc),
+// so that a program using them builds none of the methods itself, which is most of what
+// compiling a call of makeMethod costs (docs/results/compile-costs.md). The groups are only
+// named here, as what that compiled part holds; every other group (your own, SUNOn<X> on
+// another backend) instantiates makeMethod where it calls it.
+struct SO3;
+struct SE3;
+struct SON;
+struct SUN;
+
 }  // namespace ddb
+
+/// The explicit instantiations of makeMethod for G: with `extern` it declares them (below), with
+/// nothing it defines them (instantiations/method_table_*.cc).
+#define DDB_METHOD_TABLE_INSTANCE(PREFIX, G)                                        \
+  PREFIX template std::unique_ptr<::ddb::OneStepMethod<G>> ddb::makeMethod<G>(      \
+      const ::ddb::MethodInfo&, std::shared_ptr<const ::ddb::LiePoissonSystem<G>>); \
+  PREFIX template std::unique_ptr<::ddb::OneStepMethod<G>> ddb::makeMethod<G>(      \
+      std::string_view, std::shared_ptr<const ::ddb::LiePoissonSystem<G>>)
+
+DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SO3);
+DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SE3);
+DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SON);
+DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SUN);

@@ -31,7 +31,6 @@
 
 #include <ddb/core/binary_record.h>
 #include <ddb/core/detail/bernoulli.h>
-#include <ddb/core/detail/tiny_solver.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>

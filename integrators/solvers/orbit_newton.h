@@ -28,12 +28,12 @@
 #pragma once
 
 #include <ddb/core/binary_record.h>
+#include <ddb/core/detail/energy_round_off.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/core/matrix_backend.h>
 #include <ddb/groups/cayley.h>
-#include <ddb/integrators/drivers/energy_step_control.h>
 #include <ddb/integrators/matrix_kernels/matrix_conjugation.h>
 #include <ddb/integrators/solvers/orbit_preconditioner.h>
 

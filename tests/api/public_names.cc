@@ -28,6 +28,7 @@
 #include <ddb/integrators/methods/linearly_implicit_ddb.h>
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/integrators/methods/one_step_method.h>
+#include <ddb/integrators/methods/reference.h>
 #include <ddb/integrators/methods/symmetric_ddb.h>
 #include <ddb/integrators/solvers/correction_predictor.h>
 #include <ddb/integrators/solvers/legendre.h>
@@ -170,6 +171,8 @@ class StiffeningBody : public ddb::AutoDiffLagrangian<StiffeningBody, ddb::SO3> 
                  [&](long, double, const Eigen::Vector3d& m) { energy = system->energy(m); });
 
   auto body = ddb::makeRigidBody({1.0, 1.3, 0.5}, /*alpha=*/0.5);
+  ddb::ReferenceSolver<ddb::SO3> reference(body);
+  use(reference.name());
   ddb::Ddb<ddb::Cayley<ddb::SO3>> method(body);
   ddb::Trajectory<ddb::SO3> trajectory;
   ddb::integrate(method, m0, 0.0, 0.1, 300, trajectory.record());

@@ -24,7 +24,10 @@ import re
 import sys
 
 SCANNED_SUFFIXES = {".h", ".cc", ".cu", ".cuh", ".py", ".md", ".cmake", ".sh", ".txt", ".in", ".yml"}
-SKIPPED_DIRS = {".git", "build", "docs/html", "docs/data", "docs/figures"}
+SKIPPED_DIRS = {".git", "docs/html", "docs/data", "docs/figures"}
+# Build folders at the top (.gitignore's build*/: build, build-sanitize, ...): a check running
+# beside this one writes its scratch builds there.
+SKIPPED_PREFIX = "build"
 COMMENT_LEADER = re.compile(r"\n[ \t]*(?:///?|#+|\*|>)?[ \t]*")
 CITATION = re.compile(
     r"docs/([A-Za-z0-9_./-]+?)(\.md|\.png|\.jsonl|\.html)?(?![A-Za-z0-9_/-])"
@@ -68,7 +71,8 @@ def names(title, cited):
 def scanned_files(root):
     for path in sorted(root.rglob("*")):
         rel = path.relative_to(root).as_posix()
-        if not path.is_file() or any(rel == d or rel.startswith(d + "/") for d in SKIPPED_DIRS):
+        if (not path.is_file() or rel.split("/")[0].startswith(SKIPPED_PREFIX)
+                or any(rel == d or rel.startswith(d + "/") for d in SKIPPED_DIRS)):
             continue
         if path.suffix in SCANNED_SUFFIXES or path.name == "CMakeLists.txt":
             yield path, rel

@@ -6,6 +6,7 @@
 #include <ddb/groups/se3.h>
 #include <ddb/integrators/drivers/run.h>
 #include <ddb/integrators/methods/method_table.h>
+#include <ddb/integrators/methods/reference.h>
 #include <ddb/integrators/solvers/injectivity_guard.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/zeitlin_fluid.h>

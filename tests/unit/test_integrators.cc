@@ -3,6 +3,7 @@
 // forms, the reference against itself, and a failed solve keeping the prefix.
 #include <ddb/integrators/drivers/run.h>
 #include <ddb/integrators/methods/method_table.h>
+#include <ddb/integrators/methods/reference.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>
 #include <gmock/gmock.h>

@@ -2,6 +2,7 @@
 // textbook equations, the double-bracket energy rate and Casimirs by central
 // differences, and DDB (Hamiltonian form for the heavy top) against the reference.
 #include <ddb/integrators/methods/method_table.h>
+#include <ddb/integrators/methods/reference.h>
 #include <ddb/systems/heavy_top.h>
 #include <ddb/systems/kirchhoff.h>
 #include <ddb/systems/paper_scenarios.h>

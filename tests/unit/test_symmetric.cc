@@ -2,6 +2,7 @@
 // orders fitted against the reference (docs/reference/conventions.md §2 facts), symmetry Φ_{-h}∘Φ_h
 // = id, and exact Casimir preservation by every stage.
 #include <ddb/integrators/methods/method_table.h>
+#include <ddb/integrators/methods/reference.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>
 #include <gmock/gmock.h>

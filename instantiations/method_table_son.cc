@@ -1,0 +1,6 @@
+// makeMethod for SON, compiled once into the library (integrators/methods/method_table.h, its end).
+#include <ddb/groups/son.h>
+#include <ddb/integrators/methods/method_table.h>
+#include <ddb/integrators/methods/reference.h>
+
+DDB_METHOD_TABLE_INSTANCE(, ::ddb::SON);

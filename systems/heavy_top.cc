@@ -1,0 +1,14 @@
+// The heavy top's constructor (systems/heavy_top.h), compiled once into the library.
+#include <ddb/systems/heavy_top.h>
+
+namespace ddb {
+
+std::shared_ptr<const LiePoissonSystem<SE3>> makeHeavyTop(
+    const Eigen::Vector3d& inertia, double mgl, const Eigen::Vector3d& chi, double alpha,
+    const Eigen::Matrix<double, 6, 1>& metric) {
+  return makeLiePoissonSystem("heavy-top",
+                              std::make_shared<const HeavyTopHamiltonian>(inertia, mgl, chi),
+                              std::make_shared<const DiagonalMetric<SE3>>(alpha, metric));
+}
+
+}  // namespace ddb

@@ -1,0 +1,58 @@
+// The fluid's seeded initial vorticities (systems/zeitlin_initial_conditions.h), compiled once
+// into the library.
+#include <ddb/systems/zeitlin_initial_conditions.h>
+
+#include <Eigen/QR>
+
+namespace ddb {
+
+Eigen::MatrixXcd detail::normalised(Eigen::MatrixXcd W) {
+  W = SUN::vee(W);
+  W.diagonal().array() -= W.trace() / double(W.rows());
+  return W * (std::sqrt(double(W.rows())) / W.norm());
+}
+
+void detail::requireResolution(Eigen::Index n) {
+  if (n < 2 || n > SUN::kMaxN) {
+    throwInvalid("N", std::to_string(n), "must be in [2, " + std::to_string(SUN::kMaxN) + "]");
+  }
+}
+
+Eigen::MatrixXcd zeitlinX3(Eigen::Index n) {
+  Eigen::VectorXcd d(n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    d(j) = std::complex<double>(0.0, zeitlinHbar(n) * (double(j) - 0.5 * double(n - 1)));
+  }
+  return d.asDiagonal();
+}
+
+Eigen::MatrixXcd randomVorticity(Eigen::Index n, std::uint64_t seed) {
+  detail::requireResolution(n);
+  detail::NormalSource source(seed);
+  return detail::normalised(source.complexMatrix(n));
+}
+
+Eigen::MatrixXcd randomUnitary(Eigen::Index n, std::uint64_t seed) {
+  detail::NormalSource source(seed);
+  const Eigen::HouseholderQR<Eigen::MatrixXcd> qr(source.complexMatrix(n));
+  const Eigen::MatrixXcd Q = qr.householderQ();
+  const Eigen::VectorXcd phases = qr.matrixQR().diagonal().unaryExpr(
+      [](const std::complex<double>& r) { return r == 0.0 ? 1.0 : r / std::abs(r); });
+  return Q * phases.asDiagonal();
+}
+
+Eigen::MatrixXcd l1Vorticity(Eigen::Index n, std::uint64_t seed) {
+  detail::requireResolution(n);
+  const Eigen::MatrixXcd U = randomUnitary(n, seed);
+  return detail::normalised(U * zeitlinX3(n) * U.adjoint());
+}
+
+Eigen::MatrixXcd zonalVorticity(Eigen::Index n, std::uint64_t seed) {
+  detail::requireResolution(n);
+  detail::NormalSource source(seed);
+  Eigen::VectorXcd d(n);
+  for (Eigen::Index j = 0; j < n; ++j) d(j) = std::complex<double>(0.0, source.next());
+  return detail::normalised(d.asDiagonal());
+}
+
+}  // namespace ddb
