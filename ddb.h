@@ -1,6 +1,8 @@
-// The whole public API of ddb in one include. The per-concept headers below stay
-// reachable on their own (<ddb/groups/so3.h>, ...); headers they include themselves
-// (core/detail/: solver details, scalar helpers) are not listed.
+// The public API of ddb in one include, but for the adaptive reference's class
+// (<ddb/integrators/methods/reference.h>, which brings Boost.Odeint: makeMethod builds the
+// reference without it on the library's groups). The per-concept headers below stay reachable
+// on their own (<ddb/groups/so3.h>, ...); headers they include themselves (core/detail/: solver
+// details, scalar helpers) are not listed.
 #pragma once
 
 #include <ddb/core/autodiff.h>

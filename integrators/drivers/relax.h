@@ -87,133 +87,6 @@ struct RelaxResult {
   bool ok() const { return stop != RelaxStop::kFailure; }
 };
 
-/// The times of accepted steps as integrate() counts them: t = t_start + j·h over a stretch
-/// of equal steps h, so that a fixed-h run lands on the same times however it was resumed.
-struct StepTimes {
-  double t_start = 0.0, h = 0.0;
-  long j = 0;
-
-  /// The time after an accepted step of `step` from t (a new stretch if the step changed).
-  double after(double t, double step) {
-    if (step != h) {
-      t_start = t;
-      h = step;
-      j = 0;
-    }
-    return t_start + static_cast<double>(++j) * step;
-  }
-};
-
-/// Relaxation's record (Relaxation::save) up to its step control: the accepted state's
-/// record, the state, the steps rejected and the step times. A caller that takes the steps
-/// itself (fluid-relax-mpi, on distributed states, which MatrixBackend::save gathers whole)
-/// writes it, then EnergyStepControl::save and the method's warm start, and so writes
-/// Relaxation's record (docs/reference/command-lines-and-files.md, "Checkpoints").
-template <class Dual>
-void saveRelaxCursor(BinaryRecordWriter& out, const RelaxState& s, const Dual& state,
-                     long steps_rejected, const StepTimes& times) {
-  out.tag("relaxation");
-  out.put(s.k);
-  out.put(s.t);
-  out.put(s.h);
-  out.put(s.energy);
-  out.put(s.residual);
-  MatrixBackend<Dual>::save(out, state);
-  out.put(steps_rejected);
-  out.put(times.t_start);
-  out.put(times.h);
-  out.put(times.j);
-}
-
-/// Reads what saveRelaxCursor wrote, for a state of `state`'s size (and, distributed, layout:
-/// MatrixBackend::load); throws CorruptRecord.
-template <class Dual>
-void loadRelaxCursor(BinaryRecordReader& in, RelaxState& s, Dual& state, long& steps_rejected,
-                     StepTimes& times) {
-  using B = MatrixBackend<Dual>;
-  in.expectTag("relaxation");
-  in.get(s.k);
-  in.get(s.t);
-  in.get(s.h);
-  in.get(s.energy);
-  in.get(s.residual);
-  Dual mu = state;
-  B::load(in, mu);
-  // Not finite: its Frobenius norm, which every rank of a distributed state agrees on, is NaN
-  // or inf (a state so large that its norm overflows is refused too).
-  if (!std::isfinite(B::frobeniusNorm(mu)) || s.k < 0) {
-    throw CorruptRecord("a relaxation state with a negative index or not finite");
-  }
-  state = std::move(mu);
-  in.get(steps_rejected);
-  in.get(times.t_start);
-  in.get(times.h);
-  in.get(times.j);
-}
-
-namespace detail {
-
-/// The message of `failure` as integrate() would raise it at step k.
-inline std::string messageAtStep(const SolveFailure& failure, long k, double t, double h) {
-  std::string message;
-  try {
-    failure.rethrowAtStep(k, t, h);
-  } catch (const SolveFailure& located) {
-    message = located.what();
-  }
-  return message;
-}
-
-}  // namespace detail
-
-/// Whether t has reached the cap t_end (infinite: none), up to the rounding of a sum of steps.
-inline bool reachedTimeCap(double t, double t_end) {
-  return std::isfinite(t_end) && t_end - t <= 1e-12 * t_end;
-}
-
-/// What one attempted step did (attemptStep).
-struct StepAttempt {
-  bool accepted = false;  ///< the trial is the next state; `energy` is its H
-  bool rejected = false;  ///< the step control rejected it: h halved (a rejected step)
-  double energy = 0.0;
-  std::string failure;  ///< non-empty: the run fails (a failed fixed step, or h exhausted)
-};
-
-/// One step of size h attempted from state k at time t, of energy e0, where the flow's dH/dt
-/// is `rate`, under `control`: Relaxation's rule, shared with callers that step states it
-/// cannot hold (fluid-relax-mpi's distributed ones). step() takes the step into the caller's
-/// trial state and throws SolveFailure if it fails (a trial that is not finite included);
-/// energy() is the trial's H. With a fixed h a failure ends the run; adaptive, a failure or
-/// the judge's verdict (EnergyStepControl::judge) rejects the step, and the run fails only
-/// once h has fallen below its floor.
-template <class Step, class Energy>
-StepAttempt attemptStep(EnergyStepControl& control, bool adaptive, long k, double t, double h,
-                        double rate, double e0, Step&& step, Energy&& energy) {
-  StepAttempt attempt;
-  std::string why;
-  try {
-    step();
-  } catch (const SolveFailure& failure) {
-    if (!adaptive) {
-      attempt.failure = detail::messageAtStep(failure, k, t, h);
-      return attempt;
-    }
-    why = control.reject(failure.what());
-  }
-  if (why.empty()) {
-    attempt.energy = energy();
-    if (adaptive) why = control.judge(h, rate, e0, attempt.energy);
-  }
-  attempt.accepted = why.empty();
-  attempt.rejected = !attempt.accepted;
-  if (attempt.rejected && control.exhausted()) {
-    attempt.failure = "relax: step " + std::to_string(k) + " from t = " + formatValue(t) +
-                      " rejected down to h = " + formatValue(h) +
-                      " (below 2^-30 of the first h): " + why;
-  }
-  return attempt;
-}
-
 /// A relaxation as an object (Boost.Odeint's steppers and GeometricIntegrators.jl's
 /// integrators keep problem, method and cursor apart likewise): advance() takes one
 /// accepted step at a time, and save()/load() carry the whole cursor (state, time, step
@@ -277,17 +150,7 @@ class Relaxation {
       if (reachedTimeCap(state().t, options_.t_end)) return stop(RelaxStop::kTimeCap);
       const double h = std::min(control_->h(), options_.t_end - state().t);
       trial_ = result_.final;
-      const StepAttempt attempt = attemptStep(
-          *control_, options_.control.adaptive, state().k, state().t, h, probe_.energyRate(),
-          state().energy,
-          [&] {
-            method_->advance(trial_, state().t, h);
-            if (!MatrixBackend<Dual>::allFinite(trial_)) {
-              throw NonFiniteState(method_->name(), -1, state().t, h,
-                                   MatrixBackend<Dual>::describe(trial_));
-            }
-          },
-          [&] { return system_.energy(trial_); });
+      const StepAttempt attempt = attemptStep(h);
       if (attempt.rejected) ++result_.steps_rejected;
       if (!attempt.failure.empty()) {
         result_.failure = attempt.failure;
@@ -323,7 +186,17 @@ class Relaxation {
   /// The cursor: the accepted state and its record, the stretch of equal steps, the step
   /// control and the method's warm start.
   void save(BinaryRecordWriter& out) const {
-    saveRelaxCursor(out, state(), result_.final, result_.steps_rejected, times_);
+    out.tag("relaxation");
+    out.put(state().k);
+    out.put(state().t);
+    out.put(state().h);
+    out.put(state().energy);
+    out.put(state().residual);
+    MatrixBackend<Dual>::save(out, result_.final);
+    out.put(result_.steps_rejected);
+    out.put(times_.t_start);
+    out.put(times_.h);
+    out.put(times_.j);
     if (newton_) {
       newton_->save(out);
     } else {
@@ -333,7 +206,7 @@ class Relaxation {
   }
   /// Continues from what save() wrote, with this object's method, system and options.
   void load(BinaryRecordReader& in) {
-    loadRelaxCursor(in, cursor(), result_.final, result_.steps_rejected, times_);
+    loadCursor(in);
     if (newton_) {
       newton_->load(in);
     } else {
@@ -347,6 +220,106 @@ class Relaxation {
   }
 
  private:
+  /// The times of accepted steps as integrate() counts them: t = t_start + j·h over a stretch
+  /// of equal steps h, so that a fixed-h run lands on the same times however it was resumed.
+  struct StepTimes {
+    double t_start = 0.0, h = 0.0;
+    long j = 0;
+
+    /// The time after an accepted step of `step` from t (a new stretch if the step changed).
+    double after(double t, double step) {
+      if (step != h) {
+        t_start = t;
+        h = step;
+        j = 0;
+      }
+      return t_start + static_cast<double>(++j) * step;
+    }
+  };
+
+  /// What one attempted step did.
+  struct StepAttempt {
+    bool accepted = false;  ///< the trial is the next state; `energy` is its H
+    bool rejected = false;  ///< the step control rejected it: h halved (a rejected step)
+    double energy = 0.0;
+    std::string failure;  ///< non-empty: the run fails (a failed fixed step, or h exhausted)
+  };
+
+  /// Whether t has reached the cap t_end (infinite: none), up to the rounding of a sum of steps.
+  static bool reachedTimeCap(double t, double t_end) {
+    return std::isfinite(t_end) && t_end - t <= 1e-12 * t_end;
+  }
+
+  /// One step of size h from the accepted state into trial_ (takeStep: the loops' one rule).
+  /// With a fixed h a failure ends the run; adaptive, a failure or the judge's verdict
+  /// (EnergyStepControl::judge) rejects the step, and the run fails only once h has fallen
+  /// below its floor.
+  StepAttempt attemptStep(double h) {
+    const bool adaptive = options_.control.adaptive;
+    const long k = state().k;
+    const double t = state().t;
+    StepAttempt attempt;
+    std::string why;
+    try {
+      takeStep(*method_, trial_, t, h);
+    } catch (const SolveFailure& failure) {
+      if (!adaptive) {
+        attempt.failure = messageAtStep(failure, k, t, h);
+        return attempt;
+      }
+      why = control_->reject(failure.what());
+    }
+    if (why.empty()) {
+      attempt.energy = system_.energy(trial_);
+      if (adaptive) why = control_->judge(h, probe_.energyRate(), state().energy, attempt.energy);
+    }
+    attempt.accepted = why.empty();
+    attempt.rejected = !attempt.accepted;
+    if (attempt.rejected && control_->exhausted()) {
+      attempt.failure = "relax: step " + std::to_string(k) + " from t = " + formatValue(t) +
+                        " rejected down to h = " + formatValue(h) +
+                        " (below 2^-30 of the first h): " + why;
+    }
+    return attempt;
+  }
+
+  /// The message of `failure` as integrate() would raise it at step k.
+  static std::string messageAtStep(const SolveFailure& failure, long k, double t, double h) {
+    std::string message;
+    try {
+      failure.rethrowAtStep(k, t, h);
+    } catch (const SolveFailure& located) {
+      message = located.what();
+    }
+    return message;
+  }
+
+  /// Reads what save() wrote up to the step control, for a state of the current one's size
+  /// (and, distributed, layout: MatrixBackend::load); throws CorruptRecord.
+  void loadCursor(BinaryRecordReader& in) {
+    using B = MatrixBackend<Dual>;
+    in.expectTag("relaxation");
+    RelaxState s;
+    in.get(s.k);
+    in.get(s.t);
+    in.get(s.h);
+    in.get(s.energy);
+    in.get(s.residual);
+    Dual mu = result_.final;
+    B::load(in, mu);
+    // Not finite: its Frobenius norm, which every rank of a distributed state agrees on, is
+    // NaN or inf (a state so large that its norm overflows is refused too).
+    if (!std::isfinite(B::frobeniusNorm(mu)) || s.k < 0) {
+      throw CorruptRecord("a relaxation state with a negative index or not finite");
+    }
+    cursor() = s;
+    result_.final = std::move(mu);
+    in.get(result_.steps_rejected);
+    in.get(times_.t_start);
+    in.get(times_.h);
+    in.get(times_.j);
+  }
+
   static RelaxOptions checked(const RelaxOptions& options) {
     if (!(options.tolerance >= 0 && options.tolerance < 1)) {
       throwInvalid("tolerance", formatValue(options.tolerance), "must be in [0, 1)");

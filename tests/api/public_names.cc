@@ -173,6 +173,8 @@ class StiffeningBody : public ddb::AutoDiffLagrangian<StiffeningBody, ddb::SO3> 
   auto body = ddb::makeRigidBody({1.0, 1.3, 0.5}, /*alpha=*/0.5);
   ddb::ReferenceSolver<ddb::SO3> reference(body);
   use(reference.name());
+  Eigen::Vector3d stepped = m0;
+  ddb::takeStep(reference, stepped, 0.0, 0.1);
   ddb::Ddb<ddb::Cayley<ddb::SO3>> method(body);
   ddb::Trajectory<ddb::SO3> trajectory;
   ddb::integrate(method, m0, 0.0, 0.1, 300, trajectory.record());

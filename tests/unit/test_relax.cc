@@ -14,6 +14,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace ddb::test {
 namespace {
@@ -34,8 +35,11 @@ struct Watch {
 
   void operator()(const RelaxState& state, const Dual& mu) {
     const Eigen::VectorXd c = G::casimirs(mu);
-    if (states == 0) casimirs0 = c;
-    casimir_drift = std::max(casimir_drift, (c - casimirs0).norm() / casimirs0.norm());
+    if (states == 0) {
+      casimirs0 = c;
+    } else {
+      casimir_drift = std::max(casimir_drift, (c - casimirs0).norm() / casimirs0.norm());
+    }
     const double energy = system.energy(mu);
     EXPECT_EQ(energy, state.energy);
     if (states > 0) {
@@ -211,6 +215,32 @@ TEST(Relax, FixedStepsFollowIntegrate) {
       });
   EXPECT_EQ(run.stop, RelaxStop::kStepCap);
   EXPECT_EQ(k, 31);
+}
+
+TEST(Relax, SubnormalEntriesAreFlushedAsIntegrateFlushesThem) {
+  // Relaxation steps by takeStep(), integrate()'s rule: m = (0, c, 0) is the rigid body's
+  // equilibrium (Ω = 𝕀⁻¹m parallel to m), so a start whose other components are subnormal
+  // must, once flushed, take the steps of the start on the axis, bit for bit.
+  const RigidBodyScenario& s = rigidBodyScenario("A");
+  const auto system = s.system();
+  const double tiny = std::numeric_limits<double>::min();  // 2^-1022, the smallest normal
+  const Eigen::Vector3d off_axis(tiny / 8, -0.5042, -tiny / 1e6);
+  const Eigen::Vector3d on_axis(0.0, -0.5042, 0.0);
+  RelaxOptions options;
+  options.max_steps = 5;
+  for (const char* name : {"ddb-cay", "sddb-exp", "rk4"}) {
+    auto method = makeMethod<SO3>(name, system);
+    std::vector<Eigen::Vector3d> expected, got;
+    relax(*method, *system, on_axis, 0.1, options,
+          [&](const RelaxState&, const Eigen::Vector3d& m) { expected.push_back(m); });
+    relax(*method, *system, off_axis, 0.1, options,
+          [&](const RelaxState&, const Eigen::Vector3d& m) { got.push_back(m); });
+    ASSERT_EQ(got.size(), 6u) << name;
+    for (std::size_t k = 1; k < got.size(); ++k) {
+      EXPECT_EQ(got[k], expected[k]) << name << ", state " << k;
+      EXPECT_EQ(got[k](0), 0.0) << name << ", state " << k;
+    }
+  }
 }
 
 /// A method whose every step fails, as a Legendre solve out of its budget does.
