@@ -13,11 +13,12 @@ ctest --test-dir build --output-on-failure -j2
 # The library's numerical suites again under two OpenBLAS kernels: OpenBLAS picks its kernels
 # by the CPU (one it does not recognise gets the generic Prescott ones), and every test must
 # hold on every path of rounding (issue 42). The apps' end-to-end, MPI and Python tests,
-# whose numbers come from the same library code, run once above.
+# whose numbers come from the same library code, and the tree's checks (check_*: includes,
+# layers, citations, the configure-only install, which builds the library again) run once above.
 for core in Prescott Haswell; do
   echo "== the numerical suites with OPENBLAS_CORETYPE=$core"
   OPENBLAS_CORETYPE=$core ctest --test-dir build --output-on-failure -j2 \
-    -E "_np[0-9]|python|Checkpoint|RunFolder|IoFaults|BadInputs|Plot|FluidRelax|DdbCompare|Determinism|EnergyRises|Cli\\."
+    -E "^check_|_np[0-9]|python|Checkpoint|RunFolder|IoFaults|BadInputs|Plot|FluidRelax|DdbCompare|Determinism|EnergyRises|Cli\\."
 done
 
 # The API reference (docs/CMakeLists.txt): the headers, the docs/ pages and the Python module's
@@ -84,5 +85,5 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDDB_BUILD_APPS=
       -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined"
 cmake --build build-sanitize -j2 --target sanitizer_tests  # the two, tests/CMakeLists.txt
 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 ASAN_OPTIONS=detect_leaks=1 \
-  ctest --test-dir build-sanitize --output-on-failure -j2 -E _NOT_BUILT
+  ctest --test-dir build-sanitize --output-on-failure -j2 -E "_NOT_BUILT|^check_"
 echo "== all checks passed"
