@@ -46,6 +46,10 @@ struct LieGroupBase {
                   "identity<T>() needs a fixed size: use identityLike(g) for matrix groups");
     return M(M::Identity());
   }
+  /// x ← its part in the algebra. The coordinates of a fixed-size group are the algebra:
+  /// nothing to project (matrix groups shadow it: SkewHermitianGroup).
+  template <class A>
+  static void projectToAlgebra(A&) {}
   /// The identity of the size of m (any group).
   template <class M>
   static M identityLike(const M& m) {

@@ -37,6 +37,26 @@ struct MatrixFieldWorkspace {
   }
 };
 
+/// The small (fixed-size) groups' workspace of vectorFieldInto: the same parts as
+/// MatrixFieldWorkspace's at μ, as coordinate vectors (nothing to size).
+template <class G>
+struct FixedSizeFieldWorkspace {
+  using Dual = typename G::template Dual<double>;
+  using Algebra = typename G::template Algebra<double>;
+  // At μ: μ itself (the argument H saw), ξ, ad*_ξ μ, φ = k♯(ad*_ξ μ), ξ + φ.
+  Dual argument, commutator, phi;
+  Algebra xi, forced;
+
+  void resize(const Dual&) {}
+};
+
+/// What LiePoissonSystem::vectorFieldInto keeps for a group: matrices sized once on matrix
+/// groups, fixed-size vectors on the small ones (one method body for both: the backend's
+/// algebra, core/matrix_backend.h, serves both too).
+template <class G>
+using FieldWorkspace =
+    std::conditional_t<isDynamicGroup<G>, MatrixFieldWorkspace<G>, FixedSizeFieldWorkspace<G>>;
+
 /// Matrix groups: ξ = P ∂H/∂μ(Pμ), with Pμ into `argument`. The one place where a matrix
 /// group's Hamiltonian is evaluated (docs/reference/conventions.md §2, "Systems on matrix groups");
 /// written against the matrix backend, so H may act on distributed matrices.
@@ -119,18 +139,40 @@ class LiePoissonSystem {
     return velocityOf(*hamiltonian_, mu);
   }
 
-  /// Matrix groups, in place: ξ = P ∂H/∂μ(P p) into xi, P p into `argument` (both of p's size).
+  /// In place: ξ = ∂H/∂μ at p into xi and the argument H saw into `argument` (matrix groups:
+  /// ξ = P ∂H/∂μ(P p), argument P p, both of p's size; small groups: p itself).
   void velocityInto(const Dual& p, Dual& argument, Algebra& xi) const {
-    static_assert(isDynamicGroup<G>, "the in-place evaluations are for matrix groups");
-    velocityAt(*hamiltonian_, p, argument, xi);
+    if constexpr (isDynamicGroup<G>) {
+      velocityAt(*hamiltonian_, p, argument, xi);
+    } else {
+      argument = p;
+      xi = velocity(p);
+    }
   }
 
-  /// Matrix groups, in place: the derivative of velocity() along v, P D²H(P p)[P v], given
-  /// `argument` = P p from velocityInto; `direction` is a workspace.
+  /// In place: the derivative of velocity() along v, D²H(p)[v] (matrix groups:
+  /// P D²H(P p)[P v]), given `argument` from velocityInto; `direction` is a workspace.
   void velocityDerivativeInto(const Dual& argument, const Dual& v, Dual& direction,
                               Algebra& out) const {
-    static_assert(isDynamicGroup<G>, "the in-place evaluations are for matrix groups");
-    matrixVelocityDerivativeInto<G>(*hamiltonian_, argument, v, direction, out);
+    if constexpr (isDynamicGroup<G>) {
+      matrixVelocityDerivativeInto<G>(*hamiltonian_, argument, v, direction, out);
+    } else {
+      static_cast<void>(direction);
+      out = hamiltonian_->hessianTimes(argument, v);
+    }
+  }
+
+  /// out = ad*_ξ μ; matrix groups: [μ, ξ] = μξ − (μξ)ᴴ for skew-Hermitian μ and ξ, one product
+  /// into the workspace `product` (small groups: G::adDual, `product` unused).
+  static void coadjointInto(const Algebra& xi, const Dual& mu, Dual& product, Dual& out) {
+    if constexpr (isDynamicGroup<G>) {
+      B::multiply(mu, xi, product);
+      B::copy(product, out);
+      B::addAdjoint(-1.0, product, out);
+    } else {
+      static_cast<void>(product);
+      out = G::adDual(xi, mu);
+    }
   }
 
   /// φ(ξ) = k♯(ad*_ξ μ), where μ is the momentum paired with ξ (double or Jet).
@@ -169,18 +211,31 @@ class LiePoissonSystem {
     }
   }
 
-  /// Matrix groups, in place: μ̇ = P ad*_{ξ+φ}(P μ), the vector field on the algebra (the
-  /// argument projected like the Hamiltonian's, the result too, so that explicit and implicit
-  /// Runge–Kutta states stay on it). `w` is sized by w.resize(mu) and keeps what the
-  /// derivative at this μ needs.
-  void vectorFieldInto(const Dual& mu, MatrixFieldWorkspace<G>& w, Dual& out) const {
-    fieldInto(*hamiltonian_, *metric_, mu, w, out);
+  /// In place: μ̇ = ad*_{ξ+φ} μ into out, the bits of vectorField(mu). Matrix groups:
+  /// μ̇ = P ad*_{ξ+φ}(P μ), the vector field on the algebra (the argument projected like the
+  /// Hamiltonian's, the result too, so that explicit and implicit Runge–Kutta states stay on
+  /// it); `w` is sized by w.resize(mu) and keeps the parts (fieldPartsInto), which the
+  /// derivative at this μ needs. Small groups: one inlined evaluation, w untouched (the
+  /// explicit steps' cost: docs/design/architecture.md, "Explicit steps").
+  void vectorFieldInto(const Dual& mu, FieldWorkspace<G>& w, Dual& out) const {
+    if constexpr (isDynamicGroup<G>) {
+      fieldInto(mu, w, out);
+    } else {
+      out = fieldAt(mu);
+    }
+  }
+
+  /// In place: μ̇ into out as vectorFieldInto, and its parts into w on every group: the
+  /// argument H saw, ξ, ad*_ξ μ (`commutator`), φ = k♯(ad*_ξ μ) and ξ + φ (`forced`).
+  void fieldPartsInto(const Dual& mu, FieldWorkspace<G>& w, Dual& out) const {
+    fieldInto(mu, w, out);
   }
 
   /// Matrix groups, in place: Df(μ)[v] at the μ of the last vectorFieldInto with `w`, by the
   /// linearised brackets: with x = ξ + φ, δξ = P D²H(Pμ)[Pv] and
   /// δx = δξ + k♯([Pv, ξ] + [Pμ, δξ]), Df(μ)[v] = P([Pv, x] + [Pμ, δx]). Eight products.
   void vectorFieldDerivativeInto(const Dual& v, MatrixFieldWorkspace<G>& w, Dual& out) const {
+    static_assert(isDynamicGroup<G>, "the matrix-free derivative is the matrix groups'");
     velocityDerivativeInto(w.argument, v, w.direction, w.dxi);  // P v and δξ
     bracketInto(w.direction, w.xi, w.dcommutator);
     addBracket(w.argument, w.dxi, w.dcommutator);
@@ -196,6 +251,10 @@ class LiePoissonSystem {
   /// through their concrete types.
   virtual Dual fieldAt(const Dual& mu) const {
     return vectorFieldOf<Hamiltonian<G>, DissipationMetric<G>, double>(*hamiltonian_, *metric_, mu);
+  }
+  /// fieldPartsInto's evaluation; TypedLiePoissonSystem overrides it like fieldAt.
+  virtual void fieldInto(const Dual& mu, FieldWorkspace<G>& w, Dual& out) const {
+    fieldPartsOf(*hamiltonian_, *metric_, mu, w, out);
   }
 
   // Eq. (3.4) for any Hamiltonian type H and metric type K: the base classes here, the
@@ -226,7 +285,7 @@ class LiePoissonSystem {
       w.resize(mu);
       Dual out;
       B::zeroLike(out, mu);
-      fieldInto(hamiltonian, metric, mu, w, out);
+      fieldPartsOf(hamiltonian, metric, mu, w, out);
       return out;
     } else {
       const AlgebraT<T> xi = velocityOf(hamiltonian, mu);
@@ -240,17 +299,27 @@ class LiePoissonSystem {
     matrixVelocityInto<G>(hamiltonian, mu, argument, xi);
   }
 
-  // Matrix groups: eq. (3.4) on the algebra, f(μ) = P ad*_{ξ+φ}(Pμ), ξ = P ∂H/∂μ(Pμ),
-  // φ = k♯(ad*_ξ Pμ), with ad*_x μ = [μ, x]. Four products, none allocating.
+  // Eq. (3.4) with its parts kept in w. Matrix groups: on the algebra,
+  // f(μ) = P ad*_{ξ+φ}(Pμ), ξ = P ∂H/∂μ(Pμ), φ = k♯(ad*_ξ Pμ), with ad*_x μ = [μ, x]; four
+  // products, none allocating. Small groups: vectorFieldOf's operations, in its order.
   template <class H, class K>
-  static void fieldInto(const H& hamiltonian, const K& metric, const Dual& mu,
-                        MatrixFieldWorkspace<G>& w, Dual& out) {
-    velocityAt(hamiltonian, mu, w.argument, w.xi);
-    bracketInto(w.argument, w.xi, w.commutator);
-    metric.sharpInto(w.commutator, w.phi);
-    B::sum(1.0, w.xi, 1.0, w.phi, w.forced);
-    bracketInto(w.argument, w.forced, out);
-    G::projectToAlgebra(out);
+  static void fieldPartsOf(const H& hamiltonian, const K& metric, const Dual& mu,
+                           FieldWorkspace<G>& w, Dual& out) {
+    if constexpr (isDynamicGroup<G>) {
+      velocityAt(hamiltonian, mu, w.argument, w.xi);
+      bracketInto(w.argument, w.xi, w.commutator);
+      metric.sharpInto(w.commutator, w.phi);
+      B::sum(1.0, w.xi, 1.0, w.phi, w.forced);
+      bracketInto(w.argument, w.forced, out);
+      G::projectToAlgebra(out);
+    } else {
+      w.argument = mu;
+      w.xi = velocityOf(hamiltonian, mu);
+      w.commutator = G::adDual(w.xi, mu);
+      w.phi = metric.sharp(w.commutator);
+      w.forced = w.xi + w.phi;
+      out = G::adDual(w.forced, mu);
+    }
   }
 
   // out = [a, b] = ab − ba, and out += [a, b], without temporaries.
@@ -296,6 +365,10 @@ class TypedLiePoissonSystem final : public LiePoissonSystem<G> {
   Dual fieldAt(const Dual& mu) const override {
     return this->template vectorFieldOf<H, K, double>(static_cast<const H&>(this->hamiltonian()),
                                                       static_cast<const K&>(this->metric()), mu);
+  }
+  void fieldInto(const Dual& mu, FieldWorkspace<G>& w, Dual& out) const override {
+    this->fieldPartsOf(static_cast<const H&>(this->hamiltonian()),
+                       static_cast<const K&>(this->metric()), mu, w, out);
   }
 };
 

@@ -8,7 +8,9 @@
 // every rank, so that every data-dependent branch is taken alike everywhere.
 //
 // This primary template is the dense backend (Eigen's dynamic-size matrices, real or
-// complex); distributed/distributed_backend.h specialises it for DistributedMatrix.
+// complex); core/fixed_size_backend.h specialises it for the small groups' fixed-size vectors
+// (the second parameter selects that specialisation), distributed/distributed_backend.h for
+// DistributedMatrix.
 #pragma once
 
 #include <ddb/core/binary_record.h>
@@ -34,7 +36,7 @@ namespace ddb {
 template <class Matrix>
 class SkewHermitianEigenbasis;  // core/skew_hermitian_eigenbasis.h
 
-template <class X>
+template <class X, class = void>
 struct MatrixBackend {
   using Scalar = typename X::Scalar;
   using Entries = X;
@@ -363,3 +365,5 @@ const X& requireFiniteMatrix(const std::string& name, const X& x) {
 }
 
 }  // namespace ddb
+
+#include <ddb/core/fixed_size_backend.h>

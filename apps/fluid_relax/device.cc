@@ -2,6 +2,8 @@
 
 #include <ddb/groups/sun.h>
 
+#include <array>
+
 #include "common/cli.h"
 #include "common/exit_status.h"
 
@@ -11,36 +13,50 @@
 
 namespace ddb::fluid {
 
-Device deviceOf(const std::string& text) {
-  app::requireChoice("--device", text, {"cpu", "cuda"});
-  return text == "cuda" ? Device::kCuda : Device::kCpu;
-}
+namespace {
 
-Eigen::Index maxN(Device device) { return device == Device::kCuda ? SUN::kMaxN : kMaxN; }
+std::optional<std::string> cpuUnavailable() { return std::nullopt; }
+std::string cpuDescription() { return "cpu"; }
 
-void requireRunsOn(Device device, Eigen::Index n) {
-  if (device == Device::kCpu) {
-    if (n > kMaxN) {
-      app::usageError("--device", "cpu",
-                      "this run has N = " + std::to_string(n) +
-                          "; on the CPU N <= " + std::to_string(kMaxN) + " (give --device cuda)");
-    }
-    return;
-  }
+// The CUDA row: its run where the CUDA backend was built (the one place that asks).
 #ifdef DDB_FLUID_RELAX_CUDA
-  if (const auto why = cudaUnavailable()) app::usageError("--device", "cuda", *why);
+std::optional<std::string> cudaRowUnavailable() { return cudaUnavailable(); }
+std::string cudaDescription() { return "cuda: " + cudaDeviceName(); }
+constexpr auto kCudaRelax = &relaxOnCuda;
 #else
-  app::usageError("--device", "cuda",
-                  "this fluid-relax was built without the CUDA backend (configure ddb where "
-                  "CUDA's toolkit is found: docs/guide/gpu.md)");
+std::optional<std::string> cudaRowUnavailable() {
+  return "this fluid-relax was built without the CUDA backend (configure ddb where CUDA's "
+         "toolkit is found: docs/guide/gpu.md)";
+}
+std::string cudaDescription() { return "cuda"; }
+constexpr decltype(&relaxOnCuda) kCudaRelax = nullptr;  // never run: unavailable says why
 #endif
+
+const std::array<Device, 2> kDevices{{
+    {"cpu", "the CPU", kMaxN, cpuUnavailable, relaxOnCpu, cpuDescription},
+    {"cuda", "the GPU", SUN::kMaxN, cudaRowUnavailable, kCudaRelax, cudaDescription},
+}};
+
+}  // namespace
+
+const Device& deviceOf(const std::string& text) {
+  std::vector<std::string> names;
+  for (const Device& device : kDevices) names.emplace_back(device.name);
+  app::requireChoice("--device", text, names);
+  for (const Device& device : kDevices) {
+    if (text == device.name) return device;
+  }
+  throw std::logic_error("device table: no row " + text);
 }
 
-std::string deviceDescription(Device device) {
-#ifdef DDB_FLUID_RELAX_CUDA
-  if (device == Device::kCuda) return "cuda: " + cudaDeviceName();
-#endif
-  return device == Device::kCuda ? "cuda" : "cpu";
+void requireRunsOn(const Device& device, Eigen::Index n) {
+  if (const auto why = device.unavailable()) app::usageError("--device", device.name, *why);
+  if (n > device.max_n) {
+    app::usageError("--device", device.name,
+                    "this run has N = " + std::to_string(n) + "; on " + device.place +
+                        " N <= " + std::to_string(device.max_n) +
+                        (device.max_n < SUN::kMaxN ? " (give --device cuda)" : ""));
+  }
 }
 
 }  // namespace ddb::fluid

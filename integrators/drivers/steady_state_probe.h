@@ -8,13 +8,8 @@
 // of the coordinates (fixed-size groups) or Frobenius (matrix groups), the pairing's.
 #pragma once
 
-#include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/core/matrix_backend.h>
-
-#include <cmath>
-#include <complex>
-#include <type_traits>
 
 namespace ddb {
 
@@ -25,22 +20,17 @@ class SteadyStateProbe {
 
   explicit SteadyStateProbe(const LiePoissonSystem<G>& system) : system_(system) {}
 
-  /// Evaluates at μ; residual() and energyRate() then describe μ. On matrix groups it
-  /// evaluates the system's in-place field (no allocation once the size is known).
+  /// Evaluates at μ; residual() and energyRate() then describe μ, from the parts of the
+  /// system's in-place field (no allocation once the size is known).
   void evaluate(const Dual& mu) {
-    if constexpr (isDynamicGroup<G>) {
-      using B = MatrixBackend<Dual>;
-      w_.resize(mu);
-      if (!B::sameShape(out_, mu)) B::zeroLike(out_, mu);
-      system_.vectorFieldInto(mu, w_, out_);
-      // ad*_ξ μ is the commutator [Pμ, ξ]; the pairing is Re tr(AᴴB).
-      setFrom(B::frobeniusNorm(w_.commutator), B::innerProduct(w_.commutator, w_.phi),
-              B::frobeniusNorm(w_.xi), B::frobeniusNorm(w_.argument));
-    } else {
-      const auto xi = system_.velocity(mu);
-      const auto ad = G::adDual(xi, mu).eval();
-      set(ad, system_.dissipation(xi, mu), xi.norm(), mu.norm());
-    }
+    w_.resize(mu);
+    if (!B::sameShape(field_, mu)) B::zeroLike(field_, mu);
+    system_.fieldPartsInto(mu, w_, field_);
+    // ad*_ξ μ is w_.commutator (matrix groups: [Pμ, ξ]); the pairing is Re tr(AᴴB).
+    const double scale =
+        MatrixBackend<Algebra>::frobeniusNorm(w_.xi) * B::frobeniusNorm(w_.argument);
+    residual_ = scale > 0 ? B::frobeniusNorm(w_.commutator) / scale : 0.0;
+    energy_rate_ = -B::innerProduct(w_.commutator, w_.phi);
   }
 
   /// r(μ) = ‖ad*_ξ μ‖/(‖ξ‖ ‖μ‖); 0 where ξ or μ vanishes (the flow is at rest there).
@@ -49,21 +39,12 @@ class SteadyStateProbe {
   double energyRate() const { return energy_rate_; }
 
  private:
-  template <class A, class P>
-  void set(const A& ad, const P& phi, double xi_norm, double mu_norm) {
-    setFrom(ad.norm(), std::real(ad.conjugate().cwiseProduct(phi).sum()), xi_norm, mu_norm);
-  }
-  // From ‖ad*_ξ μ‖, ⟨ad*_ξ μ, k♯(ad*_ξ μ)⟩, ‖ξ‖ and ‖μ‖.
-  void setFrom(double ad_norm, double ad_dot_phi, double xi_norm, double mu_norm) {
-    const double scale = xi_norm * mu_norm;
-    residual_ = scale > 0 ? ad_norm / scale : 0.0;
-    energy_rate_ = -ad_dot_phi;
-  }
+  using B = MatrixBackend<Dual>;
+  using Algebra = typename G::template Algebra<double>;
 
   const LiePoissonSystem<G>& system_;
-  struct Unused {};
-  std::conditional_t<isDynamicGroup<G>, MatrixFieldWorkspace<G>, Unused> w_;
-  std::conditional_t<isDynamicGroup<G>, Dual, Unused> out_;  // the field, unused here
+  FieldWorkspace<G> w_;
+  Dual field_;  // the field itself, unused here
   double residual_ = 0.0, energy_rate_ = 0.0;
 };
 

@@ -16,14 +16,31 @@
 
 namespace ddb {
 
-/// The DDB update of R on matrix groups (MatrixRetraction<R>::Transport), and an empty type on
-/// the other groups, whose retractions need no matrix step.
+/// DDB's update (ii), M ← Ad*_{τ(hξ) τ(hφ)} M with φ = k♯(ad*_ξ p) (eq. (4.12)), on the small
+/// groups: the retraction's transport of the solver's ξ and p, which a group may apply without
+/// forming the product (SO3::cayTransport).
+template <class R>
+struct FixedSizeDdbTransport {
+  using G = typename R::Group;
+  using Algebra = typename G::template Algebra<double>;
+  using Dual = typename G::template Dual<double>;
+
+  template <class Solver>
+  void apply(const LiePoissonSystem<G>& system, const Solver& solver, double h, Dual& mu) const {
+    const Algebra phi = system.dissipation(solver.velocity(), solver.solution());
+    const Algebra hxi = h * solver.velocity(), hphi = h * phi;
+    mu = solver.retraction().transport(hxi, hphi, mu);
+  }
+};
+
+/// The update (ii) of R, chosen by its group's traits: MatrixRetraction<R>::Transport (in place,
+/// preallocated) on matrix groups, FixedSizeDdbTransport on the small ones.
 template <class R, bool kMatrix = isDynamicGroup<typename R::Group>>
-struct MatrixTransportOf {
-  struct type {};
+struct DdbTransportOf {
+  using type = FixedSizeDdbTransport<R>;
 };
 template <class R>
-struct MatrixTransportOf<R, true> {
+struct DdbTransportOf<R, true> {
   using type =
       typename MatrixRetraction<R>::template Transport<LiePoissonSystem<typename R::Group>>;
 };
@@ -41,32 +58,18 @@ class Ddb : public LegendreMethod<R> {
 
   std::string name() const override { return this->nameWith("ddb-"); }
 
-  Dual step(const Dual& mu, double t, double h) override {
-    if constexpr (isDynamicGroup<G>) {
-      return this->stepInPlace(mu, t, h);
-    } else {
-      Dual p;
-      const Algebra xi = this->legendre_.solve(mu, t, h, p);
-      const Algebra phi = this->system_->dissipation(xi, p);
-      const Algebra hxi = h * xi, hphi = h * phi;
-      return this->retraction_.transport(hxi, hphi, mu);
-    }
-  }
+  Dual step(const Dual& mu, double t, double h) override { return this->stepInPlace(mu, t, h); }
 
-  /// Matrix groups (on any backend: docs/design/matrix-backend.md): DDB's step (i) and (ii) in
-  /// place, with the solver's certified frozen solution and the preallocated transport of the
-  /// retraction (no allocation once the size is known).
+  /// DDB's step (i) and (ii) in place on any group and backend (docs/design/matrix-backend.md):
+  /// the solver's solution, and on matrix groups its certified frozen solution, into the
+  /// retraction's update (no allocation once the size is known).
   void advance(Dual& mu, double t, double h) override {
-    if constexpr (isDynamicGroup<G>) {
-      this->legendre_.solveInPlace(FixedMomentum<G, Dual>{mu}, mu, t, h);
-      transport_.apply(*this->system_, this->legendre_, h, mu);
-    } else {
-      mu = step(mu, t, h);
-    }
+    this->legendre_.solveInPlace(FixedMomentum<G, Dual>{mu}, mu, t, h);
+    transport_.apply(*this->system_, this->legendre_, h, mu);
   }
 
  private:
-  typename MatrixTransportOf<R>::type transport_;
+  typename DdbTransportOf<R>::type transport_;
 };
 
 }  // namespace ddb

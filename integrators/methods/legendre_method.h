@@ -39,11 +39,7 @@ class LegendreMethod : public OneStepMethod<typename R::Group> {
   void reset() override { legendre_.reset(); }
   void saveWarmStart(BinaryRecordWriter& out) const override { legendre_.saveWarmStart(out); }
   void loadWarmStart(BinaryRecordReader& in, const Dual& state) override {
-    if constexpr (isDynamicGroup<G>) {
-      legendre_.loadWarmStart(in, state);
-    } else {
-      legendre_.loadWarmStart(in);
-    }
+    legendre_.loadWarmStart(in, state);
   }
   bool solvesEquations() const override { return true; }
   /// The last Legendre solve's fixed-point sweeps and Newton steps: the one solve of a step

@@ -48,12 +48,7 @@ class LinearlyImplicitDdb : public Ddb<R> {
   Dual step(const Dual& mu, double t, double h) override { return this->stepInPlace(mu, t, h); }
 
   void advance(Dual& mu, double t, double h) override {
-    // Ddb's own step, not through the virtual step()/advance() that this class overrides.
-    if constexpr (isDynamicGroup<G>) {
-      Ddb<R>::advance(mu, t, h);
-    } else {
-      mu = Ddb<R>::step(mu, t, h);
-    }
+    Ddb<R>::advance(mu, t, h);  // Ddb's own step, not this class's override
     factor_steps_ = 0;
     if (alpha_ == 0.0) return;  // no dissipative factor: the step is Ddb's
     double energy = with_dissipation_->energy(mu);

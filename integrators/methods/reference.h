@@ -31,6 +31,10 @@ template <class G>
 struct OdeintState<G, true> {
   using type = std::vector<double>;
 };
+/// x of `reals` entries: a std::vector is resized, a std::array has its size.
+inline void resizeOdeintState(std::vector<double>& x, std::size_t reals) { x.resize(reals); }
+template <std::size_t kReals>
+void resizeOdeintState(std::array<double, kReals>&, std::size_t) {}
 }  // namespace detail
 
 template <class G>
@@ -39,14 +43,15 @@ struct OdeintSystem {
   using Scalar = typename Dual::Scalar;
   static constexpr int kReals = sizeof(Scalar) / sizeof(double);
   using State = typename detail::OdeintState<G>::type;
-  /// Matrix groups: the kept workspaces of the in-place field (LiePoissonSystem::vectorFieldInto).
+  /// The kept workspaces of the in-place field (LiePoissonSystem::vectorFieldInto).
   struct Workspace {
     Dual input, output;
-    MatrixFieldWorkspace<G> field;
+    FieldWorkspace<G> field;
   };
   const LiePoissonSystem<G>& system;
   Eigen::Index rows, cols;
-  Workspace* workspace = nullptr;  // matrix groups only
+  /// The kept workspaces of a matrix group's field (ReferenceSolver's).
+  Workspace* workspace = nullptr;
 
   static auto map(State& x, Eigen::Index rows, Eigen::Index cols) {
     return Eigen::Map<Dual>(reinterpret_cast<Scalar*>(x.data()), rows, cols);
@@ -54,13 +59,16 @@ struct OdeintSystem {
   static auto map(const State& x, Eigen::Index rows, Eigen::Index cols) {
     return Eigen::Map<const Dual>(reinterpret_cast<const Scalar*>(x.data()), rows, cols);
   }
+  /// A fixed-size state's field by value, in registers, as odeint's std::array state asks
+  /// (inlined into odeint's stepper: ddb-bench's odeint-rk4 peer); a matrix state's in place,
+  /// in the kept workspaces.
   void operator()(const State& x, State& dxdt, double) const {
-    if constexpr (isDynamicGroup<G>) {
+    if constexpr (hasFixedSize<Dual>) {
+      map(dxdt, rows, cols) = system.vectorField(Dual(map(x, rows, cols)));
+    } else {
       workspace->input = map(x, rows, cols);
       system.vectorFieldInto(workspace->input, workspace->field, workspace->output);
       map(dxdt, rows, cols) = workspace->output;
-    } else {
-      map(dxdt, rows, cols) = system.vectorField(Dual(map(x, rows, cols)));
     }
   }
 };
@@ -119,10 +127,8 @@ class ReferenceSolver : public OneStepMethod<G> {
   void advance(Dual& mu, double t, double h) override {
     namespace odeint = boost::numeric::odeint;
     State& x = state_;
-    if constexpr (isDynamicGroup<G>) {
-      x.resize(std::size_t(mu.size() * OdeintSystem<G>::kReals));
-      workspace_.field.resize(mu);
-    }
+    detail::resizeOdeintState(x, std::size_t(mu.size() * OdeintSystem<G>::kReals));
+    workspace_.field.resize(mu);
     const OdeintSystem<G> rhs{*system_, mu.rows(), mu.cols(), &workspace_};
     OdeintSystem<G>::map(x, mu.rows(), mu.cols()) = mu;
     const double end = t + h;

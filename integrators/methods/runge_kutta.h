@@ -6,7 +6,6 @@
 
 #include <ddb/core/detail/tiny_solver.h>
 #include <ddb/core/errors.h>
-#include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/core/matrix_backend.h>
 #include <ddb/integrators/methods/butcher_tableau.h>
@@ -35,23 +34,20 @@ class ExplicitRungeKutta : public OneStepMethod<G> {
 
   Dual step(const Dual& mu, double t, double h) override { return this->stepInPlace(mu, t, h); }
 
-  /// In place. Matrix groups evaluate the vector field into kept workspaces
-  /// (LiePoissonSystem::vectorFieldInto): no allocation once the size is known.
+  /// In place, the vector field evaluated into kept workspaces
+  /// (LiePoissonSystem::vectorFieldInto): no allocation once the size is known. The stages'
+  /// arithmetic is the backend's (core/matrix_backend.h: Eigen's expressions on a small group's
+  /// vectors, the matrix backend's operations on a matrix group's states).
   void advance(Dual& mu, double, double h) override {
-    if constexpr (isDynamicGroup<G>) {
-      MatrixStages& w = matrix_;
-      w.resize(mu);
-      runStages(mu, h, w.slopes, w.stage, w.sum,
-                [&](const Dual& x, Dual& out) { system_->vectorFieldInto(x, w.field, out); });
-    } else {
-      std::array<Dual, S> slopes;
-      Dual stage, sum;
-      runStages(mu, h, slopes, stage, sum,
-                [&](const Dual& x, Dual& out) { out = system_->vectorField(x); });
-    }
+    Stages& w = stages_;
+    w.resize(mu);
+    runStages(mu, h, w.slopes, w.stage, w.sum,
+              [&](const Dual& x, Dual& out) { system_->vectorFieldInto(x, w.field, out); });
   }
 
  private:
+  using B = MatrixBackend<Dual>;
+
   // The stage loops are unrolled (the tableau stays data): the slopes of a small system then
   // stay in registers between vector-field evaluations (docs/design/architecture.md, "Explicit
   // steps"). The operations and their order are those of the plain loops (the same roundings
@@ -61,62 +57,37 @@ class ExplicitRungeKutta : public OneStepMethod<G> {
                                      Dual& sum, const Field& field) {
 #pragma GCC unroll 16
     for (int i = 0; i < S; ++i) {
-      copy(mu, stage);
+      B::copy(mu, stage);
 #pragma GCC unroll 16
       for (int j = 0; j < i; ++j) {
-        if (tableau_.a[i][j] != 0.0) axpy(h * tableau_.a[i][j], k[j], stage);
+        if (tableau_.a[i][j] != 0.0) B::axpy(h * tableau_.a[i][j], k[j], stage);
       }
       field(stage, k[i]);
     }
-    scale(tableau_.b[0], k[0], sum);
+    B::scale(tableau_.b[0], k[0], sum);
 #pragma GCC unroll 16
-    for (int i = 1; i < S; ++i) axpy(tableau_.b[i], k[i], sum);
-    axpy(h, sum, mu);
-  }
-  // The stages' arithmetic: Eigen's expressions on a small group's vectors, the matrix
-  // backend's operations on a matrix group's states (the same entry-wise formulas, so the
-  // same bits on dense matrices: docs/design/matrix-backend.md).
-  EIGEN_ALWAYS_INLINE static void copy(const Dual& x, Dual& out) {
-    if constexpr (isDynamicGroup<G>) {
-      MatrixBackend<Dual>::copy(x, out);
-    } else {
-      out = x;
-    }
-  }
-  EIGEN_ALWAYS_INLINE static void scale(double a, const Dual& x, Dual& out) {
-    if constexpr (isDynamicGroup<G>) {
-      MatrixBackend<Dual>::scale(a, x, out);
-    } else {
-      out = a * x;
-    }
-  }
-  EIGEN_ALWAYS_INLINE static void axpy(double a, const Dual& x, Dual& y) {
-    if constexpr (isDynamicGroup<G>) {
-      MatrixBackend<Dual>::axpy(a, x, y);
-    } else {
-      y += a * x;
-    }
+    for (int i = 1; i < S; ++i) B::axpy(tableau_.b[i], k[i], sum);
+    B::axpy(h, sum, mu);
   }
 
-  struct MatrixStages {
+  struct Stages {
     std::array<Dual, S> slopes;
     Dual stage, sum;
-    MatrixFieldWorkspace<G> field;
+    FieldWorkspace<G> field;
 
     /// Every workspace of mu's shape (and layout); nothing if they have it already.
     void resize(const Dual& mu) {
       field.resize(mu);
-      if (MatrixBackend<Dual>::sameShape(stage, mu)) return;
-      for (Dual& k : slopes) MatrixBackend<Dual>::zeroLike(k, mu);
-      MatrixBackend<Dual>::zeroLike(stage, mu);
-      MatrixBackend<Dual>::zeroLike(sum, mu);
+      if (B::sameShape(stage, mu)) return;
+      for (Dual& k : slopes) B::zeroLike(k, mu);
+      B::zeroLike(stage, mu);
+      B::zeroLike(sum, mu);
     }
   };
-  struct NoStages {};
 
   std::shared_ptr<const LiePoissonSystem<G>> system_;
   ButcherTableau<S> tableau_;
-  std::conditional_t<isDynamicGroup<G>, MatrixStages, NoStages> matrix_;
+  Stages stages_;
 };
 
 template <class G, int S>

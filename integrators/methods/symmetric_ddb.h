@@ -52,6 +52,100 @@ struct HalfForceTarget {
   }
 };
 
+/// SymmetricDdb's update on the small groups: the half-force target (HalfForceTarget, by Jets
+/// in the solve) and μ ← Ad*_{τ(hφ/2) τ(hξ) τ(hφ/2)} μ through the group's product.
+template <class R>
+class FixedSizeSymmetricUpdate {
+ public:
+  using G = typename R::Group;
+  using Algebra = typename G::template Algebra<double>;
+  using Dual = typename G::template Dual<double>;
+
+  void resize(const Dual&) {}
+  template <class Solver>
+  HalfForceTarget<R> target(const LiePoissonSystem<G>& system, const R& retraction, const Solver&,
+                            const Dual& mu, double h) {
+    return {system, retraction, mu, h};
+  }
+  template <class Solver>
+  void apply(const LiePoissonSystem<G>& system, const R& retraction, Solver& solver, double h,
+             Dual& mu) {
+    const Algebra half = (0.5 * h) * system.dissipation(solver.velocity(), solver.solution());
+    const Algebra hxi = h * solver.velocity();
+    const auto kick = retraction.tau(half);
+    mu = G::AdDual(G::compose(G::compose(kick, retraction.tau(hxi)), kick), mu);
+  }
+};
+
+/// SymmetricDdb's update on matrix groups (any backend): each factor of
+/// Ad*_{τ(hφ/2) τ(hξ) τ(hφ/2)} applied as an increment (matrix_conjugation.h), with
+/// preallocated workspaces. The solver accepts the p at which it evaluated the target last, so
+/// the first factor applied to μ is the target's value, the kick is still prepared at that p's
+/// φ, and the middle factor uses what the solve left: the frozen solution (Cayley, one product)
+/// or ξ's eigenbasis (exp).
+template <class R>
+class MatrixSymmetricUpdate {
+ public:
+  using G = typename R::Group;
+  using Dual = typename G::template Dual<double>;
+  using B = MatrixBackend<Dual>;
+
+  /// The matrices of mu's shape (and layout); nothing if they have it already.
+  void resize(const Dual& mu) {
+    if (B::sameShape(product_, mu)) return;
+    for (Dual* m : {&product_, &commutator_, &half_, &drift_}) B::zeroLike(*m, mu);
+  }
+
+  /// The half-force target Ad*_{τ(hφ(ξ, p)/2)} μ, written into the solver's workspace; the
+  /// kick stays prepared at this p's φ.
+  template <class Solver>
+  struct Target {
+    MatrixSymmetricUpdate& update;
+    const LiePoissonSystem<G>& system;
+    const Solver& solver;
+    const Dual& mu;
+    double h;
+    void evaluateInto(const Dual& xi, const Dual& p, Dual& out) const {
+      MatrixSymmetricUpdate& w = update;
+      if constexpr (MatrixRetraction<R>::kSweep == MatrixSweep::kProductForm) {
+        // The solver's a p of this p: no product.
+        system.halfStepDissipationInto(solver.halfStepTimesSolution(), w.commutator_, w.half_);
+      } else {
+        system.dissipationInto(p, xi, 0.5 * h, w.product_, w.commutator_, w.half_);
+      }
+      B::copy(mu, out);
+      w.kick_.prepare(w.half_);
+      w.kick_.apply(out);
+    }
+  };
+  template <class Solver>
+  Target<Solver> target(const LiePoissonSystem<G>& system, const R&, const Solver& solver,
+                        const Dual& mu, double h) {
+    return {*this, system, solver, mu, h};
+  }
+
+  template <class Solver>
+  void apply(const LiePoissonSystem<G>&, const R&, Solver& solver, double h, Dual& mu) {
+    B::copy(solver.target(), mu);
+    if (!MatrixRetraction<R>::applySolvedFlow(solver, h, flow_, mu)) {
+      B::scale(h, solver.velocity(), drift_);  // μ ← Ad*_{τ(hξ)} μ, τ(hξ) formed from ξ
+      flow_.prepare(drift_);
+      flow_.apply(mu);
+    }
+    kick_.apply(mu);
+  }
+
+ private:
+  Dual product_, commutator_, half_, drift_;
+  MatrixConjugation<R> kick_, flow_;
+};
+
+/// SymmetricDdb's update of R, chosen by its group's traits.
+template <class R>
+using SymmetricUpdateFor =
+    std::conditional_t<isDynamicGroup<typename R::Group>, MatrixSymmetricUpdate<R>,
+                       FixedSizeSymmetricUpdate<R>>;
+
 template <class R>
 class SymmetricDdb : public LegendreMethod<R> {
  public:
@@ -65,84 +159,19 @@ class SymmetricDdb : public LegendreMethod<R> {
 
   std::string name() const override { return this->nameWith("sddb-"); }
 
-  Dual step(const Dual& mu, double t, double h) override {
-    if constexpr (isDynamicGroup<G>) {
-      return this->stepInPlace(mu, t, h);
-    } else {
-      Dual p;
-      const HalfForceTarget<R> target{*this->system_, this->retraction_, mu, h};
-      const Algebra xi = this->legendre_.solve(target, mu, t, h, p);
-      const Algebra half = (0.5 * h) * this->system_->dissipation(xi, p);
-      const Algebra hxi = h * xi;
-      const auto kick = this->retraction_.tau(half);
-      return G::AdDual(G::compose(G::compose(kick, this->retraction_.tau(hxi)), kick), mu);
-    }
-  }
+  Dual step(const Dual& mu, double t, double h) override { return this->stepInPlace(mu, t, h); }
 
-  /// Matrix groups: the same step in place, each factor of Ad*_{τ(hφ/2) τ(hξ) τ(hφ/2)} applied
-  /// as an increment (matrix_conjugation.h), with preallocated workspaces. The solver accepts
-  /// the p at which it evaluated the target last, so the first factor applied to μ is the
-  /// target's value, the kick is still prepared at that p's φ, and the middle factor uses what
-  /// the solve left: the frozen solution (Cayley, one product) or ξ's eigenbasis (exp).
+  /// The one-step symmetric DDB in place on any group: solve the half-force Legendre equation,
+  /// then μ ← Ad*_{τ(hφ/2) τ(hξ) τ(hφ/2)} μ (SymmetricUpdateFor).
   void advance(Dual& mu, double t, double h) override {
-    if constexpr (isDynamicGroup<G>) {
-      auto& solver = this->legendre_;
-      matrix_.resize(mu);
-      solver.solveInPlace(MatrixTarget{*this, mu, h}, mu, t, h);
-      MatrixBackend<Dual>::copy(solver.target(), mu);
-      if (!MatrixRetraction<R>::applySolvedFlow(solver, h, matrix_.flow, mu)) {
-        applyFlow(solver.velocity(), h, mu);
-      }
-      matrix_.kick.apply(mu);
-    } else {
-      mu = step(mu, t, h);
-    }
+    update_.resize(mu);
+    this->legendre_.solveInPlace(
+        update_.target(*this->system_, this->retraction_, this->legendre_, mu, h), mu, t, h);
+    update_.apply(*this->system_, this->retraction_, this->legendre_, h, mu);
   }
 
  private:
-  // The workspaces of the matrix-group step.
-  struct MatrixWorkspace {
-    Dual product, commutator, half, drift;
-    MatrixConjugation<R> kick, flow;
-
-    /// The matrices of mu's shape (and layout); nothing if they have it already.
-    void resize(const Dual& mu) {
-      using B = MatrixBackend<Dual>;
-      if (B::sameShape(product, mu)) return;
-      for (Dual* m : {&product, &commutator, &half, &drift}) B::zeroLike(*m, mu);
-    }
-  };
-  struct NoWorkspace {};
-
-  /// The half-force target Ad*_{τ(hφ(ξ, p)/2)} μ, written into the solver's workspace; the
-  /// kick stays prepared at this p's φ.
-  struct MatrixTarget {
-    SymmetricDdb& method;
-    const Dual& mu;
-    double h;
-    void evaluateInto(const Dual& xi, const Dual& p, Dual& out) const {
-      MatrixWorkspace& w = method.matrix_;
-      if constexpr (MatrixRetraction<R>::kSweep == MatrixSweep::kProductForm) {
-        // The solver's a p of this p: no product.
-        method.system_->halfStepDissipationInto(method.legendre_.halfStepTimesSolution(),
-                                                w.commutator, w.half);
-      } else {
-        method.system_->dissipationInto(p, xi, 0.5 * h, w.product, w.commutator, w.half);
-      }
-      MatrixBackend<Dual>::copy(mu, out);
-      w.kick.prepare(w.half);
-      w.kick.apply(out);
-    }
-  };
-
-  /// μ ← Ad*_{τ(hξ)} μ, τ(hξ) formed from ξ.
-  void applyFlow(const Dual& xi, double h, Dual& mu) {
-    MatrixBackend<Dual>::scale(h, xi, matrix_.drift);
-    matrix_.flow.prepare(matrix_.drift);
-    matrix_.flow.apply(mu);
-  }
-
-  std::conditional_t<isDynamicGroup<G>, MatrixWorkspace, NoWorkspace> matrix_;
+  SymmetricUpdateFor<R> update_;
 };
 
 template <class R>

@@ -75,6 +75,9 @@ class DiscreteLegendreSolver {
     out.put(previous_correction_);
     out.put(oldest_correction_);
   }
+  /// As loadWarmStart(in): a small group's record does not depend on the state (the matrix
+  /// solver's signature, so that a method loads either solver's alike).
+  void loadWarmStart(BinaryRecordReader& in, const Dual&) { loadWarmStart(in); }
   void loadWarmStart(BinaryRecordReader& in) {
     in.expectTag("discrete legendre solver");
     in.get(history_);
@@ -93,6 +96,19 @@ class DiscreteLegendreSolver {
   /// relative tolerance.
   template <class Target>
   Algebra solve(const Target& target, const Dual& near, double t, double h, Dual& p) {
+    solveInPlace(target, near, t, h);
+    p = p_;
+    return xi_;
+  }
+
+  /// Solves without copying out: the solution p is solution(), ξ = velocity(), valid until the
+  /// next solve (MatrixLegendreSolver's interface, which the DDB steps use on every group).
+  template <class Target>
+  void solveInPlace(const Target& target, const Dual& near, double t, double h) {
+    // The solve on locals, which stay in registers (members would be reloaded around every
+    // evaluation of the target, which may refer to any memory), copied out at the end.
+    Dual p;
+    Algebra xi;
     InjectivityGuard<R>::beforeSolve(system_, near, t, h);
     const LegendreEquation<R, Target> equation{system_, retraction_, target, h, form_};
     if (h != h_) {  // corrections and rates scale with h: only same-h ones are used
@@ -106,7 +122,6 @@ class DiscreteLegendreSolver {
     if (history_ == 3) guess += 3.0 * (correction_ - previous_correction_) + oldest_correction_;
     stats_ = LegendreStats{};
     const double scale = near.norm();
-    Algebra xi;
     if (sweep(equation, scale, guess)) {
       p = guess;
       xi = system_.velocity(p);
@@ -128,8 +143,14 @@ class DiscreteLegendreSolver {
     previous_correction_ = correction_;
     correction_ = p - near;
     history_ = history_ < 3 ? history_ + 1 : 3;
-    return xi;
+    p_ = p;
+    xi_ = xi;
   }
+
+  const Dual& solution() const { return p_; }
+  const Algebra& velocity() const { return xi_; }
+  /// The retraction τ the equation is written in.
+  const R& retraction() const { return retraction_; }
 
   /// DDB's equation M = (dτ^{-1}_{hξ})* ∂l/∂ξ(ξ).
   Algebra solve(const Dual& momentum, double t, double h, Dual& p) {
@@ -200,6 +221,8 @@ class DiscreteLegendreSolver {
   Dual correction_ = Dual::Zero(), previous_correction_ = Dual::Zero(),
        oldest_correction_ = Dual::Zero();
   Vector unknown_ = Vector::Zero();
+  Dual p_ = Dual::Zero();         // the last solve's solution
+  Algebra xi_ = Algebra::Zero();  // and its ξ
 };
 
 }  // namespace ddb

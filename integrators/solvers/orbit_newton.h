@@ -30,18 +30,14 @@
 #include <ddb/core/binary_record.h>
 #include <ddb/core/detail/energy_round_off.h>
 #include <ddb/core/errors.h>
-#include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/core/matrix_backend.h>
-#include <ddb/groups/cayley.h>
-#include <ddb/integrators/matrix_kernels/matrix_conjugation.h>
+#include <ddb/integrators/solvers/cayley_conjugation.h>
 #include <ddb/integrators/solvers/orbit_preconditioner.h>
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 #include <optional>
-#include <type_traits>
 #include <utility>
 
 namespace ddb {
@@ -51,7 +47,7 @@ class OrbitNewton {
  public:
   using Algebra = typename G::template Algebra<double>;
   using Dual = typename G::template Dual<double>;
-  using B = MatrixBackend<Dual>;  ///< the matrix groups' arithmetic
+  using B = MatrixBackend<Dual>;  ///< the arithmetic (a small group's too)
 
   static constexpr double kFirstRadius = 0.1;  ///< Δ of the first step, on ‖x‖
   static constexpr double kMaxRadius = 1.0;    ///< Δ's cap: cay x stays far from its pole
@@ -117,11 +113,9 @@ class OrbitNewton {
     report = Report();
     if (!(now_.relative > 0)) return true;  // at rest: no step
     report.cg_iterations = direction(mu, 1.0 / tau, kMaxRadius);
-    if constexpr (isDynamicGroup<G>) {
-      // v exactly in the algebra: the Cayley conjugation takes (I − b)⁻¹ = ((I + b)⁻¹)ᴴ, true
-      // for a skew-Hermitian b only, and CG's v is skew-Hermitian only to rounding.
-      G::projectToAlgebra(v_);
-    }
+    // v exactly in the algebra: the matrix Cayley conjugation takes (I − b)⁻¹ = ((I + b)⁻¹)ᴴ,
+    // true for a skew-Hermitian b only, and CG's v is skew-Hermitian only to rounding.
+    G::projectToAlgebra(v_);
     double slope = dot(now_.gradient, v_);
     if (!(slope < 0)) {
       // CG's J is the derivative of the gradient field, symmetric only at a steady state (its
@@ -169,18 +163,12 @@ class OrbitNewton {
   };
 
   void evaluate(const Dual& mu, Evaluation& e) {
-    if constexpr (isDynamicGroup<G>) {
-      allocate(mu);
-      if (!B::sameShape(e.argument, mu)) {
-        for (Dual* m : {&e.argument, &e.xi, &e.gradient}) B::zeroLike(*m, mu);
-      }
-      system_.velocityInto(mu, e.argument, e.xi);
-      bracket(e.argument, e.xi, e.gradient);
-    } else {
-      e.argument = mu;
-      e.xi = system_.velocity(mu);
-      e.gradient = Algebra(G::adDual(e.xi, mu));
+    allocate(mu);
+    if (!B::sameShape(e.argument, mu)) {
+      for (Dual* m : {&e.argument, &e.xi, &e.gradient}) B::zeroLike(*m, mu);
     }
+    system_.velocityInto(mu, e.argument, e.xi);
+    system_.coadjointInto(e.xi, e.argument, product_, e.gradient);
     scale(-sigma_, e.gradient, e.gradient);
     const double size = norm(e.xi) * norm(e.argument);
     e.relative = size > 0 ? norm(e.gradient) / size : 0.0;
@@ -188,17 +176,11 @@ class OrbitNewton {
 
   // out = J v at e: −σ(ad*_ξ δμ + ad*_{δξ} μ), δμ = ad*_v μ, δξ = D²H(μ)[δμ].
   void hessianTimes(const Evaluation& e, const Algebra& v, Algebra& out) {
-    if constexpr (isDynamicGroup<G>) {
-      bracket(e.argument, v, moved_);  // ad*_v μ = [μ, v]
-      system_.velocityDerivativeInto(e.argument, moved_, product_, dxi_);
-      bracket(moved_, e.xi, out);
-      bracket(e.argument, dxi_, added_);
-      B::axpy(1.0, added_, out);
-    } else {
-      const Dual moved = G::adDual(v, e.argument);
-      const Algebra dxi = system_.hamiltonian().hessianTimes(e.argument, moved);
-      out = Algebra(G::adDual(e.xi, moved) + G::adDual(dxi, e.argument));
-    }
+    system_.coadjointInto(v, e.argument, product_, moved_);
+    system_.velocityDerivativeInto(e.argument, moved_, product_, dxi_);
+    system_.coadjointInto(e.xi, moved_, product_, out);
+    system_.coadjointInto(dxi_, e.argument, product_, added_);
+    B::axpy(1.0, added_, out);
     scale(-sigma_, out, out);
   }
 
@@ -207,12 +189,9 @@ class OrbitNewton {
   // movement (shift 1/τ) also at ‖res‖ ≤ (ρ/shift)‖∇f‖, ρ the first Rayleigh quotient of J:
   // v's error is then O(τ²ρ‖∇f‖), within the step's own O(h²).
   long direction(const Dual& mu, double shift, double radius) {
-    shift_ = shift;
     const Algebra& g = now_.gradient;
-    if constexpr (isDynamicGroup<G>) {
-      if (!preconditioner_.refresh(now_.argument, now_.xi, shift)) {
-        throw NonFiniteState("orbit newton", -1, NAN, NAN, B::describe(mu), "state");
-      }
+    if (!preconditioner_.refresh(now_.argument, now_.xi, shift)) {
+      throw NonFiniteState("orbit newton", -1, NAN, NAN, B::describe(mu), "state");
     }
     setZero(v_);
     scale(-1.0, g, res_);
@@ -299,121 +278,52 @@ class OrbitNewton {
     return std::nullopt;
   }
 
-  // An approximate inverse of J + shift_: OrbitPreconditioner on matrix groups; on the small
-  // groups the identity, or 1/shift_ for the minimizing movement (its first CG direction is
-  // then the explicit step −τ∇f).
-  void precondition(const Algebra& in, Algebra& out) {
-    if constexpr (isDynamicGroup<G>) {
-      preconditioner_.apply(in, out);
-    } else {
-      out = shift_ > 0 ? Algebra(in / shift_) : in;
-    }
-  }
+  // An approximate inverse of J + shift (OrbitPreconditionerFor).
+  void precondition(const Algebra& in, Algebra& out) { preconditioner_.apply(in, out); }
 
   // out = Ad*_{cay x} mu; false if it is not finite.
   bool retract(const Dual& mu, const Algebra& x, Dual& out) {
     try {
-      if constexpr (isDynamicGroup<G>) {
-        conjugation_.prepare(x);
-        B::copy(mu, out);
-        conjugation_.apply(out);
-        return B::allFinite(out);
-      } else {
-        out = G::cayTransport(x, Algebra::Zero().eval(), mu);
-        return out.allFinite();
-      }
+      conjugation_.prepare(x);
+      B::copy(mu, out);
+      conjugation_.apply(out);
+      return B::allFinite(out);
     } catch (const SolveFailure&) {
       return false;
     }
   }
 
-  // out = [a, b] = ab − (ab)ᴴ for skew-Hermitian (real: skew-symmetric) a, b: one product.
-  void bracket(const Dual& a, const Dual& b, Dual& out) {
-    B::multiply(a, b, product_);
-    B::copy(product_, out);
-    B::addAdjoint(-1.0, product_, out);
-  }
-
-  // Every matrix workspace of like's shape (and layout), once per shape.
+  // Every workspace of like's shape (and layout), once per shape.
   void allocate(const Dual& like) {
     if (B::sameShape(product_, like)) return;
     for (Dual* m : {&product_, &moved_, &dxi_, &added_, &trial_mu_}) B::zeroLike(*m, like);
     for (Algebra* m : {&v_, &x_, &res_, &z_, &p_, &jv_}) B::zeroLike(*m, like);
   }
 
-  // The vectors' arithmetic: Eigen's expressions on a small group's vectors, the matrix
-  // backend's operations on a matrix group's states (as in RungeKutta).
-  static void copy(const Algebra& x, Algebra& out) {
-    if constexpr (isDynamicGroup<G>) {
-      B::copy(x, out);
-    } else {
-      out = x;
-    }
-  }
-  static void setZero(Algebra& x) {
-    if constexpr (isDynamicGroup<G>) {
-      B::setZero(x);
-    } else {
-      x.setZero();
-    }
-  }
-  static void scale(double a, const Algebra& x, Algebra& out) {
-    if constexpr (isDynamicGroup<G>) {
-      B::scale(a, x, out);
-    } else {
-      out = a * x;
-    }
-  }
-  static void axpy(double a, const Algebra& x, Algebra& y) {
-    if constexpr (isDynamicGroup<G>) {
-      B::axpy(a, x, y);
-    } else {
-      y += a * x;
-    }
-  }
+  // The CG's arithmetic: the backend's (Eigen's expressions on a small group's vectors).
+  static void copy(const Algebra& x, Algebra& out) { B::copy(x, out); }
+  static void setZero(Algebra& x) { B::setZero(x); }
+  static void scale(double a, const Algebra& x, Algebra& out) { B::scale(a, x, out); }
+  static void axpy(double a, const Algebra& x, Algebra& y) { B::axpy(a, x, y); }
   static void sum(double a, const Algebra& x, double b, const Algebra& y, Algebra& out) {
-    if constexpr (isDynamicGroup<G>) {
-      B::sum(a, x, b, y, out);
-    } else {
-      out = a * x + b * y;
-    }
+    B::sum(a, x, b, y, out);
   }
   /// Re ⟨a, b⟩, the pairing of docs/reference/conventions.md §1.
-  static double dot(const Algebra& a, const Algebra& b) {
-    if constexpr (isDynamicGroup<G>) {
-      return B::innerProduct(a, b);
-    } else {
-      return std::real(a.conjugate().cwiseProduct(b).sum());
-    }
-  }
-  static double norm(const Algebra& a) {
-    if constexpr (isDynamicGroup<G>) {
-      return B::frobeniusNorm(a);
-    } else {
-      return a.norm();
-    }
-  }
-  static long unknowns(const Dual& mu) {
-    if constexpr (isDynamicGroup<G>) {
-      return static_cast<long>(B::globalSize(mu));
-    } else {
-      return static_cast<long>(mu.size());
-    }
-  }
+  static double dot(const Algebra& a, const Algebra& b) { return B::innerProduct(a, b); }
+  static double norm(const Algebra& a) { return B::frobeniusNorm(a); }
+  static long unknowns(const Dual& mu) { return static_cast<long>(B::globalSize(mu)); }
 
   const LiePoissonSystem<G>& system_;
   double sigma_;
   double radius_ = kFirstRadius;
   bool roundoff_ = false;  // the last step was accepted on r, its energy change below rounding
-  double shift_ = 0.0;     // of the last direction: 0 for the search, 1/τ for the movement
   bool evaluated_ = false;
   Evaluation now_, trial_;
   Dual trial_mu_;
   Algebra v_, x_, res_, z_, p_, jv_;
-  Dual product_, moved_, dxi_, added_;  // matrix groups' workspaces
-  struct Unused {};
-  std::conditional_t<isDynamicGroup<G>, OrbitPreconditioner<Dual>, Unused> preconditioner_;
-  std::conditional_t<isDynamicGroup<G>, MatrixCayleyConjugation<G>, Unused> conjugation_;
+  Dual product_, moved_, dxi_, added_;
+  OrbitPreconditionerFor<G> preconditioner_;
+  CayleyConjugationFor<G> conjugation_;
 };
 
 }  // namespace ddb

@@ -15,12 +15,14 @@
 // which every backend (every rank) has alike.
 #pragma once
 
+#include <ddb/core/group_traits.h>
 #include <ddb/core/matrix_backend.h>
 #include <ddb/core/skew_hermitian_eigenbasis.h>  // the dense backend's Eigenbasis
 
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace ddb {
 
@@ -61,5 +63,31 @@ class OrbitPreconditioner {
   typename MatrixBackend<Matrix>::Eigenbasis basis_;
   Eigen::VectorXd pi_;
 };
+
+/// The small groups' preconditioner: the identity for the search, 1/shift for the minimizing
+/// movement (its first CG direction is then the explicit step −τ∇f).
+template <class G>
+class FixedSizeOrbitPreconditioner {
+ public:
+  using Algebra = typename G::template Algebra<double>;
+  using Dual = typename G::template Dual<double>;
+
+  bool refresh(const Dual&, const Algebra&, double shift = 0.0) {
+    shift_ = shift;
+    return true;
+  }
+  void apply(const Algebra& in, Algebra& out) const {
+    out = shift_ > 0 ? Algebra(in / shift_) : in;
+  }
+
+ private:
+  double shift_ = 0.0;
+};
+
+/// OrbitNewton's preconditioner for G, chosen by its traits.
+template <class G>
+using OrbitPreconditionerFor =
+    std::conditional_t<isDynamicGroup<G>, OrbitPreconditioner<typename G::template Dual<double>>,
+                       FixedSizeOrbitPreconditioner<G>>;
 
 }  // namespace ddb
