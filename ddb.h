@@ -23,6 +23,7 @@
 #include <ddb/groups/son.h>
 #include <ddb/groups/sun.h>
 #include <ddb/integrators/drivers/flow_rate.h>
+#include <ddb/integrators/drivers/integrate.h>
 #include <ddb/integrators/drivers/relax.h>
 #include <ddb/integrators/drivers/run.h>
 #include <ddb/integrators/matrix_kernels/matrix_cayley_transport.h>

@@ -7,6 +7,7 @@
 
 #include <ddb/core/errors.h>
 #include <ddb/core/lie_poisson_system.h>
+#include <ddb/integrators/drivers/integrate.h>
 #include <ddb/integrators/methods/one_step_method.h>
 
 #include <algorithm>

@@ -1,8 +1,5 @@
-// OneStepMethod: the interface every integrator implements; takeStep(), the one way a loop
-// steps one (integrate() and Relaxation alike); and integrate(), which drives one over N steps and
-// shows an observer every state μ_k (the read-out, not a method's internal variables). A failed
-// step keeps the valid prefix: the observer has seen every state before it when the typed
-// SolveFailure propagates.
+// OneStepMethod: the interface every integrator implements; and takeStep(), the one way a loop
+// steps one (integrate() and Relaxation alike, in integrators/drivers/).
 #pragma once
 
 #include <ddb/core/binary_record.h>
@@ -12,7 +9,6 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <string>
-#include <vector>
 
 namespace ddb {
 
@@ -76,41 +72,9 @@ void takeStep(OneStepMethod<G>& method, typename G::template Dual<double>& mu, d
   B::flushSubnormals(mu);
 }
 
-/// Advances `steps` steps of size h from (t0, mu0); observer(k, t_k, mu_k) sees k = 0..steps.
-/// Throws SolveFailure with the failing step index, after the observer saw the states before it.
-template <class G, class Observer>
-void integrate(OneStepMethod<G>& method, const typename G::template Dual<double>& mu0, double t0,
-               double h, long steps, Observer&& observer) {
-  requireFiniteMatrix("mu0", mu0);
-  requireFinite("t0", t0);
-  requirePositive("h", h);
-  if (steps < 0) throwInvalid("steps", std::to_string(steps), "must be >= 0");
-  method.reset();
-  typename G::template Dual<double> mu = mu0;
-  observer(0L, t0, mu);
-  for (long k = 0; k < steps; ++k) {
-    const double t = t0 + static_cast<double>(k) * h;
-    try {
-      takeStep(method, mu, t, h);
-    } catch (const SolveFailure& failure) {
-      failure.rethrowAtStep(k, t, h);
-    }
-    observer(k + 1, t0 + static_cast<double>(k + 1) * h, mu);
-  }
-}
-
-/// The states of a trajectory, filled by integrate() through record().
-template <class G>
-struct Trajectory {
-  std::vector<double> times;
-  std::vector<typename G::template Dual<double>> states;
-
-  auto record() {
-    return [this](long, double t, const typename G::template Dual<double>& mu) {
-      times.push_back(t);
-      states.push_back(mu);
-    };
-  }
-};
-
 }  // namespace ddb
+
+// integrate() and Trajectory live in the drivers' layer since 0.3.0; this header includes them for
+// the programs that included it for them (docs/guide/getting-started.md at 0.2.0), until 0.4.0
+// (CHANGELOG, "Deprecated"). The one include of a higher layer that check_layers allows.
+#include <ddb/integrators/drivers/integrate.h>

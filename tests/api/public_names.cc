@@ -19,6 +19,7 @@
 #include <ddb/groups/son.h>
 #include <ddb/groups/sun.h>
 #include <ddb/integrators/drivers/energy_step_control.h>
+#include <ddb/integrators/drivers/integrate.h>
 #include <ddb/integrators/drivers/relax.h>
 #include <ddb/integrators/drivers/run.h>
 #include <ddb/integrators/drivers/steady_state_probe.h>
