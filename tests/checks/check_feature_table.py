@@ -5,9 +5,9 @@ The rows of kMethods (integrators/methods/method_table.h) give each method's gro
 whether it needs a Lagrangian or the metric α·I, its orders and whether it keeps the Casimirs;
 the systems below give their family, whether they have a Lagrangian and whether their metric is
 α·I. From these this script makes the table the README must hold between its two markers.
-A method that runs on a system is marked ✓, or, on the GPU, "built, not run": the CUDA backend
-is compiled and its host-side parts tested, but none of its device tests has run on a GPU yet
-(docs/results/gpu.md); a method that does not run there is marked —.
+A method that runs on a system is marked ✓, or, on the GPU, "built, not yet run on a GPU": the
+CUDA backend is compiled and its host-side parts tested, but none of its device tests has run on
+a GPU yet (docs/results/gpu.md); a method that does not run there is marked —.
 
     python3 tests/checks/check_feature_table.py <source tree>           check README.md
     python3 tests/checks/check_feature_table.py --print <source tree>   print the table
@@ -24,7 +24,7 @@ FAMILY = {"kFixedSizeGroups": 1, "kMatrixGroups": 2, "kBackendMatrixGroups": 4}
 # What a cell says when the method runs there: ✓, or BUILT_NOT_RUN where it is compiled for
 # that hardware but has never run on it.
 RUNS = "✓"
-BUILT_NOT_RUN = "built, not run"
+BUILT_NOT_RUN = "built, not yet run on a GPU"
 
 # (column, group family, has a Lagrangian, metric α·I, the mark of a method that runs there):
 # systems/*.h and systems/zeitlin_fluid_on_backend.h; the heavy top has no regular Lagrangian,
