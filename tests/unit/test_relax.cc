@@ -106,7 +106,8 @@ TEST(Relax, ScenarioBReachesTheLimitPointInClosedForm) {
   std::cout << "|M - M*| = " << (M - limit).norm() << " <= " << bound << "\n";
   EXPECT_LE((M - limit).norm(), bound);
   EXPECT_LE((M - limit).norm(), 1e-10);
-  // Against h = 0.1 fixed, which needs 2500 steps for 2.1e-10 (docs/guide/steady-states.md).
+  // Against h = 0.1 fixed, which needs 2500 steps for 2.1e-10 (docs/results/steady-states.md,
+  // "Scenario B").
   EXPECT_LT(run.last.k + run.steps_rejected, 250);
 }
 
@@ -123,7 +124,8 @@ TEST(Relax, ScenarioCReachesTheGreatCircle) {
 
 TEST(Relax, FluidStopsSteadyWithEveryAcceptedStepDissipatingOnTheOrbit) {
   // ddb-exp-exact: ddb-cay's fixed points at a given h are not steady (at N = 4 and h = 0.1
-  // it stalls at r = 6e-5; docs/guide/steady-states.md), so it would reach 1e-9 only at small h.
+  // it stalls: docs/results/steady-states.md, "ddb-cay's fixed points are not steady"), so it
+  // would reach 1e-9 only at small h.
   constexpr Eigen::Index kN = 4;
   for (const double alpha : {0.5, 50.0}) {
     SCOPED_TRACE("alpha = " + std::to_string(alpha));
