@@ -25,13 +25,15 @@ struct CudaPoissonSolver::Device {
   }
 };
 
-CudaPoissonSolver::CudaPoissonSolver(long n) : device_(std::make_unique<Device>()) {
+CudaPoissonSolver::CudaPoissonSolver(long n, double kappa_squared)
+    : device_(std::make_unique<Device>()) {
   if (n < 2) throwInvalid("N", std::to_string(n), "must be >= 2");
+  HoppeYauLaplacian::requireShift(kappa_squared);
   Device& d = *device_;
   d.n = n;
   d.sheared = CudaMatrix(skewed::width(n), n);
   std::vector<double> lower, inverse_pivot;
-  skewed::shearedFactors(n, lower, inverse_pivot);
+  skewed::shearedFactors(n, kappa_squared, lower, inverse_pivot);
   const std::size_t entries = lower.size();
   for (auto [host, device] : {std::pair{&lower, &d.lower}, {&inverse_pivot, &d.inverse_pivot}}) {
     checkCuda(cudaMalloc(device, sizeof(double) * entries), "cudaMalloc");

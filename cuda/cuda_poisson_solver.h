@@ -14,13 +14,14 @@ namespace ddb {
 
 class CudaPoissonSolver {
  public:
-  /// For N×N matrices, N >= 2 (InvalidArgument naming N otherwise).
-  explicit CudaPoissonSolver(long n);
+  /// For N×N matrices, N >= 2 (InvalidArgument naming N otherwise); the operator Δ_N − κ²
+  /// (κ² = 0: the Laplacian; HoppeYauLaplacian).
+  explicit CudaPoissonSolver(long n, double kappa_squared = 0.0);
   ~CudaPoissonSolver();
   CudaPoissonSolver(CudaPoissonSolver&&) noexcept;
   CudaPoissonSolver& operator=(CudaPoissonSolver&&) noexcept;
 
-  /// out = Δ⁻¹(W − tr(W)/N · I); out may be W. InvalidArgument if W is not N×N.
+  /// out = (Δ − κ²)⁻¹(W − tr(W)/N · I); out may be W. InvalidArgument if W is not N×N.
   void solve(const CudaMatrix& W, CudaMatrix& out);
 
   long size() const;

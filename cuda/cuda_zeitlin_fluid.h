@@ -5,6 +5,7 @@
 #pragma once
 
 #include <ddb/cuda/cuda_backend.h>
+#include <ddb/cuda/cuda_device.h>
 #include <ddb/cuda/cuda_poisson_solver.h>
 #include <ddb/groups/sun.h>
 #include <ddb/systems/zeitlin_fluid_on_backend.h>
@@ -19,6 +20,15 @@ using CudaSUN = SUNOn<CudaMatrix>;
 /// The fluid at resolution n with k♯ = α·Id, its Poisson factors on the device.
 inline std::shared_ptr<const LiePoissonSystem<CudaSUN>> makeCudaZeitlinFluid(long n, double alpha) {
   return makeZeitlinFluidOn<CudaMatrix>(CudaPoissonSolver(n), n, alpha);
+}
+
+/// ... on a rotating sphere and/or quasi-geostrophic (ZeitlinPhysics; InvalidArgument naming the
+/// parameter): states are absolute vorticities.
+inline std::shared_ptr<const LiePoissonSystem<CudaSUN>> makeCudaZeitlinFluid(
+    long n, double alpha, const ZeitlinPhysics& physics) {
+  physics.validate();
+  return makeZeitlinFluidOn<CudaMatrix>(CudaPoissonSolver(n, physics.kappaSquared()), n, alpha,
+                                        toDevice(zeitlinPlanetaryVorticity(n, physics.rotation)));
 }
 
 }  // namespace ddb

@@ -19,25 +19,24 @@ namespace ddb {
 
 class DistributedPoissonSolver {
  public:
-  explicit DistributedPoissonSolver(const BlockCyclicLayout& layout)
+  /// The solver of Δ_N − κ² (κ² = 0: the Laplacian; HoppeYauLaplacian) on `layout`.
+  explicit DistributedPoissonSolver(const BlockCyclicLayout& layout, double kappa_squared = 0.0)
       : n_(layout.size()), grid_(&layout.grid()), block_(layout.block()), redistribution_(layout) {
     if (n_ < 2) throwInvalid("N", std::to_string(n_), "must be >= 2");
+    HoppeYauLaplacian::requireShift(kappa_squared);
     const Eigen::Index entries = redistribution_.ownedEntries();
     diagonals_.resize(entries);
     lower_.resize(entries);
     inverse_pivot_.resize(entries);
-    Eigen::VectorXd diagonal, off;
     const auto& owned = redistribution_.diagonals();
     for (std::size_t d = 0; d < owned.size(); ++d) {
-      const int m = owned[d];
-      HoppeYauLaplacian::blockCoefficients(n_, m, diagonal, off);
       Eigen::VectorBlock<Eigen::VectorXd> lower = ownedSegment(lower_, d),
                                           inverse_pivot = ownedSegment(inverse_pivot_, d);
-      HoppeYauLaplacian::factorBlock(diagonal, off, m == 0, lower, inverse_pivot);
+      HoppeYauLaplacian::factorDiagonal(n_, owned[d], kappa_squared, lower, inverse_pivot);
     }
   }
 
-  /// out = Δ⁻¹(W − tr(W)/N · I); collective. out may be W; both have this solver's grid, N
+  /// out = (Δ − κ²)⁻¹(W − tr(W)/N · I); collective. out may be W; both have this solver's grid, N
   /// and block size.
   void solve(const DistributedMatrix& W, DistributedMatrix& out) {
     for (const DistributedMatrix* m : {&W, static_cast<const DistributedMatrix*>(&out)}) {

@@ -10,6 +10,7 @@
 #include <ddb/systems/zeitlin_fluid_on_backend.h>
 
 #include <memory>
+#include <utility>
 
 namespace ddb {
 
@@ -21,6 +22,19 @@ inline std::shared_ptr<const LiePoissonSystem<DistributedSUN>> makeDistributedZe
     const BlockCyclicLayout& layout, double alpha) {
   return makeZeitlinFluidOn<DistributedMatrix>(DistributedPoissonSolver(layout), layout.size(),
                                                alpha);
+}
+
+/// ... on a rotating sphere and/or quasi-geostrophic (ZeitlinPhysics; InvalidArgument naming the
+/// parameter, on every rank): states are absolute vorticities. Collective.
+inline std::shared_ptr<const LiePoissonSystem<DistributedSUN>> makeDistributedZeitlinFluid(
+    const BlockCyclicLayout& layout, double alpha, const ZeitlinPhysics& physics) {
+  physics.validate();
+  DistributedMatrix planetary(layout);
+  // F is the same formula on every rank; rank 0's copy is scattered.
+  planetary.scatterFrom(zeitlinPlanetaryVorticity(layout.size(), physics.rotation));
+  return makeZeitlinFluidOn<DistributedMatrix>(
+      DistributedPoissonSolver(layout, physics.kappaSquared()), layout.size(), alpha,
+      std::move(planetary));
 }
 
 }  // namespace ddb

@@ -23,7 +23,8 @@ namespace {
 /// The fluid: a System on SU(N) that keeps its Hamiltonian's type for the diagnostics.
 class ZeitlinFluid : public System {
  public:
-  ZeitlinFluid(Eigen::Index n, double alpha) : ZeitlinFluid(makeZeitlinFluid(checked(n), alpha)) {}
+  ZeitlinFluid(Eigen::Index n, double alpha, const ZeitlinPhysics& physics)
+      : ZeitlinFluid(makeZeitlinFluid(checked(n), alpha, physics)) {}
 
   const ZeitlinHamiltonian& hamiltonian() const { return hamiltonian_; }
   const ZeitlinDiagnostics& diagnostics() const { return diagnostics_; }
@@ -110,16 +111,34 @@ void bindZeitlin(py::module_& m) {
             return stateToArray<SUN>(
                 f.basis().matrix(vectorArgument("omega", omega, f.n() * f.n())));
           },
-          py::arg("omega"), "W = sum omega_lm T_lm: the inverse of omega_lm().");
+          py::arg("omega"), "W = sum omega_lm T_lm: the inverse of omega_lm().")
+      .def(
+          "planetary_vorticity",
+          [](const ZeitlinFluid& f) {
+            const ZeitlinHamiltonian& h = f.hamiltonian();
+            return stateToArray<SUN>(h.rotating() ? h.planetaryVorticity()
+                                                  : Eigen::MatrixXcd::Zero(f.n(), f.n()).eval());
+          },
+          "F = 2 Omega X3, the planetary vorticity (zero without rotation): the states are the "
+          "absolute vorticities Q = W + F (docs/reference/conventions.md §2).");
   m.def(
       "zeitlin",
-      [](py::handle n, py::handle alpha) {
+      [](py::handle n, py::handle alpha, py::handle rotation, py::handle deformation_radius) {
+        ZeitlinPhysics physics;
+        physics.rotation = realArgument("rotation", rotation);
+        if (!deformation_radius.is_none()) {
+          physics.deformation_radius = realArgument("deformation_radius", deformation_radius);
+        }
         return std::make_shared<ZeitlinFluid>(integerArgument<Eigen::Index>("N", n, 2, SUN::kMaxN),
-                                              realArgument("alpha", alpha));
+                                              realArgument("alpha", alpha), physics);
       },
-      py::arg("N"), py::arg("alpha"),
+      py::arg("N"), py::arg("alpha"), py::arg("rotation") = 0.0,
+      py::arg("deformation_radius") = py::none(),
       "Zeitlin's fluid at resolution N (2 <= N <= 4096) with double-bracket coefficient "
-      "alpha (any finite sign; alpha > 0 dissipates energy).");
+      "alpha (any finite sign; alpha > 0 dissipates energy), on a sphere rotating at "
+      "`rotation` (Omega; its states are absolute vorticities Q = W + F, "
+      "planetary_vorticity() is F) and quasi-geostrophic with `deformation_radius` L_d > 0 "
+      "(the stream matrix (Laplacian - 1/L_d^2)^-1 (Q - F); None: Euler).");
   m.def(
       "zeitlin_vorticity",
       [](py::handle kind_object, py::handle n_object, py::handle seed_object) {

@@ -7,6 +7,10 @@
 // apply and solve cost O(N²): the solve is one Thomas (LDLᵀ) sweep per diagonal on
 // factors computed once here; the blocks are negative definite except m = 0, which is
 // solved on the traceless part with one unknown pinned and the mean removed afterwards.
+// Constructed with κ² > 0 the operator is Δ_N − κ², quasi-geostrophy's Helmholtz operator
+// (κ = 1/deformation radius; docs/reference/conventions.md §2): every block is shifted by −κ²
+// and so negative definite, m = 0 included (nothing pinned); the trace is still removed, so the
+// solution of a traceless W is the traceless one.
 // Entry (i, j) follows (i−1, j−1) on its diagonal, so the factors are stored as N×N
 // matrices laid out like P and all diagonals are swept at once, column after column:
 // contiguous memory instead of a stride of N + 1 (the solve runs in every sweep of the
@@ -32,8 +36,11 @@ class HoppeYauLaplacian {
   using ConstDiagonalView = Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<>>;
 
  public:
-  explicit HoppeYauLaplacian(Eigen::Index n) : n_(n), blocks_(static_cast<std::size_t>(n)) {
+  /// Δ_N − κ² on N×N matrices (κ² = 0: the Laplacian).
+  explicit HoppeYauLaplacian(Eigen::Index n, double kappa_squared = 0.0)
+      : n_(n), kappa_squared_(kappa_squared), blocks_(static_cast<std::size_t>(n)) {
     if (n < 2) throwInvalid("N", std::to_string(n), "must be >= 2");
+    requireShift(kappa_squared);
     lower_.setZero(n, n);
     inverse_pivot_.setZero(n, n);
     for (Eigen::Index m = 0; m < n; ++m) {
@@ -41,10 +48,31 @@ class HoppeYauLaplacian {
       blockCoefficients(n, m, b.diagonal, b.off);
       // Entry k of diagonal m at (k, k + m) and of −m at (k + m, k): strides of N + 1.
       DiagonalView lower = onDiagonal(lower_, m), inverse_pivot = onDiagonal(inverse_pivot_, m);
-      factorBlock(b.diagonal, b.off, m == 0, lower, inverse_pivot);
+      factorDiagonal(n, m, kappa_squared, lower, inverse_pivot);
       onDiagonal(lower_, -m) = lower;
       onDiagonal(inverse_pivot_, -m) = inverse_pivot;
     }
+  }
+
+  /// Throws InvalidArgument unless κ² is finite and >= 0 (the parameter the user gave is the
+  /// deformation radius L_d, κ² = 1/L_d²).
+  static void requireShift(double kappa_squared) {
+    if (!(kappa_squared >= 0 && std::isfinite(kappa_squared))) {
+      throwInvalid("deformation_radius", "1/sqrt(" + formatValue(kappa_squared) + ")",
+                   "must be > 0 (infinite: no quasi-geostrophic shift)");
+    }
+  }
+
+  /// The LDLᵀ factors (factorBlock) of diagonal m's block of Δ_N − κ², sized N − |m|: the
+  /// one place the shift and the pinning are decided, for every backend's solver. The m = 0
+  /// block is singular only at κ² = 0, where its first unknown is pinned.
+  template <class Lower, class InversePivot>
+  static void factorDiagonal(Eigen::Index n, Eigen::Index m, double kappa_squared, Lower& lower,
+                             InversePivot& inverse_pivot) {
+    Eigen::VectorXd diagonal, off;
+    blockCoefficients(n, m, diagonal, off);
+    diagonal.array() -= kappa_squared;
+    factorBlock(diagonal, off, m == 0 && kappa_squared == 0.0, lower, inverse_pivot);
   }
 
   /// Diagonal m's tridiagonal block (the same for m and −m): its diagonal d_k and the
@@ -62,12 +90,12 @@ class HoppeYauLaplacian {
   }
 
   /// The LDLᵀ factors of a block, restricted to entries first … length − 1 (first = 1 for
-  /// m = 0, whose first unknown is pinned, else 0): lower(k) = off(k)/w_{k−1} and
+  /// `pinned`: the singular m = 0 block of Δ_N, else 0): lower(k) = off(k)/w_{k−1} and
   /// inverse_pivot(k) = 1/w_k, w_k = d_k − lower(k) off(k); entries before `first` get 0.
   template <class Lower, class InversePivot>
-  static void factorBlock(const Eigen::VectorXd& diagonal, const Eigen::VectorXd& off, bool zeroth,
+  static void factorBlock(const Eigen::VectorXd& diagonal, const Eigen::VectorXd& off, bool pinned,
                           Lower& lower, InversePivot& inverse_pivot) {
-    const Eigen::Index length = diagonal.size(), first = zeroth ? 1 : 0;
+    const Eigen::Index length = diagonal.size(), first = pinned ? 1 : 0;
     double w = 0.0;
     for (Eigen::Index k = 0; k < length; ++k) {
       if (k < first) {
@@ -97,16 +125,19 @@ class HoppeYauLaplacian {
   }
 
   Eigen::Index size() const { return n_; }
+  /// κ², the shift of Δ_N − κ² (0: the Laplacian).
+  double kappaSquared() const { return kappa_squared_; }
 
-  /// The tridiagonal block of diagonal m (and −m): its diagonal and its sub-diagonal
-  /// (entry k couples k and k+1), for eigen-decompositions (spherical harmonics).
+  /// The tridiagonal block of Δ_N's diagonal m (and −m), unshifted: its diagonal and its
+  /// sub-diagonal (entry k couples k and k+1), for eigen-decompositions (spherical harmonics,
+  /// Δ_N's eigenvectors and so Δ_N − κ²'s).
   void block(Eigen::Index m, Eigen::VectorXd& diagonal, Eigen::VectorXd& subdiagonal) const {
     const Block& b = block(m);
     diagonal = b.diagonal;
     subdiagonal = b.off.tail(b.off.size() - 1);
   }
 
-  /// out = Δ P (out must not alias P).
+  /// out = (Δ − κ²) P (out must not alias P).
   template <class X>
   void apply(const X& P, X& out) const {
     requireSize(P);
@@ -115,7 +146,7 @@ class HoppeYauLaplacian {
       const Block& b = block(m);
       const Eigen::Index length = n_ - std::abs(m);
       for (Eigen::Index k = 0; k < length; ++k) {
-        auto value = b.diagonal(k) * at(P, m, k);
+        auto value = (b.diagonal(k) - kappa_squared_) * at(P, m, k);
         if (k > 0) value += b.off(k) * at(P, m, k - 1);
         if (k + 1 < length) value += b.off(k + 1) * at(P, m, k + 1);
         at(out, m, k) = value;
@@ -123,7 +154,7 @@ class HoppeYauLaplacian {
     }
   }
 
-  /// out = Δ⁻¹ (W − tr(W)/N · I), the traceless solution (Poisson solve, O(N²)).
+  /// out = (Δ − κ²)⁻¹ (W − tr(W)/N · I), the traceless solution (Poisson solve, O(N²)).
   /// out may alias W. Bands of diagonals, each swept alone, on the library's threads
   /// (core/thread_pool.h): the same operations on every entry whatever their number.
   template <class X>
@@ -187,7 +218,7 @@ class HoppeYauLaplacian {
       for (Eigen::Index i = top; i <= bottom; ++i) y[i] -= lower[i] * previous[i - 1];
     }
     // Back substitution D Lᵀ x = y: x(i, j) = y(i, j)/w(i, j) − lower(i + 1, j + 1) x(i + 1, j +
-    // 1). The pinned unknown of m = 0 has 1/w = 0 and lower(1, 1) = 0, so it comes out 0.
+    // 1). The pinned unknown of m = 0 (κ² = 0) has 1/w = 0 and lower(1, 1) = 0, so it comes out 0.
     for (Eigen::Index j = n - 1; j >= 0; --j) {
       auto* x = &out(0, j);
       const double* inverse_pivot = &inverse_pivot_(0, j);
@@ -245,7 +276,8 @@ class HoppeYauLaplacian {
   }
 
   Eigen::Index n_;
-  std::vector<Block> blocks_;
+  double kappa_squared_;
+  std::vector<Block> blocks_;  // Δ_N's, unshifted
   // lower(k) and 1/w_k of entry k of diagonal m, stored at that entry's (i, j).
   Eigen::MatrixXd lower_, inverse_pivot_;
 };

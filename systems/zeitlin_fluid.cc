@@ -4,7 +4,12 @@
 namespace ddb {
 
 std::shared_ptr<const LiePoissonSystem<SUN>> makeZeitlinFluid(Eigen::Index n, double alpha) {
-  return makeLiePoissonSystem("zeitlin", std::make_shared<const ZeitlinHamiltonian>(n),
+  return makeZeitlinFluid(n, alpha, ZeitlinPhysics{});
+}
+
+std::shared_ptr<const LiePoissonSystem<SUN>> makeZeitlinFluid(Eigen::Index n, double alpha,
+                                                              const ZeitlinPhysics& physics) {
+  return makeLiePoissonSystem("zeitlin", std::make_shared<const ZeitlinHamiltonian>(n, physics),
                               std::make_shared<const ScaledIdentityMetric<SUN>>(alpha));
 }
 

@@ -5,7 +5,9 @@
 // with energy E = Re tr(WP)/(2N) >= 0, enstrophy Z = ‖W‖_F²/(2N) (constant), and the
 // spectrum of W as Casimirs. As a Lie–Poisson system with the pairing Re tr(AᴴB):
 // μ = W, H(W) = Re tr(WP)/(2ħ) = N·E/ħ, ξ = ∂H/∂μ = −P/ħ, ad*_ξ μ = [μ, ξ] and
-// k♯ = α·Id (ScaledIdentityMetric), so φ = α[p, ξ] = (α/ħ)[P(p), p].
+// k♯ = α·Id (ScaledIdentityMetric), so φ = α[p, ξ] = (α/ħ)[P(p), p]. On a rotating sphere and in
+// quasi-geostrophic flow (ZeitlinPhysics) the state is the absolute vorticity Q = W + F and
+// P = (Δ_N − κ²)⁻¹(Q − F) (systems/zeitlin_hamiltonian.h); the rest reads the same with Q for W.
 #pragma once
 
 #include <ddb/core/dissipation_metric.h>
@@ -13,84 +15,60 @@
 #include <ddb/core/matrix_backend.h>
 #include <ddb/groups/sun.h>
 #include <ddb/systems/hoppe_yau_laplacian.h>
+#include <ddb/systems/zeitlin_hamiltonian.h>
 
 #include <cmath>
 #include <memory>
 
 namespace ddb {
 
-/// ħ = 2/√(N² − 1).
-inline double zeitlinHbar(Eigen::Index n) { return 2.0 / std::sqrt(double(n * n - 1)); }
-
-/// ξ = ∂H/∂W = −Δ⁻¹W/ħ given a Poisson solver of W's layout (dense: HoppeYauLaplacian,
-/// distributed: DistributedPoissonSolver); the Hessian applies the same map.
-template <class Laplacian, class X>
-void zeitlinVelocityInto(Laplacian& laplacian, double hbar, const X& W, X& out) {
-  laplacian.solve(W, out);
-  MatrixBackend<X>::scale(-1.0 / hbar, out, out);
-}
-
-/// H(W) = Re tr(W Δ⁻¹W)/(2ħ); its gradient and Hessian are Poisson solves (O(N²)).
-class ZeitlinHamiltonian final : public Hamiltonian<SUN> {
+/// Zeitlin's Hamiltonian on dense matrices (ZeitlinHamiltonianOf, systems/zeitlin_hamiltonian.h),
+/// with the dense solver's own accessors.
+class ZeitlinHamiltonian final : public ZeitlinHamiltonianOf<SUN, HoppeYauLaplacian> {
  public:
   using Matrix = Eigen::MatrixXcd;
 
-  explicit ZeitlinHamiltonian(Eigen::Index n) : laplacian_(n), hbar_(zeitlinHbar(n)) {}
+  /// At resolution N on a resting sphere, or with `physics` (rotation, deformation radius;
+  /// InvalidArgument naming the parameter if it is out of range).
+  explicit ZeitlinHamiltonian(Eigen::Index n, const ZeitlinPhysics& physics = {})
+      : ZeitlinHamiltonianOf(HoppeYauLaplacian(n, checked(physics).kappaSquared()), n,
+                             zeitlinPlanetaryVorticity(n, physics.rotation)) {}
 
-  const HoppeYauLaplacian& laplacian() const { return laplacian_; }
-  double hbar() const { return hbar_; }
+  /// The Poisson solver: Δ_N − κ² (κ = 0: the Laplacian).
+  const HoppeYauLaplacian& laplacian() const { return poisson(); }
 
-  /// P = Δ⁻¹ of the traceless part of W.
-  Matrix streamMatrix(const Matrix& W) const {
-    Matrix P(W.rows(), W.cols());
-    laplacian_.solve(W, P);
+  /// ψ = (Δ − κ²)⁻¹ of the traceless part of Q − F (P = Δ⁻¹W on a resting sphere).
+  Matrix streamMatrix(const Matrix& Q) const {
+    Matrix P(Q.rows(), Q.cols());
+    streamInto(Q, P);
     return P;
   }
 
-  double value(const Matrix& W) const override {
-    // The stream matrix in a per-thread workspace: the line searches of OrbitNewton evaluate
-    // H inside a step, and a step does not allocate (tests/unit/test_allocations.cc).
-    thread_local Matrix P;
-    P.resize(W.rows(), W.cols());
-    laplacian_.solve(W, P);
-    return (W.cwiseProduct(P.transpose())).sum().real() / (2.0 * hbar_);
-  }
-  /// ξ = −P/ħ; P uses the traceless part of W (the Legendre unknown lives in u(N)).
-  Matrix gradient(const Matrix& W) const override {
-    Matrix out(W.rows(), W.cols());
-    gradientInto(W, out);
-    return out;
-  }
-  Matrix hessianTimes(const Matrix& W, const Matrix& V) const override {
-    Matrix out(W.rows(), W.cols());
-    hessianTimesInto(W, V, out);
-    return out;
-  }
-  void gradientInto(const Matrix& W, Matrix& out) const override {
-    zeitlinVelocityInto(laplacian_, hbar_, W, out);
-  }
-  void hessianTimesInto(const Matrix&, const Matrix& V, Matrix& out) const override {
-    zeitlinVelocityInto(laplacian_, hbar_, V, out);
-  }
-
  private:
-  HoppeYauLaplacian laplacian_;
-  double hbar_;
+  static const ZeitlinPhysics& checked(const ZeitlinPhysics& physics) {
+    physics.validate();
+    return physics;
+  }
 };
 
-/// The fluid's diagnostics, in its own units (E, Z as in the header comment).
+/// The fluid's diagnostics, in its own units (E, Z as in the header comment), of the state Q
+/// (the vorticity W on a resting sphere, the absolute vorticity W + F on a rotating one).
 class ZeitlinDiagnostics {
  public:
   using Matrix = Eigen::MatrixXcd;
   explicit ZeitlinDiagnostics(const ZeitlinHamiltonian& hamiltonian) : h_(hamiltonian) {}
 
-  /// E = ħ H / N (H = Re tr(WP)/(2ħ), the system's Hamiltonian).
-  double energy(const Matrix& W) const { return h_.value(W) * h_.hbar() / double(W.rows()); }
-  double enstrophy(const Matrix& W) const { return W.squaredNorm() / (2.0 * W.rows()); }
-  /// ‖[P, W]‖_F: zero exactly at steady states of the Euler flow.
-  double commutatorNorm(const Matrix& W) const {
-    const Matrix P = h_.streamMatrix(W);
-    return (P * W - W * P).norm();
+  /// E = ħ H / N (H = Re tr((Q − F)ψ)/(2ħ), the system's Hamiltonian).
+  double energy(const Matrix& Q) const { return h_.value(Q) * h_.hbar() / double(Q.rows()); }
+  /// Z = ‖W‖²_F/(2N) of the relative vorticity W = Q − F.
+  double enstrophy(const Matrix& Q) const {
+    Matrix workspace;
+    return h_.relativeVorticity(Q, workspace).squaredNorm() / (2.0 * Q.rows());
+  }
+  /// ‖[ψ, Q]‖_F: zero exactly at steady states of the Euler flow.
+  double commutatorNorm(const Matrix& Q) const {
+    const Matrix P = h_.streamMatrix(Q);
+    return (P * Q - Q * P).norm();
   }
 
  private:
@@ -99,5 +77,9 @@ class ZeitlinDiagnostics {
 
 /// Zeitlin's fluid at resolution N with double-bracket coefficient α (any finite sign).
 std::shared_ptr<const LiePoissonSystem<SUN>> makeZeitlinFluid(Eigen::Index n, double alpha);
+/// ... on a rotating sphere and/or quasi-geostrophic (ZeitlinPhysics): its states are absolute
+/// vorticities Q = W + F.
+std::shared_ptr<const LiePoissonSystem<SUN>> makeZeitlinFluid(Eigen::Index n, double alpha,
+                                                              const ZeitlinPhysics& physics);
 
 }  // namespace ddb

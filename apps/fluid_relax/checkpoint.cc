@@ -18,9 +18,11 @@ namespace ddb::fluid {
 namespace {
 
 // The layout's version: a checkpoint of another layout is refused, not misread. Layout 3
-// added history.csv's hash; a checkpoint of layout 2 is still read (without that check),
-// so that a run begun by an earlier build resumes.
-constexpr std::int32_t kLayout = 3;
+// added history.csv's hash, layout 4 the fluid's physics (--rotation, --deformation-radius); a
+// checkpoint of layout 2 or 3 is still read (without the hash, or on a resting sphere), so that
+// a run begun by an earlier build resumes.
+constexpr std::int32_t kLayout = 4;
+constexpr std::int32_t kLayoutWithoutPhysics = 3;
 constexpr std::int32_t kLayoutWithoutDigest = 2;
 constexpr const char* kTag = "fluid-relax checkpoint";
 
@@ -38,9 +40,12 @@ void putOptions(BinaryRecordWriter& out, const Options& o) {
   out.put(o.newton);
   out.put(o.h5);
   out.put(o.animate);
+  out.put(o.rotation);
+  out.put(o.deformation_radius);
 }
 
-void getOptions(BinaryRecordReader& in, Options& o) {
+// `physics`: the record has the physics' flags (layout 4 and the run definition).
+void getOptions(BinaryRecordReader& in, Options& o, bool physics) {
   in.expectTag("options");
   in.get(o.n);
   in.get(o.steps);
@@ -54,6 +59,10 @@ void getOptions(BinaryRecordReader& in, Options& o) {
   in.get(o.newton);
   in.get(o.h5);
   in.get(o.animate);
+  if (physics) {
+    in.get(o.rotation);
+    in.get(o.deformation_radius);
+  }
   // What a command line could not have given (a record altered and its checksum made anew).
   if (o.every < 1 || o.steps < 0 || o.steps > kMaxSteps) {
     throw CorruptRecord("options out of their domain");
@@ -91,9 +100,11 @@ void putSettingsBesidesW0(BinaryRecordWriter& out, const Settings& s) {
   out.put(s.relax.control.tolerance);
   out.put(s.relax.newton);
   out.put(s.init);
+  out.put(s.physics.rotation);
+  out.put(s.physics.deformation_radius);
 }
 
-void getSettingsBesidesW0(BinaryRecordReader& in, Settings& s) {
+void getSettingsBesidesW0(BinaryRecordReader& in, Settings& s, bool physics) {
   in.get(s.alpha);
   in.get(s.h);
   in.get(s.default_h);
@@ -105,11 +116,16 @@ void getSettingsBesidesW0(BinaryRecordReader& in, Settings& s) {
   in.get(s.relax.control.tolerance);
   in.get(s.relax.newton);
   in.get(s.init);
+  if (physics) {
+    in.get(s.physics.rotation);
+    in.get(s.physics.deformation_radius);
+  }
   const bool in_domain = std::isfinite(s.alpha) && s.h > 0 && std::isfinite(s.h) && s.steps >= 1 &&
                          s.steps <= kMaxSteps && s.relax.max_steps >= 1 &&
                          s.relax.max_steps <= kMaxSteps && s.relax.tolerance >= 0 &&
                          s.relax.tolerance < 1 && !(s.relax.t_end <= 0) &&
-                         s.relax.control.tolerance > 0 && s.relax.control.tolerance < 1;
+                         s.relax.control.tolerance > 0 && s.relax.control.tolerance < 1 &&
+                         std::isfinite(s.physics.rotation) && s.physics.deformation_radius > 0;
   if (!in_domain) throw CorruptRecord("settings out of their domain");
 }
 
@@ -119,10 +135,10 @@ void putSettings(BinaryRecordWriter& out, const Settings& s) {
   putSettingsBesidesW0(out, s);
 }
 
-void getSettings(BinaryRecordReader& in, Settings& s) {
+void getSettings(BinaryRecordReader& in, Settings& s, bool physics) {
   in.expectTag("settings");
   in.get(s.W0);
-  getSettingsBesidesW0(in, s);
+  getSettingsBesidesW0(in, s, physics);
   if (s.W0.rows() < 2 || s.W0.rows() > SUN::kMaxN || s.W0.rows() != s.W0.cols()) {
     throw CorruptRecord("settings out of their domain");
   }
@@ -151,13 +167,14 @@ Checkpoint parseCheckpoint(const std::string& dir, std::string bytes) {
     BinaryRecordReader in = BinaryRecordReader::unseal(std::move(bytes));
     in.expectTag(kTag);
     const auto layout = in.get<std::int32_t>();
-    if (layout != kLayout && layout != kLayoutWithoutDigest) {
+    if (layout != kLayout && layout != kLayoutWithoutPhysics && layout != kLayoutWithoutDigest) {
       throw CorruptRecord("layout " + std::to_string(layout) + ", this build reads " +
                           std::to_string(kLayout));
     }
-    getOptions(in, c.options);
+    const bool physics = layout == kLayout;
+    getOptions(in, c.options, physics);
     getGivenFlags(in, c.given);
-    getSettings(in, c.settings);
+    getSettings(in, c.settings, physics);
     in.expectTag("tally");
     in.get(c.tally.drift);
     in.get(c.tally.drift_max);
@@ -167,7 +184,7 @@ Checkpoint parseCheckpoint(const std::string& dir, std::string bytes) {
     in.expectTag("files");
     in.get(c.files.history_bytes);
     in.get(c.files.h5_frames);
-    if (layout == kLayout) c.files.history_digest = in.get<std::uint64_t>();
+    if (layout != kLayoutWithoutDigest) c.files.history_digest = in.get<std::uint64_t>();
     if (c.files.h5_frames < 0 || (c.files.h5_frames > 0 && !(c.options.h5 || c.options.animate))) {
       throw CorruptRecord("files out of their domain");
     }
@@ -224,9 +241,9 @@ void putRunDefinition(BinaryRecordWriter& out, const Options& o, const GivenFlag
 }
 
 void getRunDefinition(BinaryRecordReader& in, Options& o, GivenFlags& given, Settings& s) {
-  getOptions(in, o);
+  getOptions(in, o, true);
   getGivenFlags(in, given);
-  getSettingsBesidesW0(in, s);
+  getSettingsBesidesW0(in, s, true);
 }
 
 void writeCheckpoint(const std::filesystem::path& out, const BinaryRecordWriter& record) {

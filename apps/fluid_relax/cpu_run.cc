@@ -7,7 +7,7 @@ namespace ddb::fluid {
 
 int relaxOnCpu(const Options& o, const Settings& s, const GivenFlags& given, Checkpoint* resume,
                std::optional<app::RunFolderLock>& lock) {
-  CpuPlacement where(s.W0.rows(), s.alpha);
+  CpuPlacement where(s.W0.rows(), s.alpha, s.physics);
   return runFluidRelaxation(where, o, s, given, resume, lock);
 }
 

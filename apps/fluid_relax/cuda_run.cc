@@ -19,10 +19,10 @@ class CudaPlacement : public OneProcess {
   using State = CudaMatrix;
   static constexpr bool kSpectrumEveryState = false;
 
-  CudaPlacement(Eigen::Index n, double alpha)
+  CudaPlacement(Eigen::Index n, double alpha, const ZeitlinPhysics& physics)
       : OneProcess(n),
-        fluid_(makeCudaZeitlinFluid(n, alpha)),
-        host_fluid_(makeZeitlinFluid(n, alpha)) {}
+        fluid_(makeCudaZeitlinFluid(n, alpha, physics)),
+        host_fluid_(makeZeitlinFluid(n, alpha, physics)) {}
 
   const std::shared_ptr<const LiePoissonSystem<CudaSUN>>& system() const { return fluid_; }
   const std::shared_ptr<const LiePoissonSystem<SUN>>& hostFluid() const { return host_fluid_; }
@@ -44,7 +44,7 @@ class CudaPlacement : public OneProcess {
 
 int relaxOnCuda(const Options& o, const Settings& s, const GivenFlags& given, Checkpoint* resume,
                 std::optional<app::RunFolderLock>& lock) {
-  CudaPlacement where(s.W0.rows(), s.alpha);
+  CudaPlacement where(s.W0.rows(), s.alpha, s.physics);
   return runFluidRelaxation(where, o, s, given, resume, lock);
 }
 

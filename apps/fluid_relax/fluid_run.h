@@ -82,7 +82,9 @@ int runFluidRelaxation(Placement& where, const Options& o, const Settings& s,
   const bool newton = s.relax.newton;
   const std::string method_name = newton ? "newton" : o.method;
   const auto& system = where.system();
-  const State W0 = where.initialState(s.W0);
+  // The state is the absolute vorticity Q = W + F (W itself on a resting sphere).
+  const Matrix Q0 = s.initialState();
+  const State W0 = where.initialState(Q0);
   // The library's checks of the run (InvalidArgument) are bad input, on every process alike.
   std::unique_ptr<OneStepMethod<G>> method;  // none for a Newton search
   std::optional<Relaxation<G>> relaxing;
@@ -125,7 +127,7 @@ int runFluidRelaxation(Placement& where, const Options& o, const Settings& s,
   std::optional<app::SpectrumDrift<SUN>> spectrumDrift;
   where.onWriter([&] {
     files.emplace(o, s, *where.hostFluid(), resume);
-    spectrumDrift.emplace(s.W0);
+    spectrumDrift.emplace(Q0);
   });
   if (resume != nullptr) spdlog::info("resuming {} at step {}, t = {}", s.out.string(), at.k, at.t);
   const std::string init_text = s.init + " init" + (s.init == "file" ? " " + o.init_file : "");
@@ -255,10 +257,12 @@ int runFluidRelaxation(Placement& where, const Options& o, const Settings& s,
     where.addToSummary(*summary);
     // A failed run writes no final state: W_final.csv and omega_final.csv would claim a time
     // the run did not reach (docs/reference/command-lines-and-files.md).
+    // The relative vorticity W = Q − F, as --init-file reads it.
     if (result.ok()) {
-      writeMatrixCsv(s.out / "W_final.csv", result.final);
+      const Matrix W_final = result.final - (Q0 - s.W0);
+      writeMatrixCsv(s.out / "W_final.csv", W_final);
       writeOmegaCsv(s.out / "omega_initial.csv", files->basis(), s.W0);
-      writeOmegaCsv(s.out / "omega_final.csv", files->basis(), result.final);
+      writeOmegaCsv(s.out / "omega_final.csv", files->basis(), W_final);
     }
     app::writeJsonFile(s.out / "summary.json", *summary);
   });
@@ -287,8 +291,8 @@ int runFluidRelaxation(Placement& where, const Options& o, const Settings& s,
     spdlog::info(
         "{} at step {}, t = {} ({} rejected): E {} -> {}, |[P,W]| {} -> {}, r {:.3g}, spectrum "
         "drift <= {:.2e}, {:.3g} s; wrote {}",
-        relaxStopName(result.stop), at.k, at.t, result.steps_rejected, diagnostics.energy(s.W0),
-        diagnostics.energy(result.final), diagnostics.commutatorNorm(s.W0),
+        relaxStopName(result.stop), at.k, at.t, result.steps_rejected, diagnostics.energy(Q0),
+        diagnostics.energy(result.final), diagnostics.commutatorNorm(Q0),
         (*summary)["commutator_final"].template get<double>(),
         (*summary)["residual_final"].template get<double>(), tally.drift_max, runtime_s,
         s.out.string());

@@ -52,7 +52,12 @@ void requireRepresentableStep(const CLI::App& cli, const Options& o, const Setti
 /// the default α would give a normal step, else the initial vorticity.
 double defaultStep(const Options& o, const Settings& s) {
   const auto normal = [](double h) { return h >= std::numeric_limits<double>::min(); };
-  const double h = zeitlinDefaultStep(s.W0, s.alpha);
+  double h = zeitlinDefaultStep(s.W0, s.alpha);
+  // On a rotating sphere also 0.02/|Ω|: fifty steps per radian of the fastest Rossby–Haurwitz
+  // wave, whose angular frequency m·2Ω/(l(l + 1)) is at most |Ω| (l = m = 1).
+  if (s.physics.rotation != 0.0) {
+    h = std::min(h, kZeitlinContractionRate / std::abs(s.physics.rotation));
+  }
   if (normal(h)) return h;
   const std::string why = fmt::format(
       "the default step min({} hbar/|P0|_2, {} hbar/(|alpha||W0|_2^2)) = {:.3g} underflows; "
@@ -93,11 +98,26 @@ void readRelaxOptions(const CLI::App& cli, const Options& o, Settings& s) {
   }
 }
 
+/// --rotation (finite) and --deformation-radius (> 0, finite) into s.physics.
+void readPhysics(const Options& o, Settings& s) {
+  s.physics.rotation = app::parseNumber("--rotation", o.rotation, o.rotation);
+  if (!o.deformation_radius.empty()) {
+    const double radius =
+        app::parseNumber("--deformation-radius", o.deformation_radius, o.deformation_radius);
+    if (!(radius > 0 && std::isfinite(radius))) {
+      app::usageError("--deformation-radius", o.deformation_radius,
+                      "must be finite and > 0 (leave it out for Euler flow)");
+    }
+    s.physics.deformation_radius = radius;
+  }
+}
+
 /// The text of a run-defining flag that the run took by default ("" if it has none).
 std::string defaultText(const Checkpoint& c, const std::string& flag) {
   const Options& o = c.options;
   if (flag == "--n") return std::to_string(o.n);
   if (flag == "--alpha") return o.alpha;
+  if (flag == "--rotation") return o.rotation;
   if (flag == "--method") return o.method;
   if (flag == "--init") return o.init;
   if (flag == "--every") return std::to_string(o.every);
@@ -111,6 +131,7 @@ Settings settings(const CLI::App& cli, const Options& o, Eigen::Index max_n) {
   Settings s;
   app::requireChoice("--method", o.method, app::namesOf(fluidMethods()));
   s.alpha = app::parseNumber("--alpha", o.alpha, o.alpha);
+  readPhysics(o, s);
   const bool by_steps = cli.count("--steps") > 0, by_time = cli.count("--t-end") > 0;
   if (by_steps == by_time) {
     throw app::UsageError(std::string("--steps, --t-end: give exactly one of them (") +

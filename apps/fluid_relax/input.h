@@ -4,6 +4,7 @@
 #pragma once
 
 #include <ddb/integrators/drivers/relax.h>
+#include <ddb/systems/zeitlin_hamiltonian.h>
 
 #include <CLI/CLI.hpp>
 #include <Eigen/Core>
@@ -18,8 +19,9 @@ using Matrix = Eigen::MatrixXcd;
 
 /// Everything the run needs, validated.
 struct Settings {
-  Matrix W0;
+  Matrix W0;  // the relative vorticity
   double alpha = 0.0, h = 0.0;
+  ZeitlinPhysics physics;  // --rotation, --deformation-radius
   bool default_h = false;
   long steps = 0;
   /// When relax() stops: --until-steady, the cap (--steps, or --t-end's time with
@@ -27,6 +29,13 @@ struct Settings {
   RelaxOptions relax;
   std::string init;  // random, l1, zonal or file
   std::filesystem::path out;
+
+  /// The run's first state: the absolute vorticity W0 + F (W0 itself without rotation, and on
+  /// fluid-relax-mpi's ranks but rank 0, which hold no W0).
+  Matrix initialState() const {
+    if (physics.rotation == 0.0 || W0.size() == 0) return W0;
+    return W0 + zeitlinPlanetaryVorticity(W0.rows(), physics.rotation);
+  }
 };
 
 /// Every check of the input (docs/reference/bad-inputs.md) in the order the messages name them:

@@ -62,9 +62,9 @@ class CpuPlacement : public OneProcess {
   using State = Matrix;
   static constexpr bool kSpectrumEveryState = true;
 
-  CpuPlacement(Eigen::Index n, double alpha)
+  CpuPlacement(Eigen::Index n, double alpha, const ZeitlinPhysics& physics)
       : OneProcess(n),
-        fluid_(makeZeitlinFluid(n, alpha)),
+        fluid_(makeZeitlinFluid(n, alpha, physics)),
         diagnostics_(dynamic_cast<const ZeitlinHamiltonian&>(fluid_->hamiltonian())) {}
 
   const std::shared_ptr<const LiePoissonSystem<SUN>>& system() const { return fluid_; }

@@ -28,10 +28,20 @@ void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n) {
   cli.add_option("--alpha", o.alpha,
                  "double-bracket coefficient (> 0 relaxes to lower energy, < 0 raises it)")
       ->capture_default_str();
+  cli.add_option("--rotation", o.rotation,
+                 "the sphere's angular velocity Omega (planetary vorticity 2 Omega cos(theta)): "
+                 "the states are absolute vorticities W + F, history.csv's and fluid.hdf5's the "
+                 "relative W (docs/guide/matrix-groups-and-the-fluid.md)")
+      ->capture_default_str();
+  cli.add_option("--deformation-radius", o.deformation_radius,
+                 "quasi-geostrophic flow with deformation radius L_d > 0 (in sphere radii): the "
+                 "stream matrix (Laplacian - 1/L_d^2)^-1 (W); default none (Euler)");
   cli.add_option("--h", o.h,
                  "step size (default min(" + app::number(kZeitlinContractionRate) +
                      " hbar/||P0||_2, " + app::number(kZeitlinStiffness) +
-                     " hbar/(|alpha| ||W0||_2^2)), P0 the initial stream matrix; recorded in "
+                     " hbar/(|alpha| ||W0||_2^2)" + ", and " +
+                     app::number(kZeitlinContractionRate) +
+                     "/|Omega| with --rotation), P0 the initial stream matrix; recorded in "
                      "summary.json)");
   cli.add_option("--steps", o.steps, "number of steps (exactly one of --steps and --t-end)")
       ->check(app::fitsIn<long>());

@@ -34,6 +34,9 @@ struct Options {
   long n = 32, steps = 0, every = 1;
   std::uint64_t seed = 1;
   std::string alpha = "0.5", h, t_end, init = "random", init_file, method = "ddb-cay";
+  /// The sphere's rotation Ω and quasi-geostrophy's deformation radius (ZeitlinPhysics; empty
+  /// radius: none, Euler).
+  std::string rotation = "0", deformation_radius;
   std::string out = "results-fluid";
   app::RelaxFlags relax;      // --until-steady, --adaptive, --adaptive-tol
   bool newton = false;        // --newton: OrbitNewton's search instead of steps

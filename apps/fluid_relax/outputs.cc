@@ -52,12 +52,16 @@ HistoryFiles::HistoryFiles(const Options& o, const Settings& s, const LiePoisson
   }
 }
 
-void HistoryFiles::write(long k, double t, double h, const Eigen::MatrixXcd& W, double drift) {
-  probe_.evaluate(W);
-  const double energy = diagnostics_.energy(W), enstrophy = diagnostics_.enstrophy(W),
-               commutator = diagnostics_.commutatorNorm(W);
+void HistoryFiles::write(long k, double t, double h, const Eigen::MatrixXcd& Q, double drift) {
+  probe_.evaluate(Q);
+  const double energy = diagnostics_.energy(Q), enstrophy = diagnostics_.enstrophy(Q),
+               commutator = diagnostics_.commutatorNorm(Q);
   csv_->write(t, energy, enstrophy, commutator, drift, h, probe_.residual());
-  if (h5_) h5_->append({k, t, W, basis_.coefficients(W), energy, enstrophy, commutator, drift});
+  if (h5_) {
+    // The frame's vorticity is the relative one, W = Q − F (Q itself on a resting sphere).
+    const Eigen::MatrixXcd& W = hamiltonian_.relativeVorticity(Q, relative_);
+    h5_->append({k, t, W, basis_.coefficients(W), energy, enstrophy, commutator, drift});
+  }
 }
 
 HistoryFiles::Lengths HistoryFiles::sync() {

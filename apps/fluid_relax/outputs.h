@@ -66,8 +66,9 @@ class HistoryFiles {
   /// (makeZeitlinFluid). Throws IoError.
   HistoryFiles(const Options& o, const Settings& s, const LiePoissonSystem<SUN>& system,
                const Checkpoint* resume);
-  /// The row of state k at time t reached by a step h (0 for k = 0), of spectrum drift `drift`.
-  void write(long k, double t, double h, const Eigen::MatrixXcd& W, double drift);
+  /// The row of state k (the absolute vorticity Q) at time t reached by a step h (0 for k = 0),
+  /// of spectrum drift `drift`.
+  void write(long k, double t, double h, const Eigen::MatrixXcd& Q, double drift);
   /// Makes the rows written durable (before a checkpoint) and returns their lengths.
   Lengths sync();
   /// Completes history.csv under its name and writes fluid.hdf5 to the disk.
@@ -77,6 +78,7 @@ class HistoryFiles {
  private:
   const ZeitlinHamiltonian& hamiltonian_;
   ZeitlinDiagnostics diagnostics_;
+  Eigen::MatrixXcd relative_;    // a frame's W = Q − F on a rotating sphere
   SteadyStateProbe<SUN> probe_;  // r of each row, whether or not the run evaluates it
   SphericalHarmonicBasis basis_;
   std::optional<HistoryCsv> csv_;

@@ -1,5 +1,7 @@
 #include "fluid_relax/summary.h"
 
+#include <cmath>
+
 #include "common/cli.h"
 
 namespace ddb::fluid {
@@ -39,12 +41,18 @@ app::Json runSummary(const Options& o, const Settings& s, const LiePoissonSystem
   summary["init"] = s.init;
   summary["seed"] = s.init == "file" ? app::Json() : app::Json(o.seed);
   summary["init_file"] = s.init == "file" ? app::Json(o.init_file) : app::Json();
-  summary["energy_initial"] = diagnostics.energy(s.W0);
+  // The physics, and the diagnostics of the states Q (absolute vorticities on a rotating sphere).
+  summary["rotation"] = s.physics.rotation;
+  summary["deformation_radius"] = std::isinf(s.physics.deformation_radius)
+                                      ? app::Json()
+                                      : app::Json(s.physics.deformation_radius);
+  const Eigen::MatrixXcd Q0 = s.initialState();
+  summary["energy_initial"] = diagnostics.energy(Q0);
   summary["energy_final"] = diagnostics.energy(result.final);
-  summary["enstrophy_initial"] = diagnostics.enstrophy(s.W0);
+  summary["enstrophy_initial"] = diagnostics.enstrophy(Q0);
   summary["enstrophy"] = diagnostics.enstrophy(result.final);
   summary["spectrum_drift_max"] = tally.drift_max;
-  summary["commutator_initial"] = diagnostics.commutatorNorm(s.W0);
+  summary["commutator_initial"] = diagnostics.commutatorNorm(Q0);
   summary["commutator_final"] = diagnostics.commutatorNorm(result.final);
   summary["runtime_s"] = runtime_s;
   if (counts_iterations) {

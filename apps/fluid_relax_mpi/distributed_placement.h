@@ -38,8 +38,10 @@ class DistributedPlacement {
         n_(run.n),
         block_(run.block),
         layout_(DistributedMatrix(grid, static_cast<int>(run.n), run.block).layout()),
-        fluid_(makeDistributedZeitlinFluid(layout_, run.settings.alpha)),
-        host_fluid_(grid.rank() == 0 ? makeZeitlinFluid(run.n, run.settings.alpha) : nullptr) {}
+        fluid_(makeDistributedZeitlinFluid(layout_, run.settings.alpha, run.settings.physics)),
+        host_fluid_(grid.rank() == 0
+                        ? makeZeitlinFluid(run.n, run.settings.alpha, run.settings.physics)
+                        : nullptr) {}
 
   Eigen::Index n() const { return n_; }
   const std::shared_ptr<const LiePoissonSystem<DistributedSUN>>& system() const { return fluid_; }

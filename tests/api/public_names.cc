@@ -509,6 +509,18 @@ static_assert(
   static_assert(std::is_constructible_v<ddb::ZeitlinDiagnostics, const ddb::ZeitlinHamiltonian&>);
   static_assert(std::is_base_of_v<ddb::Hamiltonian<SUN>, ddb::ZeitlinHamiltonian>);
 }
+[[maybe_unused]] void matrixGroupsRotatingSphere(const Eigen::MatrixXcd& W) {
+  const Eigen::Index n = W.rows();
+  ddb::ZeitlinPhysics physics;
+  physics.rotation = 2.0;            // Ω
+  physics.deformation_radius = 0.5;  // κ² = 4
+  const auto fluid = ddb::makeZeitlinFluid(n, /*alpha=*/0.0, physics);
+  const auto& hamiltonian = dynamic_cast<const ddb::ZeitlinHamiltonian&>(fluid->hamiltonian());
+  const Eigen::MatrixXcd Q = W + hamiltonian.planetaryVorticity();  // the state: W + F
+  use(Q, ddb::zeitlinPlanetaryVorticity(n, 2.0));
+  static_assert(
+      std::is_constructible_v<ddb::ZeitlinHamiltonian, Eigen::Index, const ddb::ZeitlinPhysics&>);
+}
 
 // docs/guide/steady-states.md
 [[maybe_unused]] const char* steadyStops(ddb::RelaxStop stop) {
@@ -566,6 +578,14 @@ static_assert(
   static_assert(std::is_constructible_v<ddb::Relaxation<SO3>, const System<SO3>&, const Vec3&,
                                         const ddb::RelaxOptions&>);
   static_assert(std::is_constructible_v<ddb::OrbitNewton<SO3>, const System<SO3>&, double>);
+  // The two searches behind Relaxation, and their interface.
+  static_assert(std::is_base_of_v<ddb::SteadyStateSearch<SO3>, ddb::TimeRelaxation<SO3>>);
+  static_assert(std::is_base_of_v<ddb::SteadyStateSearch<SO3>, ddb::NewtonSearch<SO3>>);
+  static_assert(
+      std::is_constructible_v<ddb::TimeRelaxation<SO3>, ddb::OneStepMethod<SO3>&,
+                              const System<SO3>&, const Vec3&, double, const ddb::RelaxOptions&>);
+  static_assert(std::is_constructible_v<ddb::NewtonSearch<SO3>, const System<SO3>&, const Vec3&,
+                                        const ddb::RelaxOptions&>);
   static_assert(std::is_base_of_v<ddb::Ddb<CayleySO3>, ddb::LinearlyImplicitDdb<CayleySO3>>);
 }
 

@@ -150,6 +150,8 @@ TEST_F(Checkpoint, RefusesACorruptCheckpointAFlagThatChangesTheRunAndAReachedCap
   refused("--steps 200 --alpha 0.7", "--alpha = 0.7: a resumed run keeps its settings");
   refused("--steps 200 --method sddb-cay", "--method = sddb-cay");
   refused("--steps 200 --every 3", "--every = 3");
+  refused("--steps 200 --rotation 1", "--rotation = 1: a resumed run keeps its settings");
+  refused("--steps 200 --deformation-radius 2", "--deformation-radius = 2");
   refused("", "the run has taken 120 steps, its cap 120");
   refused("--steps 100", "the run has taken 120 steps");
   refused("--steps 200 --t-end 9", "--steps, --t-end");

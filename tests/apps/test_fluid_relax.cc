@@ -333,6 +333,40 @@ TEST(FluidRelax, InitFileRoundTripContinuesTheLongerRun) {
   EXPECT_EQ(jsonNumber(summary, "n"), 16);
 }
 
+// --rotation and --deformation-radius: a Rossby–Haurwitz wave given as --init-file (the relative
+// vorticity W0 = T_32 + 0.6 T_3,-2) ends in W_final.csv rotated by c t, c = 2Ω/(l(l + 1) + κ²),
+// the closed form (docs/reference/conventions.md §2); the energy is ‖W0‖²/(2N(l(l + 1) + κ²)).
+TEST(FluidRelax, RotationAndDeformationRadiusCarryARossbyHaurwitzWave) {
+  const Eigen::Index n = 8;
+  const ddb::SphericalHarmonicBasis basis{ddb::HoppeYauLaplacian(n)};
+  const Matrix W0 = basis.element(3, 2) + 0.6 * basis.element(3, -2);
+  const fs::path files = freshFolder("rossby_haurwitz_input"), out = freshFolder("rossby_haurwitz");
+  fs::create_directories(files);
+  writeMatrix(files / "W0.csv", W0);
+  const AppResult r =
+      run("--quiet --alpha 0 --rotation 1.5 --deformation-radius 0.5 --method rk4 "
+          "--h 0.01 --steps 300 --h5 --init-file " +
+          (files / "W0.csv").string() + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const double c = 2.0 * 1.5 / (12.0 + 4.0), t = 3.0;
+  Eigen::VectorXcd u(n);
+  for (Eigen::Index j = 0; j < n; ++j) u(j) = std::polar(1.0, double(j) * c * t);
+  const Matrix expected = u.asDiagonal() * W0 * u.conjugate().asDiagonal();
+  const Matrix W = readMatrix(out / "W_final.csv");
+  EXPECT_LT((W - expected).norm(), 1e-9 * W0.norm());
+  const auto summary = readJson(out / "summary.json");
+  EXPECT_EQ(jsonNumber(summary, "rotation"), 1.5);
+  EXPECT_EQ(jsonNumber(summary, "deformation_radius"), 0.5);
+  const double energy = W0.squaredNorm() / (2.0 * double(n) * 16.0);
+  EXPECT_NEAR(jsonNumber(summary, "energy_initial"), energy, 1e-12 * energy);
+  // Without the flags the summary says so: no rotation, no deformation radius.
+  const fs::path resting = freshFolder("resting");
+  ASSERT_EQ(run("--quiet --n 4 --steps 2 --out " + resting.string()).status, 0);
+  const auto plain = readJson(resting / "summary.json");
+  EXPECT_EQ(jsonNumber(plain, "rotation"), 0.0);
+  EXPECT_TRUE(plain["deformation_radius"].is_null());
+}
+
 TEST(FluidRelax, FailedSolveKeepsTheHistoryPrefixAndExitsOne) {
   // At h = 3 (h||P||_2/hbar about 15) the Legendre solve of step 1 does not converge. (At
   // h = 2.2 it failed too until ξ was evaluated on su(N) and projected onto it; now it
@@ -383,6 +417,12 @@ TEST(FluidRelax, BadInputExitsTwoNamingTheFlagAndWritesNothing) {
       {"--h inf --steps 2", "--h"},
       {"--alpha nan --steps 2", "--alpha"},
       {"--alpha inf --steps 2", "--alpha"},
+      {"--rotation nan --steps 2", "--rotation"},
+      {"--rotation inf --steps 2", "--rotation"},
+      {"--rotation fast --steps 2", "--rotation"},
+      {"--deformation-radius 0 --steps 2", "--deformation-radius"},
+      {"--deformation-radius -1 --steps 2", "--deformation-radius"},
+      {"--deformation-radius inf --steps 2", "--deformation-radius"},
       {"--steps 0", "--steps"},
       {"--steps -1", "--steps"},
       {"--steps 2 --t-end 1", "--steps"},

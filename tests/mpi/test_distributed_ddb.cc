@@ -7,7 +7,8 @@
 // step up to a stopping test decided the other way at the tolerance's edge, and the
 // spectrum (Eigen's eigensolver on the gathered W) moves by at most 1e-12. The energy, the
 // residual r and dH/dt that Relaxation's step control reads, evaluated distributed by the
-// same SteadyStateProbe on the distributed system, are the serial ones.
+// same SteadyStateProbe on the distributed system, are the serial ones. On a rotating sphere,
+// quasi-geostrophic, the distributed steps are the dense ones too.
 #include <ddb/distributed/distributed_zeitlin_fluid.h>
 #include <ddb/distributed/process_grid.h>
 #include <ddb/groups/sun.h>
@@ -133,6 +134,43 @@ TEST_P(DistributedDdbTest, EnergyResidualAndRateAreTheSerialProbes) {
   } else {
     EXPECT_LT(relative(rate, probe.energyRate()), 1e-13);
     EXPECT_EQ(rate<0, alpha()> 0);  // the flow lowers H for α > 0 (Proposition 3.3)
+  }
+}
+
+// On a rotating sphere and quasi-geostrophic (ZeitlinPhysics): the distributed fluid's
+// planetary vorticity and shifted Poisson solve take the dense fluid's steps, from the absolute
+// vorticity Q0 = W0 + F, to 1e-13; Q's spectrum stays.
+TEST(DistributedZeitlinPhysics, RotatingQuasiGeostrophicStepsAreTheDenseOnes) {
+  const test::TestGrid grid;
+  ZeitlinPhysics physics;
+  physics.rotation = 1.5;
+  physics.deformation_radius = 0.8;
+  for (const auto& [n, block] : {std::pair{16, 5}, {33, 7}}) {
+    for (const double alpha : {0.0, 0.5}) {
+      const auto dense_fluid = makeZeitlinFluid(n, alpha, physics);
+      const auto& hamiltonian = dynamic_cast<const ZeitlinHamiltonian&>(dense_fluid->hamiltonian());
+      const Eigen::MatrixXcd W0 = randomVorticity(n, 1);
+      const Eigen::MatrixXcd Q0 = W0 + hamiltonian.planetaryVorticity();
+      const double h = defaultStep(W0);
+      const auto dense = makeMethod<SUN>("ddb-cay", dense_fluid);
+      Eigen::MatrixXcd Q = Q0;
+      for (int k = 0; k < 30; ++k) dense->advance(Q, k * h, h);
+
+      DistributedMatrix Qd(grid, n, block);
+      Qd.scatterFrom(Q0);
+      const auto fluid = makeDistributedZeitlinFluid(Qd.layout(), alpha, physics);
+      const auto method = makeMethod<DistributedSUN>("ddb-cay", fluid);
+      for (int k = 0; k < 30; ++k) method->advance(Qd, k * h, h);
+      const double energy = fluid->energy(Qd);
+      const Eigen::MatrixXcd gathered = Qd.gather();
+      if (grid.rank() == 0) {
+        EXPECT_LT(relativeDistance(gathered, Q), 1e-13) << "N = " << n << ", alpha = " << alpha;
+        EXPECT_GT(relativeDistance(gathered, Q0), 1e-3);
+        EXPECT_LT(std::abs(energy - dense_fluid->energy(Q)), 1e-13 * dense_fluid->energy(Q));
+        const Eigen::VectorXd initial = spectrum(Q0), final = spectrum(gathered);
+        EXPECT_LT((final - initial).norm() / initial.norm(), 1e-12);
+      }
+    }
   }
 }
 

@@ -47,6 +47,22 @@ TEST_P(DistributedPoissonTest, MatchesTheSerialSolve) {
   }
 }
 
+// Quasi-geostrophy's Δ − κ² (every block definite, nothing pinned) as the serial solver has it.
+TEST_P(DistributedPoissonTest, MatchesTheSerialHelmholtzSolve) {
+  const double kappa_squared = 2.5;
+  const Eigen::MatrixXcd w = randomVorticity(n(), 43);
+  DistributedMatrix dw(grid_, n(), block()), dp(grid_, n(), block());
+  dw.scatterFrom(w);
+  DistributedPoissonSolver solver(dw.layout(), kappa_squared);
+  solver.solve(dw, dp);
+  const Eigen::MatrixXcd p = dp.gather();
+  if (grid_.rank() == 0) {
+    Eigen::MatrixXcd reference;
+    HoppeYauLaplacian(n(), kappa_squared).solve(w, reference);
+    EXPECT_LT(relativeDistance(p, reference), 1e-13);
+  }
+}
+
 TEST(DistributedPoissonSolver, RefusesAnotherBlockSize) {
   const test::TestGrid grid;
   const DistributedMatrix w(grid, 8, 3);

@@ -289,6 +289,27 @@ INSTANTIATE_TEST_SUITE_P(RanksRows, FluidRelaxMpiGridTest,
                                   std::to_string(std::get<1>(info.param));
                          });
 
+// --rotation and --deformation-radius on ranks: the distributed fluid's planetary vorticity and
+// shifted Poisson solve give the serial app's files.
+TEST(FluidRelaxMpi, RotatingQuasiGeostrophicRunWritesWhatTheSerialAppWrites) {
+  const fs::path serial = freshFolder("ddb_mpi_serial_", "rotating");
+  const fs::path mpi = freshFolder("ddb_mpi_", "rotating");
+  const std::string common =
+      "--n 16 --alpha 0.5 --rotation 2 --deformation-radius 0.7 --steps 60 --every 10 --quiet";
+  const AppResult s = runProgram(FLUID_RELAX_PATH, common + " --out " + serial.string());
+  ASSERT_EQ(s.status, 0) << s.output;
+  const AppResult m = runMpi(2, common + " --block 5 --out " + mpi.string());
+  ASSERT_EQ(m.status, 0) << m.output;
+  EXPECT_LT(matrixDistance(readCsv(mpi / "W_final.csv", nullptr),
+                           readCsv(serial / "W_final.csv", nullptr)),
+            1e-13);
+  expectSameHistory(mpi, serial);
+  expectSameSummary(mpi, serial, 2);
+  EXPECT_EQ(readJson(mpi / "summary.json")["rotation"], 2.0);
+  fs::remove_all(serial);
+  fs::remove_all(mpi);
+}
+
 TEST(FluidRelaxMpi, StopsWhenSteadyAtTheSerialAppsStep) {
   const fs::path serial = freshFolder("ddb_mpi_serial_", "steady");
   const fs::path mpi = freshFolder("ddb_mpi_", "steady");

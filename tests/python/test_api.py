@@ -95,6 +95,28 @@ def test_omega_lm_round_trip_and_the_initial_vorticities():
     assert fluid.commutator_norm(zonal) < 1e-14
 
 
+def test_rotating_sphere_planetary_vorticity_and_the_rossby_haurwitz_drift():
+    n, omega_rate, kappa2 = 8, 1.5, 2.0
+    fluid = ddb.zeitlin(n, 0.0, rotation=omega_rate, deformation_radius=1 / np.sqrt(kappa2))
+    # F = 2 Omega cos(theta) = (2 Omega / sqrt 3) Y_10, built from the basis's coefficients.
+    coefficients = np.zeros(n * n)
+    coefficients[1 * 1 + 1 + 0] = 2 * omega_rate / np.sqrt(3)
+    F = fluid.planetary_vorticity()
+    np.testing.assert_allclose(F, fluid.vorticity(coefficients), atol=1e-13)
+    np.testing.assert_array_equal(ddb.zeitlin(n, 0.0).planetary_vorticity(), np.zeros((n, n)))
+    # A Rossby-Haurwitz wave (l, m) = (3, 2): Q(t) - F = U W U^H, U = diag(exp(i j c t)),
+    # c = 2 Omega / (l(l+1) + kappa^2); rk4 at a small step against that closed form.
+    coefficients = np.zeros(n * n)
+    coefficients[3 * 3 + 3 + 2] = 1.0
+    W = fluid.vorticity(coefficients)
+    c, h, steps = 2 * omega_rate / (12 + kappa2), 0.01, 200
+    _, states = ddb.integrate(fluid, "rk4", W + F, h, steps)
+    Q = states[-1]
+    u = np.exp(1j * np.arange(n) * c * h * steps)
+    exact = (u[:, None] * W) * u.conj()[None, :]
+    np.testing.assert_allclose(Q - F, exact, atol=1e-10)
+
+
 def test_manakov_and_se3_casimirs():
     rng = np.random.default_rng(1)
     a = rng.standard_normal((5, 5))
@@ -193,6 +215,9 @@ def test_bad_system_arguments_name_the_parameter():
         (lambda: ddb.manakov(np.ones(100_000), 0.5), "J = an array of 100000 numbers"),
         (lambda: ddb.zeitlin(100_000, 0.5), "N = 100000"),
         (lambda: ddb.zeitlin(8.0, 0.5), "N = 8.0"),
+        (lambda: ddb.zeitlin(8, 0.5, rotation=float("nan")), "rotation = nan"),
+        (lambda: ddb.zeitlin(8, 0.5, deformation_radius=-1.0), "deformation_radius = -1"),
+        (lambda: ddb.zeitlin(8, 0.5, deformation_radius="1"), "deformation_radius = '1'"),
         (lambda: ddb.zeitlin_vorticity("random", 100_000), "N = 100000"),
         (lambda: ddb.zeitlin_vorticity("random", 8, -1), "seed = -1"),
         (lambda: ddb.zeitlin_vorticity(None, 8), "kind = None"),
