@@ -33,6 +33,7 @@
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/integrators/methods/one_step_method.h>
 #include <ddb/integrators/methods/runge_kutta.h>
+#include <ddb/integrators/methods/strang_splitting.h>
 #include <ddb/integrators/methods/symmetric_ddb.h>
 #include <ddb/integrators/solvers/matrix_legendre.h>
 #include <ddb/systems/heavy_top.h>
@@ -45,3 +46,4 @@
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <ddb/systems/zeitlin_step_size.h>
+#include <ddb/systems/zeitlin_viscosity.h>

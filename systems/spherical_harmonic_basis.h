@@ -82,6 +82,40 @@ class SphericalHarmonicBasis {
     return omega;
   }
 
+  /// W ← f(−Δ) W = Σ f_l ω_lm T_lm, f_l = factors(l), l = 0..N−1 (a function of the degree: the
+  /// exact flow of a viscosity or a drag, a spectral filter). Each diagonal m of W (and −m) is
+  /// taken to block m's eigenvector coordinates, scaled and taken back: (1/N) Vᵀ diag(f) V, with
+  /// V's rows v_{l,m} of norm √N; O(N³) in all, the cost of coefficients() and matrix().
+  void applyDegreeFunction(const Eigen::VectorXd& factors, Eigen::MatrixXcd& W) const {
+    requireSize(W);
+    if (factors.size() != n_) {
+      throwInvalid("factors", std::to_string(factors.size()) + " values",
+                   "must be N = " + std::to_string(n_) + ", one per degree l");
+    }
+    Workspace w;
+    // The real and imaginary parts of a diagonal's entries, in V's real arithmetic.
+    Eigen::MatrixXd parts, projected;
+    for (Eigen::Index m = 0; m < n_; ++m) {
+      const Eigen::Index length = n_ - m;
+      blockVectors(m, w);
+      const auto V = w.vectors.matrix();
+      const auto f = factors.tail(length).array() / double(n_);
+      // Diagonal m, then −m (the main diagonal once).
+      for (Eigen::Index side = 0; side < (m == 0 ? 1 : 2); ++side) {
+        const Eigen::Index d = side == 0 ? m : -m;
+        const auto entry = [&](Eigen::Index k) -> std::complex<double>& {
+          return d >= 0 ? W(k, k + d) : W(k - d, k);
+        };
+        parts.resize(length, 2);
+        for (Eigen::Index k = 0; k < length; ++k) parts.row(k) << entry(k).real(), entry(k).imag();
+        projected.noalias() = V * parts;
+        projected.array().colwise() *= f;
+        parts.noalias() = V.transpose() * projected;
+        for (Eigen::Index k = 0; k < length; ++k) entry(k) = {parts(k, 0), parts(k, 1)};
+      }
+    }
+  }
+
   /// W = Σ ω_lm T_lm.
   Eigen::MatrixXcd matrix(const Eigen::VectorXd& omega) const {
     if (omega.size() != n_ * n_) {

@@ -30,6 +30,7 @@
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/integrators/methods/one_step_method.h>
 #include <ddb/integrators/methods/reference.h>
+#include <ddb/integrators/methods/strang_splitting.h>
 #include <ddb/integrators/methods/symmetric_ddb.h>
 #include <ddb/integrators/solvers/correction_predictor.h>
 #include <ddb/integrators/solvers/legendre.h>
@@ -46,6 +47,7 @@
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <ddb/systems/zeitlin_step_size.h>
+#include <ddb/systems/zeitlin_viscosity.h>
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -520,6 +522,17 @@ static_assert(
   use(Q, ddb::zeitlinPlanetaryVorticity(n, 2.0));
   static_assert(
       std::is_constructible_v<ddb::ZeitlinHamiltonian, Eigen::Index, const ddb::ZeitlinPhysics&>);
+  ddb::ZeitlinViscosity viscosity;
+  viscosity.viscosity = 1e-4;  // ν
+  viscosity.order = 2;         // p: hyperviscosity Δ²
+  viscosity.drag = 0.01;       // γ
+  ddb::StrangSplitting<ddb::SUN> method(
+      ddb::makeMethod<ddb::SUN>("sddb-cay", fluid),
+      std::make_unique<ddb::ZeitlinViscousFlow>(n, viscosity, hamiltonian.planetaryVorticity()));
+  Eigen::MatrixXcd state = Q;
+  method.advance(state, 0.0, 0.01);
+  static_assert(std::is_base_of_v<ddb::ExactFlow<SUN>, ddb::ZeitlinViscousFlow>);
+  use(state);
 }
 
 // docs/guide/steady-states.md

@@ -95,7 +95,7 @@ TEST(ZeitlinRotation, RossbyHaurwitzWaveDriftsWestwardAtTheExactSpeedForEveryN) 
   // = i c [diag(j), W0], c = 2Ω/(l(l + 1) + κ²): the wave travels against the sphere's rotation.
   for (const Eigen::Index n : {5, 8, 16, 33}) {
     const SphericalHarmonicBasis basis{HoppeYauLaplacian(n)};
-    for (const auto [l, m] : {std::pair{1, 1}, {2, 1}, {3, 2}, {4, 4}}) {
+    for (const auto& [l, m] : {std::pair{1, 1}, {2, 1}, {3, 2}, {4, 4}}) {
       for (const double kappa_squared : {0.0, 2.5}) {
         for (const double rotation : {1.5, -0.7}) {
           const auto fluid = makeZeitlinFluid(n, 0.0, physicsOf(rotation, kappa_squared));

@@ -1,0 +1,83 @@
+// Viscosity, hyperviscosity and linear drag of Zeitlin's fluid (docs/reference/conventions.md §2):
+//   Ẇ = ν (−1)^{p+1} Δ^p W − γ W
+// on the relative vorticity W = Q − F (the planetary vorticity F is the frame's, not the flow's,
+// and is not damped). Each T_lm is an eigenmatrix, of rate −(ν (l(l + 1))^p + γ), so the exact
+// flow over h multiplies ω_lm by exp(−(ν (l(l + 1))^p + γ) h) (SphericalHarmonicBasis::
+// applyDegreeFunction). With the Lie–Poisson part by any method of the table it is a
+// StrangSplitting (integrators/methods/strang_splitting.h); it leaves the coadjoint orbit by
+// design, and combines with the double bracket (α) freely.
+#pragma once
+
+#include <ddb/core/errors.h>
+#include <ddb/core/exact_flow.h>
+#include <ddb/groups/sun.h>
+#include <ddb/systems/hoppe_yau_laplacian.h>
+#include <ddb/systems/spherical_harmonic_basis.h>
+
+#include <Eigen/Core>
+#include <cmath>
+#include <string>
+#include <utility>
+
+namespace ddb {
+
+/// ν, p and γ of Ẇ = ν (−1)^{p+1} Δ^p W − γ W.
+struct ZeitlinViscosity {
+  double viscosity = 0.0;  ///< ν >= 0
+  int order = 1;           ///< p >= 1: 1 is Laplacian viscosity, p > 1 hyperviscosity
+  double drag = 0.0;       ///< γ >= 0, linear (Rayleigh) drag
+
+  /// Throws InvalidArgument naming the parameter unless ν, γ are finite and >= 0 and p >= 1.
+  void validate() const {
+    if (!(viscosity >= 0 && std::isfinite(viscosity))) {
+      throwInvalid("viscosity", formatValue(viscosity), "must be finite and >= 0");
+    }
+    if (order < 1) throwInvalid("order", std::to_string(order), "must be >= 1");
+    if (!(drag >= 0 && std::isfinite(drag))) {
+      throwInvalid("drag", formatValue(drag), "must be finite and >= 0");
+    }
+  }
+  /// The decay rate of degree l: ν (l(l + 1))^p + γ.
+  double rate(Eigen::Index l) const {
+    return viscosity * std::pow(double(l) * double(l + 1), order) + drag;
+  }
+};
+
+/// The exact flow of ZeitlinViscosity at resolution N, of the states Q = W + F of a fluid whose
+/// planetary vorticity is `planetary` (ZeitlinHamiltonian::planetaryVorticity; zero or empty on
+/// a resting sphere).
+class ZeitlinViscousFlow final : public ExactFlow<SUN> {
+ public:
+  ZeitlinViscousFlow(Eigen::Index n, const ZeitlinViscosity& viscosity,
+                     Eigen::MatrixXcd planetary = Eigen::MatrixXcd())
+      : basis_(HoppeYauLaplacian(n)),
+        rates_(n),
+        factors_(n),
+        planetary_(std::move(planetary)),
+        rotating_(planetary_.size() > 0 && !planetary_.isZero(0.0)) {
+    viscosity.validate();
+    for (Eigen::Index l = 0; l < n; ++l) rates_(l) = viscosity.rate(l);
+  }
+
+  std::string name() const override { return "viscosity"; }
+
+  /// Q ← F + exp(h L)(Q − F), L = ν (−1)^{p+1} Δ^p − γ.
+  void advance(Eigen::MatrixXcd& Q, double h) override {
+    if (h != h_) {
+      factors_ = (-h * rates_.array()).exp().matrix();
+      h_ = h;
+    }
+    if (rotating_) Q -= planetary_;
+    basis_.applyDegreeFunction(factors_, Q);
+    if (rotating_) Q += planetary_;
+  }
+
+ private:
+  SphericalHarmonicBasis basis_;
+  Eigen::VectorXd rates_, factors_;  // per degree l: the decay rate, exp(−rate h) for h_
+  double h_ = std::nan("");
+  Eigen::MatrixXcd planetary_;
+  bool rotating_;
+};
+
+}  // namespace ddb

@@ -1,0 +1,173 @@
+// Viscosity, hyperviscosity and drag of Zeitlin's fluid (systems/zeitlin_viscosity.h) by Strang
+// splitting (integrators/methods/strang_splitting.h), against what the code did not use: the
+// spherical-harmonic coefficients scaled one by one, the closed-form decay
+// exp(−(ν (l(l + 1))^p + γ) t) of a steady flow, and a fitted order of 2 against Runge–Kutta on the
+// whole vector field written here with a step 1/16 of the smallest.
+
+#include <ddb/core/errors.h>
+#include <ddb/integrators/methods/method_table.h>
+#include <ddb/integrators/methods/strang_splitting.h>
+#include <ddb/systems/spherical_harmonic_basis.h>
+#include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_initial_conditions.h>
+#include <ddb/systems/zeitlin_viscosity.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "order_fit.h"
+
+namespace ddb::test {
+namespace {
+
+using Matrix = Eigen::MatrixXcd;
+
+const ZeitlinHamiltonian& hamiltonianOf(const LiePoissonSystem<SUN>& fluid) {
+  return dynamic_cast<const ZeitlinHamiltonian&>(fluid.hamiltonian());
+}
+
+std::unique_ptr<OneStepMethod<SUN>> split(const std::string& name,
+                                          const std::shared_ptr<const LiePoissonSystem<SUN>>& fluid,
+                                          const ZeitlinViscosity& viscosity) {
+  const Eigen::Index n = hamiltonianOf(*fluid).laplacian().size();
+  return std::make_unique<StrangSplitting<SUN>>(
+      makeMethod<SUN>(name, fluid), std::make_unique<ZeitlinViscousFlow>(
+                                        n, viscosity, hamiltonianOf(*fluid).planetaryVorticity()));
+}
+
+TEST(ZeitlinViscosity, TheDegreeFunctionScalesEveryCoefficient) {
+  for (const Eigen::Index n : {2, 7, 16}) {
+    const SphericalHarmonicBasis basis{HoppeYauLaplacian(n)};
+    const Matrix W = randomVorticity(n, 5);
+    const Eigen::VectorXd factors = Eigen::VectorXd::LinSpaced(n, 1.0, 0.1).array().square();
+    Eigen::VectorXd omega = basis.coefficients(W);
+    for (Eigen::Index l = 0; l < n; ++l) {
+      for (Eigen::Index m = -l; m <= l; ++m) {
+        omega(SphericalHarmonicBasis::index(l, m)) *= factors(l);
+      }
+    }
+    const Matrix expected = basis.matrix(omega);
+    Matrix filtered = W;
+    basis.applyDegreeFunction(factors, filtered);
+    EXPECT_LT((filtered - expected).norm(), 1e-13 * W.norm()) << "N = " << n;
+  }
+}
+
+TEST(ZeitlinViscosity, ASteadyFlowDecaysByTheClosedForm) {
+  // One degree l is steady for the Euler part ([P, W] = 0), zonal flows on the rotating sphere
+  // too ([ψ, Q] = 0, all diagonal): the split step is then the decay alone, to rounding.
+  const Eigen::Index n = 10;
+  const SphericalHarmonicBasis basis{HoppeYauLaplacian(n)};
+  ZeitlinViscosity viscosity;
+  viscosity.viscosity = 0.002;
+  viscosity.order = 2;
+  viscosity.drag = 0.05;
+  struct Case {
+    double rotation;
+    Matrix W0;
+    int l;
+  };
+  for (const Case& c : {Case{0.0, Matrix(basis.element(4, 3) + 0.5 * basis.element(4, -1)), 4},
+                        Case{2.0, Matrix(basis.element(3, 0)), 3}}) {
+    ZeitlinPhysics physics;
+    physics.rotation = c.rotation;
+    const auto fluid = makeZeitlinFluid(n, 0.0, physics);
+    const Matrix& F = hamiltonianOf(*fluid).planetaryVorticity();
+    // Methods that keep a steady state to rounding (ddb-cay keeps it to its Legendre solve's
+    // tolerance, about 1e-7 here).
+    for (const std::string name : {"ddb-exp", "sddb-exp", "rk4"}) {
+      const auto method = split(name, fluid, viscosity);
+      Matrix Q = c.W0 + F;
+      const double h = 0.1;
+      for (int k = 0; k < 20; ++k) method->advance(Q, k * h, h);
+      const double rate = 0.002 * std::pow(c.l * (c.l + 1.0), 2) + 0.05;
+      const Matrix expected = std::exp(-rate * 2.0) * c.W0;
+      EXPECT_LT((Q - F - expected).norm(), 1e-12 * c.W0.norm())
+          << name << ", rotation " << c.rotation;
+      EXPECT_NE(method->name().find("+viscosity"), std::string::npos) << method->name();
+    }
+  }
+}
+
+// Ẇ of the whole model at Q: the Lie–Poisson field plus L(Q − F), L applied through the
+// coefficients (not applyDegreeFunction).
+Matrix wholeField(const LiePoissonSystem<SUN>& fluid, const SphericalHarmonicBasis& basis,
+                  const ZeitlinViscosity& viscosity, const Matrix& F, const Matrix& Q) {
+  Eigen::VectorXd omega = basis.coefficients(Q - F);
+  for (Eigen::Index l = 0; l < basis.size(); ++l) {
+    for (Eigen::Index m = -l; m <= l; ++m) {
+      omega(SphericalHarmonicBasis::index(l, m)) *= -viscosity.rate(l);
+    }
+  }
+  return fluid.vectorField(Q) + basis.matrix(omega);
+}
+
+TEST(ZeitlinViscosity, TheSplitStepIsSecondOrderOnANonlinearFlow) {
+  const Eigen::Index n = 6;
+  ZeitlinPhysics physics;
+  physics.rotation = 1.0;
+  const auto fluid = makeZeitlinFluid(n, 0.3, physics);
+  const Matrix& F = hamiltonianOf(*fluid).planetaryVorticity();
+  const SphericalHarmonicBasis basis{HoppeYauLaplacian(n)};
+  ZeitlinViscosity viscosity;
+  viscosity.viscosity = 0.02;
+  viscosity.drag = 0.1;
+  const Matrix Q0 = randomVorticity(n, 9) + F;
+  const double t_end = 1.0;
+  // The reference: classical RK4 on the whole field, h = 1/1600.
+  Matrix reference = Q0;
+  const int reference_steps = 1600;
+  const double r = t_end / reference_steps;
+  const auto field = [&](const Matrix& Q) { return wholeField(*fluid, basis, viscosity, F, Q); };
+  for (int k = 0; k < reference_steps; ++k) {
+    const Matrix k1 = field(reference), k2 = field(reference + 0.5 * r * k1);
+    const Matrix k3 = field(reference + 0.5 * r * k2), k4 = field(reference + r * k3);
+    reference += (r / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+  }
+  // The symmetric (second-order) DDB methods: ddb-cay's dissipative factor is first order in h.
+  for (const std::string name : {"sddb-cay", "sddb-exp"}) {
+    std::vector<double> steps, errors;
+    for (const int count : {10, 20, 40, 80}) {
+      const auto method = split(name, fluid, viscosity);
+      const double h = t_end / count;
+      Matrix Q = Q0;
+      for (int k = 0; k < count; ++k) method->advance(Q, k * h, h);
+      steps.push_back(h);
+      errors.push_back((Q - reference).norm() / Q0.norm());
+    }
+    const OrderFit fit = fitOrder(steps, errors);
+    EXPECT_EQ(fit.points, 4) << name;
+    EXPECT_NEAR(fit.slope, 2.0, 0.2) << name;
+  }
+}
+
+TEST(ZeitlinViscosity, BadParametersAreRefusedNamingThem) {
+  const auto refused = [](const ZeitlinViscosity& viscosity, const std::string& parameter) {
+    try {
+      ZeitlinViscousFlow flow(4, viscosity);
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(parameter + " = ", 0), 0u) << e.what();
+      return;
+    }
+    ADD_FAILURE() << parameter << " accepted";
+  };
+  ZeitlinViscosity v;
+  v.viscosity = -1e-3;
+  refused(v, "viscosity");
+  v.viscosity = std::nan("");
+  refused(v, "viscosity");
+  v = ZeitlinViscosity{};
+  v.order = 0;
+  refused(v, "order");
+  v = ZeitlinViscosity{};
+  v.drag = -0.1;
+  refused(v, "drag");
+  v.drag = INFINITY;
+  refused(v, "drag");
+}
+
+}  // namespace
+}  // namespace ddb::test
