@@ -45,5 +45,6 @@
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
+#include <ddb/systems/zeitlin_spectra.h>
 #include <ddb/systems/zeitlin_step_size.h>
 #include <ddb/systems/zeitlin_viscosity.h>

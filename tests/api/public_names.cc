@@ -46,6 +46,7 @@
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
+#include <ddb/systems/zeitlin_spectra.h>
 #include <ddb/systems/zeitlin_step_size.h>
 #include <ddb/systems/zeitlin_viscosity.h>
 
@@ -532,7 +533,14 @@ static_assert(
   Eigen::MatrixXcd state = Q;
   method.advance(state, 0.0, 0.01);
   static_assert(std::is_base_of_v<ddb::ExactFlow<SUN>, ddb::ZeitlinViscousFlow>);
-  use(state);
+  // The field's diagnostics.
+  const ddb::SphericalHarmonicBasis basis(hamiltonian.laplacian());
+  const Eigen::VectorXd omega = basis.coefficients(W);
+  const ddb::ZeitlinSpectra spectra = ddb::zeitlinSpectra(omega, 4.0);
+  const ddb::ScaleDecomposition parts =
+      ddb::zeitlinScaleDecomposition(W, hamiltonian.streamMatrix(Q));
+  use(state, spectra.energy, spectra.enstrophy, ddb::zeitlinGamma(omega), parts.steady,
+      parts.remainder);
 }
 
 // docs/guide/steady-states.md

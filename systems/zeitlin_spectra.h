@@ -1,0 +1,77 @@
+// The field's diagnostics of Zeitlin's fluid (docs/reference/conventions.md §2), of the relative
+// vorticity W with coefficients ω_lm = Re tr(T_lmᴴ W)/N (SphericalHarmonicBasis):
+//   energy spectrum     E_l = ½ Σ_m ω_lm² / (l(l + 1) + κ²)   (l ≥ 1; Σ_l E_l = E = ħH/N)
+//   enstrophy spectrum  Z_l = ½ Σ_m ω_lm²                     (Σ_l Z_l = Z = ‖W‖²_F/(2N))
+//   γ = |(ω_1,−1, ω_1,0, ω_1,1)| / |ω|, the share of the l = 1 part (angular momentum), which
+//       the field reads to predict how many vortex blobs a freely decaying flow ends in (one of
+//       quflow's diagnostics);
+//   W = W_s + W_r, the canonical scale decomposition: W_s the part of W diagonal in the stream
+//       matrix's eigenbasis (it commutes with ψ; W_s = W at a steady state), W_r = W − W_s.
+// The ½ makes the spectra sum to the fluid's E and Z (ZeitlinDiagnostics' units).
+#pragma once
+
+#include <ddb/core/errors.h>
+#include <ddb/systems/spherical_harmonic_basis.h>
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <complex>
+#include <string>
+
+namespace ddb {
+
+/// E_l and Z_l, l = 0..N−1 (E_0 = 0: the l = 0 part is the trace, which su(N) has not).
+struct ZeitlinSpectra {
+  Eigen::VectorXd energy, enstrophy;
+};
+
+/// The spectra of coefficients ω (SphericalHarmonicBasis::coefficients, N² of them) of a fluid
+/// whose stream matrix is (Δ − κ²)⁻¹W (κ² = 0: Euler).
+inline ZeitlinSpectra zeitlinSpectra(const Eigen::VectorXd& omega, double kappa_squared = 0.0) {
+  const auto n = static_cast<Eigen::Index>(std::lround(std::sqrt(double(omega.size()))));
+  if (n * n != omega.size() || n < 1) {
+    throwInvalid("omega", std::to_string(omega.size()) + " coefficients", "must be N^2 of them");
+  }
+  ZeitlinSpectra s{Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)};
+  for (Eigen::Index l = 0; l < n; ++l) {
+    const double squares =
+        omega.segment(SphericalHarmonicBasis::index(l, -l), 2 * l + 1).squaredNorm();
+    s.enstrophy(l) = 0.5 * squares;
+    if (l > 0) s.energy(l) = 0.5 * squares / (double(l) * double(l + 1) + kappa_squared);
+  }
+  return s;
+}
+
+/// γ = |(ω_1,−1, ω_1,0, ω_1,1)| / |ω| (0 for ω = 0).
+inline double zeitlinGamma(const Eigen::VectorXd& omega) {
+  if (omega.size() < 4) throwInvalid("omega", std::to_string(omega.size()), "must hold l = 1");
+  const double all = omega.norm();
+  return all > 0 ? omega.segment(SphericalHarmonicBasis::index(1, -1), 3).norm() / all : 0.0;
+}
+
+/// W_s and W_r of the canonical scale decomposition.
+struct ScaleDecomposition {
+  Eigen::MatrixXcd steady, remainder;
+};
+
+/// W = W_s + W_r for the stream matrix ψ (skew-Hermitian: ZeitlinHamiltonian::streamMatrix):
+/// with ψ = U (iΛ) Uᴴ, W_s = U diag(Uᴴ W U) Uᴴ, the part of W that commutes with ψ when ψ's
+/// eigenvalues are distinct. O(N³): an eigendecomposition and four products.
+inline ScaleDecomposition zeitlinScaleDecomposition(const Eigen::MatrixXcd& W,
+                                                    const Eigen::MatrixXcd& psi) {
+  if (W.rows() != W.cols() || psi.rows() != W.rows() || psi.cols() != W.cols()) {
+    throwInvalid("psi", std::to_string(psi.rows()) + "x" + std::to_string(psi.cols()),
+                 "must be square and of W's size");
+  }
+  const Eigen::MatrixXcd hermitian = std::complex<double>(0.0, -1.0) * psi;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> eigen(hermitian);
+  const Eigen::MatrixXcd& U = eigen.eigenvectors();
+  const Eigen::VectorXcd diagonal = (U.adjoint() * W * U).diagonal();
+  ScaleDecomposition d;
+  d.steady = U * diagonal.asDiagonal() * U.adjoint();
+  d.remainder = W - d.steady;
+  return d;
+}
+
+}  // namespace ddb
