@@ -4,6 +4,7 @@
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
+#include <ddb/systems/zeitlin_spectra.h>
 #include <pybind11/eigen.h>
 
 #include <memory>
@@ -29,6 +30,12 @@ class ZeitlinFluid : public System {
   const ZeitlinHamiltonian& hamiltonian() const { return hamiltonian_; }
   const ZeitlinDiagnostics& diagnostics() const { return diagnostics_; }
   const SphericalHarmonicBasis& basis() const { return basis_; }
+  /// The coefficients ω_lm of the relative vorticity W = Q − F of a state Q.
+  Eigen::VectorXd relativeCoefficients(const Eigen::MatrixXcd& Q) const {
+    Eigen::MatrixXcd workspace;
+    return basis_.coefficients(hamiltonian_.relativeVorticity(Q, workspace));
+  }
+  double kappaSquared() const { return hamiltonian_.laplacian().kappaSquared(); }
 
  private:
   explicit ZeitlinFluid(const SystemPointer<SUN>& system)
@@ -112,6 +119,42 @@ void bindZeitlin(py::module_& m) {
                 f.basis().matrix(vectorArgument("omega", omega, f.n() * f.n())));
           },
           py::arg("omega"), "W = sum omega_lm T_lm: the inverse of omega_lm().")
+      .def(
+          "energy_spectrum",
+          [](const ZeitlinFluid& f, py::handle Q) {
+            const Eigen::MatrixXcd state = stateFromArray<SUN>("Q", Q, f.n());
+            return zeitlinSpectra(f.relativeCoefficients(state), f.kappaSquared()).energy;
+          },
+          py::arg("Q"),
+          "E_l = 1/2 sum_m omega_lm^2 / (l(l+1) + kappa^2), l = 0..N-1, of the relative vorticity "
+          "W = Q - F: it sums to fluid_energy(Q) (systems/zeitlin_spectra.h).")
+      .def(
+          "enstrophy_spectrum",
+          [](const ZeitlinFluid& f, py::handle Q) {
+            const Eigen::MatrixXcd state = stateFromArray<SUN>("Q", Q, f.n());
+            return zeitlinSpectra(f.relativeCoefficients(state), f.kappaSquared()).enstrophy;
+          },
+          py::arg("Q"),
+          "Z_l = 1/2 sum_m omega_lm^2, l = 0..N-1, of W = Q - F: it sums to enstrophy(Q).")
+      .def(
+          "gamma",
+          [](const ZeitlinFluid& f, py::handle Q) {
+            return zeitlinGamma(f.relativeCoefficients(stateFromArray<SUN>("Q", Q, f.n())));
+          },
+          py::arg("Q"), "gamma = |(omega_1,-1, omega_1,0, omega_1,1)| / |omega| of W = Q - F.")
+      .def(
+          "scale_decomposition",
+          [](const ZeitlinFluid& f, py::handle Q) {
+            const Eigen::MatrixXcd state = stateFromArray<SUN>("Q", Q, f.n());
+            Eigen::MatrixXcd workspace;
+            const Eigen::MatrixXcd W = f.hamiltonian().relativeVorticity(state, workspace);
+            const ScaleDecomposition d =
+                zeitlinScaleDecomposition(W, f.hamiltonian().streamMatrix(state));
+            return py::make_tuple(stateToArray<SUN>(d.steady), stateToArray<SUN>(d.remainder));
+          },
+          py::arg("Q"),
+          "(W_s, W_r): W = Q - F split into the part diagonal in the stream matrix's eigenbasis "
+          "(it commutes with psi; all of W at a steady state) and the rest.")
       .def(
           "planetary_vorticity",
           [](const ZeitlinFluid& f) {

@@ -117,6 +117,25 @@ def test_rotating_sphere_planetary_vorticity_and_the_rossby_haurwitz_drift():
     np.testing.assert_allclose(Q - F, exact, atol=1e-10)
 
 
+def test_field_diagnostics_sum_to_the_energy_and_enstrophy():
+    n = 9
+    fluid = ddb.zeitlin(n, 0.0, rotation=1.0, deformation_radius=0.5)
+    W = ddb.zeitlin_vorticity("random", n, 3)
+    Q = W + fluid.planetary_vorticity()
+    E, Z = fluid.energy_spectrum(Q), fluid.enstrophy_spectrum(Q)
+    assert E.shape == (n,) and Z.shape == (n,)
+    assert E.sum() == pytest.approx(fluid.fluid_energy(Q), rel=1e-12)
+    assert Z.sum() == pytest.approx(fluid.enstrophy(Q), rel=1e-12)
+    # gamma from the coefficients written out here: the l = 1 ones are at indices 1, 2, 3.
+    omega = fluid.omega_lm(W)
+    assert fluid.gamma(Q) == pytest.approx(np.linalg.norm(omega[1:4]) / np.linalg.norm(omega),
+                                           rel=1e-12)
+    Ws, Wr = fluid.scale_decomposition(Q)
+    np.testing.assert_allclose(Ws + Wr, W, atol=1e-13)
+    P = fluid.stream_matrix(Q)
+    assert np.linalg.norm(Ws @ P - P @ Ws) < 1e-12 * np.linalg.norm(Ws) * np.linalg.norm(P)
+
+
 def test_manakov_and_se3_casimirs():
     rng = np.random.default_rng(1)
     a = rng.standard_normal((5, 5))
