@@ -35,7 +35,11 @@ class ZeitlinFluid : public System {
     Eigen::MatrixXcd workspace;
     return basis_.coefficients(hamiltonian_.relativeVorticity(Q, workspace));
   }
-  double kappaSquared() const { return hamiltonian_.laplacian().kappaSquared(); }
+  /// E_l and Z_l of the state Q's relative vorticity (zeitlinSpectra).
+  ZeitlinSpectra spectra(py::handle Q) const {
+    const Eigen::MatrixXcd state = stateFromArray<SUN>("Q", Q, n());
+    return zeitlinSpectra(relativeCoefficients(state), hamiltonian_.laplacian().kappaSquared());
+  }
 
  private:
   explicit ZeitlinFluid(const SystemPointer<SUN>& system)
@@ -121,20 +125,12 @@ void bindZeitlin(py::module_& m) {
           py::arg("omega"), "W = sum omega_lm T_lm: the inverse of omega_lm().")
       .def(
           "energy_spectrum",
-          [](const ZeitlinFluid& f, py::handle Q) {
-            const Eigen::MatrixXcd state = stateFromArray<SUN>("Q", Q, f.n());
-            return zeitlinSpectra(f.relativeCoefficients(state), f.kappaSquared()).energy;
-          },
-          py::arg("Q"),
+          [](const ZeitlinFluid& f, py::handle Q) { return f.spectra(Q).energy; }, py::arg("Q"),
           "E_l = 1/2 sum_m omega_lm^2 / (l(l+1) + kappa^2), l = 0..N-1, of the relative vorticity "
           "W = Q - F: it sums to fluid_energy(Q) (systems/zeitlin_spectra.h).")
       .def(
           "enstrophy_spectrum",
-          [](const ZeitlinFluid& f, py::handle Q) {
-            const Eigen::MatrixXcd state = stateFromArray<SUN>("Q", Q, f.n());
-            return zeitlinSpectra(f.relativeCoefficients(state), f.kappaSquared()).enstrophy;
-          },
-          py::arg("Q"),
+          [](const ZeitlinFluid& f, py::handle Q) { return f.spectra(Q).enstrophy; }, py::arg("Q"),
           "Z_l = 1/2 sum_m omega_lm^2, l = 0..N-1, of W = Q - F: it sums to enstrophy(Q).")
       .def(
           "gamma",
