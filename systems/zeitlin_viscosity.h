@@ -37,8 +37,11 @@ struct ZeitlinViscosity {
       throwInvalid("drag", formatValue(drag), "must be finite and >= 0");
     }
   }
-  /// The decay rate of degree l: ν (l(l + 1))^p + γ.
+  /// Whether anything is damped (ν > 0 or γ > 0).
+  bool damps() const { return viscosity > 0 || drag > 0; }
+  /// The decay rate of degree l: ν (l(l + 1))^p + γ (γ alone for ν = 0, whatever p: no 0 · ∞).
   double rate(Eigen::Index l) const {
+    if (viscosity == 0) return drag;
     return viscosity * std::pow(double(l) * double(l + 1), order) + drag;
   }
 };

@@ -18,10 +18,12 @@ namespace ddb::fluid {
 namespace {
 
 // The layout's version: a checkpoint of another layout is refused, not misread. Layout 3
-// added history.csv's hash, layout 4 the fluid's physics (--rotation, --deformation-radius); a
-// checkpoint of layout 2 or 3 is still read (without the hash, or on a resting sphere), so that
-// a run begun by an earlier build resumes.
-constexpr std::int32_t kLayout = 4;
+// added history.csv's hash, layout 4 the fluid's physics (--rotation, --deformation-radius),
+// layout 5 its damping (--viscosity, --hyperviscosity-order, --drag); a checkpoint of layout 2,
+// 3 or 4 is still read (without the hash, on a resting sphere, undamped), so that a run begun by
+// an earlier build resumes.
+constexpr std::int32_t kLayout = 5;
+constexpr std::int32_t kLayoutWithoutDamping = 4;
 constexpr std::int32_t kLayoutWithoutPhysics = 3;
 constexpr std::int32_t kLayoutWithoutDigest = 2;
 constexpr const char* kTag = "fluid-relax checkpoint";
@@ -42,10 +44,21 @@ void putOptions(BinaryRecordWriter& out, const Options& o) {
   out.put(o.animate);
   out.put(o.rotation);
   out.put(o.deformation_radius);
+  out.put(o.viscosity);
+  out.put(o.hyperviscosity_order);
+  out.put(o.drag);
 }
 
-// `physics`: the record has the physics' flags (layout 4 and the run definition).
-void getOptions(BinaryRecordReader& in, Options& o, bool physics) {
+/// Which of the physics' entries a record holds: none (layouts 2, 3), the rotation and the
+/// deformation radius (layout 4), or those and the damping (layout 5, the run definition).
+enum class PhysicsRecord { kNone, kWithoutDamping, kAll };
+
+PhysicsRecord physicsRecordOf(std::int32_t layout) {
+  if (layout == kLayoutWithoutDamping) return PhysicsRecord::kWithoutDamping;
+  return layout == kLayout ? PhysicsRecord::kAll : PhysicsRecord::kNone;
+}
+
+void getOptions(BinaryRecordReader& in, Options& o, PhysicsRecord physics) {
   in.expectTag("options");
   in.get(o.n);
   in.get(o.steps);
@@ -59,9 +72,14 @@ void getOptions(BinaryRecordReader& in, Options& o, bool physics) {
   in.get(o.newton);
   in.get(o.h5);
   in.get(o.animate);
-  if (physics) {
+  if (physics != PhysicsRecord::kNone) {
     in.get(o.rotation);
     in.get(o.deformation_radius);
+  }
+  if (physics == PhysicsRecord::kAll) {
+    in.get(o.viscosity);
+    in.get(o.hyperviscosity_order);
+    in.get(o.drag);
   }
   // What a command line could not have given (a record altered and its checksum made anew).
   if (o.every < 1 || o.steps < 0 || o.steps > kMaxSteps) {
@@ -102,9 +120,12 @@ void putSettingsBesidesW0(BinaryRecordWriter& out, const Settings& s) {
   out.put(s.init);
   out.put(s.physics.rotation);
   out.put(s.physics.deformation_radius);
+  out.put(s.viscosity.viscosity);
+  out.put(static_cast<std::int32_t>(s.viscosity.order));
+  out.put(s.viscosity.drag);
 }
 
-void getSettingsBesidesW0(BinaryRecordReader& in, Settings& s, bool physics) {
+void getSettingsBesidesW0(BinaryRecordReader& in, Settings& s, PhysicsRecord physics) {
   in.get(s.alpha);
   in.get(s.h);
   in.get(s.default_h);
@@ -116,16 +137,24 @@ void getSettingsBesidesW0(BinaryRecordReader& in, Settings& s, bool physics) {
   in.get(s.relax.control.tolerance);
   in.get(s.relax.newton);
   in.get(s.init);
-  if (physics) {
+  if (physics != PhysicsRecord::kNone) {
     in.get(s.physics.rotation);
     in.get(s.physics.deformation_radius);
   }
+  if (physics == PhysicsRecord::kAll) {
+    in.get(s.viscosity.viscosity);
+    s.viscosity.order = in.get<std::int32_t>();
+    in.get(s.viscosity.drag);
+  }
+  const ZeitlinViscosity& v = s.viscosity;
   const bool in_domain = std::isfinite(s.alpha) && s.h > 0 && std::isfinite(s.h) && s.steps >= 1 &&
                          s.steps <= kMaxSteps && s.relax.max_steps >= 1 &&
                          s.relax.max_steps <= kMaxSteps && s.relax.tolerance >= 0 &&
                          s.relax.tolerance < 1 && !(s.relax.t_end <= 0) &&
                          s.relax.control.tolerance > 0 && s.relax.control.tolerance < 1 &&
-                         std::isfinite(s.physics.rotation) && s.physics.deformation_radius > 0;
+                         std::isfinite(s.physics.rotation) && s.physics.deformation_radius > 0 &&
+                         v.viscosity >= 0 && std::isfinite(v.viscosity) && v.order >= 1 &&
+                         v.order <= kMaxHyperviscosityOrder && v.drag >= 0 && std::isfinite(v.drag);
   if (!in_domain) throw CorruptRecord("settings out of their domain");
 }
 
@@ -135,7 +164,7 @@ void putSettings(BinaryRecordWriter& out, const Settings& s) {
   putSettingsBesidesW0(out, s);
 }
 
-void getSettings(BinaryRecordReader& in, Settings& s, bool physics) {
+void getSettings(BinaryRecordReader& in, Settings& s, PhysicsRecord physics) {
   in.expectTag("settings");
   in.get(s.W0);
   getSettingsBesidesW0(in, s, physics);
@@ -167,11 +196,12 @@ Checkpoint parseCheckpoint(const std::string& dir, std::string bytes) {
     BinaryRecordReader in = BinaryRecordReader::unseal(std::move(bytes));
     in.expectTag(kTag);
     const auto layout = in.get<std::int32_t>();
-    if (layout != kLayout && layout != kLayoutWithoutPhysics && layout != kLayoutWithoutDigest) {
+    if (layout != kLayout && layout != kLayoutWithoutDamping && layout != kLayoutWithoutPhysics &&
+        layout != kLayoutWithoutDigest) {
       throw CorruptRecord("layout " + std::to_string(layout) + ", this build reads " +
                           std::to_string(kLayout));
     }
-    const bool physics = layout == kLayout;
+    const PhysicsRecord physics = physicsRecordOf(layout);
     getOptions(in, c.options, physics);
     getGivenFlags(in, c.given);
     getSettings(in, c.settings, physics);
@@ -241,9 +271,9 @@ void putRunDefinition(BinaryRecordWriter& out, const Options& o, const GivenFlag
 }
 
 void getRunDefinition(BinaryRecordReader& in, Options& o, GivenFlags& given, Settings& s) {
-  getOptions(in, o, true);
+  getOptions(in, o, PhysicsRecord::kAll);
   getGivenFlags(in, given);
-  getSettingsBesidesW0(in, s, true);
+  getSettingsBesidesW0(in, s, PhysicsRecord::kAll);
 }
 
 void writeCheckpoint(const std::filesystem::path& out, const BinaryRecordWriter& record) {

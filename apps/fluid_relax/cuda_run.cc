@@ -18,6 +18,7 @@ class CudaPlacement : public OneProcess {
   using Group = CudaSUN;
   using State = CudaMatrix;
   static constexpr bool kSpectrumEveryState = false;
+  static constexpr bool kDamping = false;  // the viscous flow is dense (ZeitlinViscousFlow)
 
   CudaPlacement(Eigen::Index n, double alpha, const ZeitlinPhysics& physics)
       : OneProcess(n),

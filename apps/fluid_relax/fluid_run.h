@@ -11,6 +11,9 @@
 //   n()                             N, on every process
 //   kSpectrumEveryState             whether every state's spectrum drift is measured (the CPU),
 //                                   or only the history rows' (no step waits for an eigensolver)
+//   kDamping                        whether damped(method, viscosity) exists: the viscous flow
+//                                   (ZeitlinViscousFlow) runs on this placement's states
+//   damped(method, viscosity)       the method Strang-split with the exact viscous flow
 //   system()                        the fluid whose states are State
 //   hostFluid()                     the same fluid on this process's memory (the writer's)
 //   initialState(W0)                W₀ where the states live (collective)
@@ -51,6 +54,7 @@
 #include <string>
 
 #include "common/atomic_file.h"
+#include "common/cli.h"
 #include "common/energy_rises.h"
 #include "common/exit_status.h"
 #include "common/json.h"
@@ -68,6 +72,20 @@
 #include "fluid_relax/summary.h"
 
 namespace ddb::fluid {
+
+/// `method` Strang-split with the viscous flow of s.viscosity where the placement has it; else
+/// a UsageError naming the damping's flag.
+template <class Placement, class G = typename Placement::Group>
+std::unique_ptr<OneStepMethod<G>> damped(Placement& where, std::unique_ptr<OneStepMethod<G>> method,
+                                         const Options& o, const Settings& s) {
+  if constexpr (Placement::kDamping) {
+    return where.damped(std::move(method), s.viscosity);
+  } else {
+    const bool viscous = s.viscosity.viscosity > 0;
+    app::usageError(viscous ? "--viscosity" : "--drag", viscous ? o.viscosity : o.drag,
+                    "viscosity and drag run on the CPU only so far (fluid-relax --device cpu)");
+  }
+}
 
 /// The run of `o`, `s` (a new one, or with `resume` the checkpoint's) on `where`; returns the
 /// exit status. A resumed run's folder is locked by the caller; a new run's is claimed here into
@@ -94,6 +112,7 @@ int runFluidRelaxation(Placement& where, const Options& o, const Settings& s,
         relaxing.emplace(*system, W0, s.relax);
       } else {
         method = makeMethod<G>(o.method, system);
+        if (s.viscosity.damps()) method = damped(where, std::move(method), o, s);
         relaxing.emplace(*method, *system, W0, s.h, s.relax);
       }
     } catch (const InvalidArgument& e) {
@@ -143,7 +162,12 @@ int runFluidRelaxation(Placement& where, const Options& o, const Settings& s,
                                                        : fmt::format("at most {}", s.steps))
             : fmt::format("{} steps of h = {}{} to t = {}", s.steps, s.h,
                           s.default_h ? " (default)" : "", static_cast<double>(s.steps) * s.h);
-    spdlog::info("N = {}, alpha = {}, {}, {}{}: {}", n, s.alpha, init_text, o.method,
+    const ZeitlinViscosity& damping = s.viscosity;
+    const std::string stepping =
+        damping.damps() ? fmt::format("{} with viscosity {} (order {}) and drag {}", o.method,
+                                      damping.viscosity, damping.order, damping.drag)
+                        : o.method;
+    spdlog::info("N = {}, alpha = {}, {}, {}{}: {}", n, s.alpha, init_text, stepping,
                  where.describe(), steps_text);
   }
   app::warnAboutSlowBlasKernels();

@@ -89,6 +89,14 @@ void readNewton(const CLI::App& cli, const Options& o, Settings& s) {
 void readRelaxOptions(const CLI::App& cli, const Options& o, Settings& s) {
   app::readRelaxFlags(o.relax, s.relax);
   if (o.newton) readNewton(cli, o, s);
+  // A Newton search looks for a steady state of the Lie–Poisson flow, and the step control's
+  // model is the double bracket's energy rate: neither knows the damping.
+  if (s.viscosity.damps() && (o.newton || o.relax.adaptive)) {
+    const bool viscous = s.viscosity.viscosity > 0;
+    app::usageError(viscous ? "--viscosity" : "--drag", viscous ? o.viscosity : o.drag,
+                    std::string(o.newton ? "--newton" : "--adaptive") +
+                        " does not take viscosity or drag (time steps of fixed h do)");
+  }
   if (o.relax.adaptive && !findMethod(o.method)->keeps_casimirs) {
     app::usageError("--adaptive", o.method,
                     "needs a method that keeps the Casimirs (the DDB family), not this --method");
@@ -98,7 +106,8 @@ void readRelaxOptions(const CLI::App& cli, const Options& o, Settings& s) {
   }
 }
 
-/// --rotation (finite) and --deformation-radius (> 0, finite) into s.physics.
+/// --rotation (finite) and --deformation-radius (> 0, finite) into s.physics; --viscosity,
+/// --drag (finite, >= 0) and --hyperviscosity-order into s.viscosity.
 void readPhysics(const Options& o, Settings& s) {
   s.physics.rotation = app::parseNumber("--rotation", o.rotation, o.rotation);
   if (!o.deformation_radius.empty()) {
@@ -110,6 +119,19 @@ void readPhysics(const Options& o, Settings& s) {
     }
     s.physics.deformation_radius = radius;
   }
+  const auto nonNegative = [](const char* flag, const std::string& text) {
+    const double value = app::parseNumber(flag, text, text);
+    if (!(value >= 0 && std::isfinite(value)))
+      app::usageError(flag, text, "must be finite and >= 0");
+    return value;
+  };
+  s.viscosity.viscosity = nonNegative("--viscosity", o.viscosity);
+  s.viscosity.drag = nonNegative("--drag", o.drag);
+  if (o.hyperviscosity_order < 1 || o.hyperviscosity_order > kMaxHyperviscosityOrder) {
+    app::usageError("--hyperviscosity-order", std::to_string(o.hyperviscosity_order),
+                    "must be in [1, " + std::to_string(kMaxHyperviscosityOrder) + "]");
+  }
+  s.viscosity.order = static_cast<int>(o.hyperviscosity_order);
 }
 
 /// The text of a run-defining flag that the run took by default ("" if it has none).
@@ -118,6 +140,9 @@ std::string defaultText(const Checkpoint& c, const std::string& flag) {
   if (flag == "--n") return std::to_string(o.n);
   if (flag == "--alpha") return o.alpha;
   if (flag == "--rotation") return o.rotation;
+  if (flag == "--viscosity") return o.viscosity;
+  if (flag == "--drag") return o.drag;
+  if (flag == "--hyperviscosity-order") return std::to_string(o.hyperviscosity_order);
   if (flag == "--method") return o.method;
   if (flag == "--init") return o.init;
   if (flag == "--every") return std::to_string(o.every);

@@ -5,6 +5,7 @@
 
 #include <ddb/integrators/drivers/relax.h>
 #include <ddb/systems/zeitlin_hamiltonian.h>
+#include <ddb/systems/zeitlin_viscosity.h>
 
 #include <CLI/CLI.hpp>
 #include <Eigen/Core>
@@ -21,7 +22,8 @@ using Matrix = Eigen::MatrixXcd;
 struct Settings {
   Matrix W0;  // the relative vorticity
   double alpha = 0.0, h = 0.0;
-  ZeitlinPhysics physics;  // --rotation, --deformation-radius
+  ZeitlinPhysics physics;      // --rotation, --deformation-radius
+  ZeitlinViscosity viscosity;  // --viscosity, --hyperviscosity-order, --drag
   bool default_h = false;
   long steps = 0;
   /// When relax() stops: --until-steady, the cap (--steps, or --t-end's time with
@@ -39,7 +41,8 @@ struct Settings {
 };
 
 /// Every check of the input (docs/reference/bad-inputs.md) in the order the messages name them:
-/// the method, α, --steps or --t-end, --until-steady, --adaptive and --adaptive-tol, W0
+/// the method, α, the physics (--rotation to --drag), --steps or --t-end, --until-steady,
+/// --adaptive and --adaptive-tol, W0
 /// (--init-file read and checked, or generated), h (given or the default) and a first step that
 /// does not overflow.
 Settings settings(const CLI::App& cli, const Options& o, Eigen::Index max_n);

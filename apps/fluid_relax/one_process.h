@@ -3,7 +3,9 @@
 // process's memory (the CUDA placement, fluid_relax/cuda_run.cc, on one GPU's).
 #pragma once
 
+#include <ddb/integrators/methods/strang_splitting.h>
 #include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_viscosity.h>
 #include <spdlog/fmt/fmt.h>
 
 #include <Eigen/Core>
@@ -61,11 +63,13 @@ class CpuPlacement : public OneProcess {
   using Group = SUN;
   using State = Matrix;
   static constexpr bool kSpectrumEveryState = true;
+  static constexpr bool kDamping = true;
 
   CpuPlacement(Eigen::Index n, double alpha, const ZeitlinPhysics& physics)
       : OneProcess(n),
         fluid_(makeZeitlinFluid(n, alpha, physics)),
-        diagnostics_(dynamic_cast<const ZeitlinHamiltonian&>(fluid_->hamiltonian())) {}
+        hamiltonian_(dynamic_cast<const ZeitlinHamiltonian&>(fluid_->hamiltonian())),
+        diagnostics_(hamiltonian_) {}
 
   const std::shared_ptr<const LiePoissonSystem<SUN>>& system() const { return fluid_; }
   const std::shared_ptr<const LiePoissonSystem<SUN>>& hostFluid() const { return fluid_; }
@@ -75,9 +79,16 @@ class CpuPlacement : public OneProcess {
     return fmt::format("  |[P,W]| {:.3g}", diagnostics_.commutatorNorm(W));
   }
   std::string device() const { return "cpu"; }
+  std::unique_ptr<OneStepMethod<SUN>> damped(std::unique_ptr<OneStepMethod<SUN>> method,
+                                             const ZeitlinViscosity& viscosity) const {
+    return std::make_unique<StrangSplitting<SUN>>(
+        std::move(method),
+        std::make_unique<ZeitlinViscousFlow>(n(), viscosity, hamiltonian_.planetaryVorticity()));
+  }
 
  private:
   std::shared_ptr<const LiePoissonSystem<SUN>> fluid_;
+  const ZeitlinHamiltonian& hamiltonian_;
   ZeitlinDiagnostics diagnostics_;
 };
 

@@ -36,6 +36,17 @@ void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n) {
   cli.add_option("--deformation-radius", o.deformation_radius,
                  "quasi-geostrophic flow with deformation radius L_d > 0 (in sphere radii): the "
                  "stream matrix (Laplacian - 1/L_d^2)^-1 (W); default none (Euler)");
+  cli.add_option("--viscosity", o.viscosity,
+                 "viscosity nu >= 0: dW/dt gains nu (-1)^(p+1) Laplacian^p W, solved exactly "
+                 "and Strang-split around --method (CPU only; leaves the orbit by design)")
+      ->capture_default_str();
+  cli.add_option("--hyperviscosity-order", o.hyperviscosity_order,
+                 "the order p of --viscosity, 1 <= p <= " +
+                     std::to_string(kMaxHyperviscosityOrder) + " (1: Laplacian viscosity)")
+      ->capture_default_str()
+      ->check(app::fitsIn<long>());
+  cli.add_option("--drag", o.drag, "linear drag gamma >= 0: dW/dt gains -gamma W, as --viscosity")
+      ->capture_default_str();
   cli.add_option("--h", o.h,
                  "step size (default min(" + app::number(kZeitlinContractionRate) +
                      " hbar/||P0||_2, " + app::number(kZeitlinStiffness) +

@@ -20,6 +20,9 @@ constexpr const char* kApp = "fluid-relax";
 // state's spectrum is computed for spectrum_drift.
 constexpr Eigen::Index kMaxN = 1024;
 constexpr long kMaxSteps = 1000000000L;
+// --hyperviscosity-order's largest p: the field's runs use p <= 8 (GLIFS, quflow), and
+// (l(l + 1))^p stays finite for every l <= SUN::kMaxN.
+constexpr long kMaxHyperviscosityOrder = 16;
 // Without --checkpoint-every, a checkpoint after the first step that ends this long after
 // the last one: a killed run loses at most about this much work.
 constexpr double kCheckpointSeconds = 300.0;
@@ -37,6 +40,10 @@ struct Options {
   /// The sphere's rotation Ω and quasi-geostrophy's deformation radius (ZeitlinPhysics; empty
   /// radius: none, Euler).
   std::string rotation = "0", deformation_radius;
+  /// Viscosity ν, its order p (1: Laplacian, > 1 hyperviscosity) and linear drag γ
+  /// (ZeitlinViscosity), by Strang splitting around --method.
+  std::string viscosity = "0", drag = "0";
+  long hyperviscosity_order = 1;
   std::string out = "results-fluid";
   app::RelaxFlags relax;      // --until-steady, --adaptive, --adaptive-tol
   bool newton = false;        // --newton: OrbitNewton's search instead of steps

@@ -46,6 +46,9 @@ app::Json runSummary(const Options& o, const Settings& s, const LiePoissonSystem
   summary["deformation_radius"] = std::isinf(s.physics.deformation_radius)
                                       ? app::Json()
                                       : app::Json(s.physics.deformation_radius);
+  summary["viscosity"] = s.viscosity.viscosity;
+  summary["hyperviscosity_order"] = s.viscosity.order;
+  summary["drag"] = s.viscosity.drag;
   const Eigen::MatrixXcd Q0 = s.initialState();
   summary["energy_initial"] = diagnostics.energy(Q0);
   summary["energy_final"] = diagnostics.energy(result.final);

@@ -128,6 +128,19 @@ TEST_F(Checkpoint, AnAdaptiveRunKilledAndResumedIsTheUninterruptedOne) {
   expectSameOutputs(whole, out);
 }
 
+// A damped run (--viscosity, --drag, on a rotating sphere) killed and resumed writes the
+// uninterrupted run's files: the checkpoint keeps the damping (layout 5).
+TEST_F(Checkpoint, ADampedRunKilledAndResumedIsTheUninterruptedOne) {
+  const std::string damped =
+      kRun + " --steps 4000 --rotation 0.7 --viscosity 1e-3 --hyperviscosity-order 2 --drag 0.01";
+  const fs::path whole = freshFolder("damped_whole"), out = freshFolder("damped_killed");
+  ASSERT_EQ(run(damped + " --out " + whole.string()).status, 0);
+  ASSERT_EQ(startAndSignal(damped, out, SIGKILL), -SIGKILL);
+  ASSERT_FALSE(fs::exists(out / "summary.json")) << "the run finished before the kill";
+  ASSERT_EQ(run("--quiet --resume " + out.string()).status, 0);
+  expectSameOutputs(whole, out);
+}
+
 /// The folder's files and their bytes.
 std::map<std::string, std::string> contentsOf(const fs::path& dir) {
   std::map<std::string, std::string> files;
@@ -152,6 +165,9 @@ TEST_F(Checkpoint, RefusesACorruptCheckpointAFlagThatChangesTheRunAndAReachedCap
   refused("--steps 200 --every 3", "--every = 3");
   refused("--steps 200 --rotation 1", "--rotation = 1: a resumed run keeps its settings");
   refused("--steps 200 --deformation-radius 2", "--deformation-radius = 2");
+  refused("--steps 200 --viscosity 1e-4", "--viscosity = 1e-4: a resumed run keeps its settings");
+  refused("--steps 200 --hyperviscosity-order 2", "--hyperviscosity-order = 2");
+  refused("--steps 200 --drag 0.1", "--drag = 0.1");
   refused("", "the run has taken 120 steps, its cap 120");
   refused("--steps 100", "the run has taken 120 steps");
   refused("--steps 200 --t-end 9", "--steps, --t-end");

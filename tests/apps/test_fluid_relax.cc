@@ -365,6 +365,51 @@ TEST(FluidRelax, RotationAndDeformationRadiusCarryARossbyHaurwitzWave) {
   const auto plain = readJson(resting / "summary.json");
   EXPECT_EQ(jsonNumber(plain, "rotation"), 0.0);
   EXPECT_TRUE(plain["deformation_radius"].is_null());
+  EXPECT_EQ(jsonNumber(plain, "viscosity"), 0.0);
+  EXPECT_EQ(jsonNumber(plain, "drag"), 0.0);
+}
+
+// --viscosity, --hyperviscosity-order and --drag: a field of one degree l is steady for the Euler
+// part ([P, W] = 0, so the double bracket does nothing either), and the damping multiplies it by
+// exp(−(ν (l(l + 1))^p + γ) t), the closed form (docs/reference/conventions.md §2). rk4's stages
+// vanish there, so the run is that closed form to rounding (a DDB step moves such a field by its
+// local error: ddb-cay by about 3e-6 per step of h = 0.05 at N = 8). On a rotating
+// sphere the same field is a Rossby–Haurwitz wave, rotated by c t and damped alike.
+TEST(FluidRelax, ViscosityAndDragDampAFieldOfOneDegreeByTheClosedForm) {
+  const Eigen::Index n = 8;
+  const ddb::SphericalHarmonicBasis basis{ddb::HoppeYauLaplacian(n)};
+  const fs::path files = freshFolder("damped_input");
+  fs::create_directories(files);
+  const Matrix steady = basis.element(2, 1) + 0.5 * basis.element(2, -2);
+  writeMatrix(files / "steady.csv", steady);
+  const fs::path out = freshFolder("damped");
+  const AppResult r =
+      run("--quiet --alpha 0.5 --viscosity 0.01 --hyperviscosity-order 2 "
+          "--drag 0.05 --h 0.05 --steps 40 --method rk4 --init-file " +
+          (files / "steady.csv").string() + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const double rate = 0.01 * 36.0 + 0.05;  // l = 2: (l(l + 1))² = 36
+  EXPECT_LT((readMatrix(out / "W_final.csv") - std::exp(-rate * 2.0) * steady).norm(),
+            1e-12 * steady.norm());
+  const auto summary = readJson(out / "summary.json");
+  EXPECT_EQ(jsonNumber(summary, "viscosity"), 0.01);
+  EXPECT_EQ(jsonNumber(summary, "hyperviscosity_order"), 2);
+  EXPECT_EQ(jsonNumber(summary, "drag"), 0.05);
+
+  const Matrix wave = basis.element(3, 2) + 0.6 * basis.element(3, -2);
+  writeMatrix(files / "wave.csv", wave);
+  const fs::path rotating = freshFolder("damped_wave");
+  const AppResult w =
+      run("--quiet --alpha 0 --rotation 1.5 --viscosity 0.02 --method rk4 "
+          "--h 0.01 --steps 300 --init-file " +
+          (files / "wave.csv").string() + " --out " + rotating.string());
+  ASSERT_EQ(w.status, 0) << w.output;
+  const double c = 2.0 * 1.5 / 12.0, t = 3.0;
+  Eigen::VectorXcd u(n);
+  for (Eigen::Index j = 0; j < n; ++j) u(j) = std::polar(1.0, double(j) * c * t);
+  const Matrix expected =
+      std::exp(-0.02 * 12.0 * t) * u.asDiagonal() * wave * u.adjoint().asDiagonal();
+  EXPECT_LT((readMatrix(rotating / "W_final.csv") - expected).norm(), 1e-9 * wave.norm());
 }
 
 TEST(FluidRelax, FailedSolveKeepsTheHistoryPrefixAndExitsOne) {
@@ -423,6 +468,16 @@ TEST(FluidRelax, BadInputExitsTwoNamingTheFlagAndWritesNothing) {
       {"--deformation-radius 0 --steps 2", "--deformation-radius"},
       {"--deformation-radius -1 --steps 2", "--deformation-radius"},
       {"--deformation-radius inf --steps 2", "--deformation-radius"},
+      {"--viscosity -1e-3 --steps 2", "--viscosity"},
+      {"--viscosity nan --steps 2", "--viscosity"},
+      {"--viscosity inf --steps 2", "--viscosity"},
+      {"--drag -0.1 --steps 2", "--drag"},
+      {"--drag inf --steps 2", "--drag"},
+      {"--hyperviscosity-order 0 --steps 2", "--hyperviscosity-order"},
+      {"--hyperviscosity-order 17 --steps 2", "--hyperviscosity-order"},
+      {"--hyperviscosity-order 1.5 --steps 2", "--hyperviscosity-order"},
+      {"--viscosity 1e-3 --newton --until-steady 1e-6 --steps 2", "--viscosity"},
+      {"--drag 0.1 --adaptive --steps 2", "--drag"},
       {"--steps 0", "--steps"},
       {"--steps -1", "--steps"},
       {"--steps 2 --t-end 1", "--steps"},

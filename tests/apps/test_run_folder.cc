@@ -219,22 +219,29 @@ TEST_F(RunFolder, ACheckpointThatIsNoRegularFileOrHoldsSizesBeyondItIsRefused) {
   expectSameOutputs(*reference_, out);
 }
 
-TEST_F(RunFolder, CheckpointsOfLayoutsTwoAndThreeResume) {
-  // Layout 3 (before the fluid's physics): the same record without the options' two texts
-  // (--rotation "0" and --deformation-radius "", the last before "given flags") and the settings'
-  // two numbers (the last before "tally"). Layout 2 (before history.csv's hash) also without the
-  // hash after the "files" part's two lengths. The layout number follows the record's tag.
+TEST_F(RunFolder, CheckpointsOfLayoutsTwoThreeAndFourResume) {
+  // Layout 4 (before the fluid's damping): the same record without the options' three entries
+  // (--viscosity "0", --hyperviscosity-order 1 and --drag "0", the last before "given flags") and
+  // the settings' three numbers (ν, p as a 32-bit integer and γ, the last before "tally"). Layout 3
+  // (before the fluid's physics) also without the options' two texts (--rotation "0" and
+  // --deformation-radius "") and the settings' two numbers before those. Layout 2 (before
+  // history.csv's hash) also without the hash after the "files" part's two lengths. The layout
+  // number follows the record's tag.
   const auto beforeTag = [](const std::string& bytes, const std::string& name) {
     return afterTag(bytes, name) - sizeof(std::uint64_t) - name.size();
   };
-  for (const std::int32_t layout : {3, 2}) {
+  for (const std::int32_t layout : {4, 3, 2}) {
     const fs::path out = finished("layout" + std::to_string(layout));
     const fs::path checkpoint = out / "checkpoint.ddb";
     const std::string sealed = readFile(checkpoint);
     std::string bytes = sealed.substr(0, sealed.size() - 8);
     if (layout == 2) bytes.erase(afterTag(bytes, "files") + 16, 8);
-    bytes.erase(beforeTag(bytes, "tally") - 16, 16);
-    bytes.erase(beforeTag(bytes, "given flags") - 17, 17);
+    bytes.erase(beforeTag(bytes, "tally") - 20, 20);
+    bytes.erase(beforeTag(bytes, "given flags") - 26, 26);
+    if (layout <= 3) {
+      bytes.erase(beforeTag(bytes, "tally") - 16, 16);
+      bytes.erase(beforeTag(bytes, "given flags") - 17, 17);
+    }
     std::memcpy(bytes.data() + afterTag(bytes, "fluid-relax checkpoint"), &layout, sizeof layout);
     const std::uint64_t sum = ddb::fnv1a64(bytes);
     bytes.append(reinterpret_cast<const char*>(&sum), sizeof sum);
