@@ -114,8 +114,8 @@ void bindZeitlin(py::module_& m) {
           py::arg("W"),
           "The real spherical-harmonic coefficients omega_lm = Re tr(T_lm^H W)/N of W, N^2 of "
           "them, omega_lm at index l^2 + l + m (l = 0..N-1, |m| <= l): the vorticity on the "
-          "sphere is sum omega_lm Y_lm with real, orthonormal Y_lm "
-          "(systems/spherical_harmonic_basis.h).")
+          "sphere is sqrt(4 pi) sum omega_lm Y_lm with real, orthonormal Y_lm "
+          "(systems/spherical_harmonic_grid.h).")
       .def(
           "vorticity",
           [](const ZeitlinFluid& f, py::handle omega) {

@@ -10,7 +10,8 @@ history.png           energy, enstrophy, ||[P,W]||_F (log) and spectrum drift (l
                       omitted) against t, from history.csv; for a Newton search (--newton),
                       whose rows all have t = 0 and no h, against the iteration k
 
-The vorticity is omega(theta, phi) = sum omega_lm Y_lm(theta, phi) with the real spherical
+The vorticity is omega(theta, phi) = sqrt(4 pi) sum omega_lm Y_lm(theta, phi), the function the
+matrix quantises (systems/spherical_harmonic_grid.h: X_3 is cos theta), with the real spherical
 harmonics of docs/reference/conventions.md §2 (theta colatitude, phi longitude):
   m > 0: sqrt(2) (-1)^m Re Y_l^m,  m < 0: sqrt(2) (-1)^m Im Y_l^|m|,  m = 0: Y_l^0,
 Y_l^m being scipy's complex harmonics (Condon-Shortley phase), so that Y_10, Y_11, Y_1-1
@@ -50,7 +51,8 @@ def save(fig, out, name):
 
 
 def vorticity(omega, theta, phi, l_max):
-    """sum over l <= l_max of omega[(l, m)] Y_lm on the grid theta (colatitudes) x phi."""
+    """sqrt(4 pi) times the sum over l <= l_max of omega[(l, m)] Y_lm on the grid theta
+    (colatitudes) x phi."""
     field = np.zeros((theta.size, phi.size))
     by_m = {}
     for (l, m), w in omega.items():
@@ -69,7 +71,7 @@ def vorticity(omega, theta, phi, l_max):
             else:
                 sin_part += w * math.sqrt(2.0) * (-1) ** m_abs * y
         field += np.outer(cos_part, np.cos(m_abs * phi)) + np.outer(sin_part, np.sin(m_abs * phi))
-    return field
+    return math.sqrt(4.0 * math.pi) * field
 
 
 def read_omega(path):

@@ -1,7 +1,8 @@
 // The real spherical-harmonic basis T_lm of su(N) ⊕ i·I (docs/reference/conventions.md §2): the
 // eigenmatrices of the Hoppe–Yau Laplacian, ΔT_lm = −l(l+1) T_lm, orthonormal for
 // Re tr(AᴴB)/N, so that ω_lm = Re tr(T_lmᴴ W)/N are the real spherical-harmonic
-// coefficients of the vorticity W: ω(θ, φ) = Σ ω_lm Y_lm(θ, φ).
+// coefficients of the vorticity W: ω(θ, φ) = √(4π) Σ ω_lm Y_lm(θ, φ), Y_lm orthonormal
+// (systems/spherical_harmonic_grid.h, which evaluates it).
 // For each m >= 0 the eigenvectors v_{l,m} (l = m..N−1) of the m-th diagonal block are
 // scaled to ‖v‖ = √N with the sign of their last component (−1)^m, and
 //   T_l0 = i diag(v_{l,0}),

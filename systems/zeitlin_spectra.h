@@ -50,6 +50,30 @@ inline double zeitlinGamma(const Eigen::VectorXd& omega) {
   return all > 0 ? omega.segment(SphericalHarmonicBasis::index(1, -1), 3).norm() / all : 0.0;
 }
 
+/// γ of a matrix W directly, from the three l = 1 harmonics: ω_1m = Re tr(T_1mᴴ W)/N and
+/// |ω|² = ‖W‖²_F/N (the T_lm are orthonormal for Re tr(AᴴB)/N). O(N²) a call, where the
+/// coefficients of every degree cost O(N³): for a history row at every step.
+class ZeitlinGammaFromMatrix {
+ public:
+  explicit ZeitlinGammaFromMatrix(const SphericalHarmonicBasis& basis)
+      : n_(basis.size()),
+        harmonics_{basis.element(1, -1), basis.element(1, 0), basis.element(1, 1)} {}
+
+  double operator()(const Eigen::MatrixXcd& W) const {
+    double l1 = 0.0;
+    for (const Eigen::MatrixXcd& T : harmonics_) {
+      const double omega = T.cwiseProduct(W.conjugate()).sum().real() / double(n_);
+      l1 += omega * omega;
+    }
+    const double all = W.norm() / std::sqrt(double(n_));
+    return all > 0 ? std::sqrt(l1) / all : 0.0;
+  }
+
+ private:
+  Eigen::Index n_;
+  Eigen::MatrixXcd harmonics_[3];
+};
+
 /// W_s and W_r of the canonical scale decomposition.
 struct ScaleDecomposition {
   Eigen::MatrixXcd steady, remainder;

@@ -19,9 +19,10 @@ namespace {
 
 // The layout's version: a checkpoint of another layout is refused, not misread. Layout 3
 // added history.csv's hash, layout 4 the fluid's physics (--rotation, --deformation-radius),
-// layout 5 its damping (--viscosity, --hyperviscosity-order, --drag); a checkpoint of layout 2,
-// 3 or 4 is still read (without the hash, on a resting sphere, undamped), so that a run begun by
-// an earlier build resumes.
+// layout 5 its damping (--viscosity, --hyperviscosity-order, --drag) and the field diagnostics of
+// the files (history.csv's gamma, fluid.hdf5's spectra, scale decomposition and grid); a
+// checkpoint of layout 2, 3 or 4 is still read (without the hash, on a resting sphere, undamped,
+// files without the diagnostics), so that a run begun by an earlier build resumes.
 constexpr std::int32_t kLayout = 5;
 constexpr std::int32_t kLayoutWithoutDamping = 4;
 constexpr std::int32_t kLayoutWithoutPhysics = 3;
@@ -215,6 +216,9 @@ Checkpoint parseCheckpoint(const std::string& dir, std::string bytes) {
     in.get(c.files.history_bytes);
     in.get(c.files.h5_frames);
     if (layout != kLayoutWithoutDigest) c.files.history_digest = in.get<std::uint64_t>();
+    const auto diagnostics = layout == kLayout ? in.get<std::uint8_t>() : std::uint8_t{0};
+    if (diagnostics > 1) throw CorruptRecord("files out of their domain");
+    c.files.field_diagnostics = diagnostics == 1;
     if (c.files.h5_frames < 0 || (c.files.h5_frames > 0 && !(c.options.h5 || c.options.animate))) {
       throw CorruptRecord("files out of their domain");
     }
@@ -260,6 +264,7 @@ BinaryRecordWriter beginCheckpoint(const Options& o, const GivenFlags& given, co
   record.put(files.history_bytes);
   record.put(files.h5_frames);
   record.put(files.history_digest.value_or(kFnv1a64Basis));
+  record.put(static_cast<std::uint8_t>(files.field_diagnostics ? 1 : 0));
   return record;
 }
 

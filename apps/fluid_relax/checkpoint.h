@@ -51,6 +51,10 @@ struct FileLengths {
   /// for this run's: absent from the checkpoints of layout 2, which a resume still reads.
   std::optional<std::uint64_t> history_digest;
   std::int64_t h5_frames = 0;  // fluid.hdf5's frames likewise (0 without --h5)
+  /// Whether history.csv has the gamma column and fluid.hdf5 the field diagnostics: not in
+  /// the files of a run begun with a checkpoint layout before 5, which keep their columns when
+  /// resumed (and record false from then on).
+  bool field_diagnostics = true;
 };
 
 /// A checkpoint as read back; `relaxation` is positioned at the relaxation's record.

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstring>
 #include <ctime>
+#include <stdexcept>
 #include <system_error>
 #include <tuple>
 
@@ -31,11 +32,17 @@ struct RowShape {
 
 /// The row shapes of fluid.hdf5's datasets at resolution N.
 struct Shapes {
-  RowShape number, state, matrix;
+  RowShape number, state, matrix, spectrum, grid;
   explicit Shapes(long n)
       : state{1, {static_cast<hsize_t>(n * n), 0}},
-        matrix{2, {static_cast<hsize_t>(n), static_cast<hsize_t>(n)}} {}
+        matrix{2, {static_cast<hsize_t>(n), static_cast<hsize_t>(n)}},
+        spectrum{1, {static_cast<hsize_t>(n), 0}},
+        grid{2, {static_cast<hsize_t>(n), static_cast<hsize_t>(2 * n - 1)}} {}
 };
+
+/// The field diagnostics' datasets of one number per frame.
+constexpr std::array<const char*, 3> kFieldNumbers{"gamma", "enstrophy_steady",
+                                                   "enstrophy_remainder"};
 
 /// Creates the extendable dataset `name` of `type` with no rows.
 Handle createDataset(hid_t file, const char* name, hid_t type, const RowShape& row,
@@ -152,6 +159,14 @@ void FluidH5::writeLayout(const FluidH5Attributes& attributes) {
     createDataset(file, name, H5T_IEEE_F64LE, shapes.number, path);
   }
   createDataset(file, "step", H5T_STD_I64LE, shapes.number, path);
+  for (const char* name : kFieldNumbers) {
+    createDataset(file, name, H5T_IEEE_F64LE, shapes.number, path);
+  }
+  for (const char* name : {"energy_spectrum", "enstrophy_spectrum"}) {
+    createDataset(file, name, H5T_IEEE_F64LE, shapes.spectrum, path);
+  }
+  const Handle grid = createDataset(file, "fun", H5T_IEEE_F64LE, shapes.grid, path);
+  app::hdf5::writeAttribute(grid.get(), "qtype", "fun", path);
 
   const std::int64_t n64 = attributes.n;
   app::hdf5::writeAttribute(file, "N", H5T_NATIVE_INT64, &n64, path);
@@ -171,7 +186,7 @@ void FluidH5::writeLayout(const FluidH5Attributes& attributes) {
   flush();
 }
 
-FluidH5 FluidH5::reopen(const std::filesystem::path& path, long frames) {
+FluidH5 FluidH5::reopen(const std::filesystem::path& path, long frames, bool fields) {
   app::hdf5::quiet();
   if (H5Fis_hdf5(path.c_str()) <= 0) {
     throw app::IoError(path.string() + ": not an HDF5 file (or missing)");
@@ -180,6 +195,7 @@ FluidH5 FluidH5::reopen(const std::filesystem::path& path, long frames) {
   const auto n = static_cast<long>(readDoubleAttribute(file.get(), "N", path));
   FluidH5 h5(path, n, readDoubleAttribute(file.get(), "hbar", path));
   h5.file_ = std::move(file);
+  h5.fields_ = fields;
   h5.openDatasets();
   if (frames < 0 || static_cast<hsize_t>(frames) > static_cast<hsize_t>(h5.frames_)) {
     throw app::IoError(path.string() + ": has " + std::to_string(h5.frames_) +
@@ -192,13 +208,21 @@ FluidH5 FluidH5::reopen(const std::filesystem::path& path, long frames) {
                           &h5.commutator_, &h5.drift_}) {
     resize(d->get(), shapes.number, static_cast<hsize_t>(frames), path);
   }
+  if (fields) {
+    for (const Handle* d : {&h5.gamma_, &h5.enstrophy_steady_, &h5.enstrophy_remainder_}) {
+      resize(d->get(), shapes.number, static_cast<hsize_t>(frames), path);
+    }
+    resize(h5.energy_spectrum_.get(), shapes.spectrum, static_cast<hsize_t>(frames), path);
+    resize(h5.enstrophy_spectrum_.get(), shapes.spectrum, static_cast<hsize_t>(frames), path);
+    resize(h5.grid_.get(), shapes.grid, static_cast<hsize_t>(frames), path);
+  }
   h5.frames_ = frames;
   h5.flush();
   return h5;
 }
 
 void FluidH5::checkResumable(const std::filesystem::path& path, const FluidH5Attributes& expected,
-                             long frames) {
+                             long frames, bool fields) {
   app::hdf5::quiet();
   if (H5Fis_hdf5(path.c_str()) <= 0) throw app::IoError(path.string() + ": not an HDF5 file");
   Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), path, "open the file");
@@ -230,6 +254,7 @@ void FluidH5::checkResumable(const std::filesystem::path& path, const FluidH5Att
   }
   FluidH5 h5(path, static_cast<long>(n), 0.0);
   h5.file_ = std::move(file);
+  h5.fields_ = fields;
   h5.openDatasets();
   if (h5.frames_ < frames) {
     throw app::IoError(path.string() + ": has " + std::to_string(h5.frames_) +
@@ -258,6 +283,14 @@ void FluidH5::openDatasets() {
   open(enstrophy_, "enstrophy", shapes.number);
   open(commutator_, "commutator_norm", shapes.number);
   open(drift_, "spectrum_drift", shapes.number);
+  if (fields_) {
+    open(gamma_, kFieldNumbers[0], shapes.number);
+    open(enstrophy_steady_, kFieldNumbers[1], shapes.number);
+    open(enstrophy_remainder_, kFieldNumbers[2], shapes.number);
+    open(energy_spectrum_, "energy_spectrum", shapes.spectrum);
+    open(enstrophy_spectrum_, "enstrophy_spectrum", shapes.spectrum);
+    open(grid_, "fun", shapes.grid);
+  }
   frames_ = static_cast<long>(rows);
 }
 
@@ -281,6 +314,24 @@ void FluidH5::append(const FluidH5Frame& frame) {
   appendRow(enstrophy_.get(), H5T_NATIVE_DOUBLE, number, at, &frame.enstrophy, path_);
   appendRow(commutator_.get(), H5T_NATIVE_DOUBLE, number, at, &frame.commutator_norm, path_);
   appendRow(drift_.get(), H5T_NATIVE_DOUBLE, number, at, &frame.spectrum_drift, path_);
+  if (fields_) {
+    const FluidH5Fields* f = frame.fields;
+    if (f == nullptr || f->energy_spectrum.size() != n_ || f->enstrophy_spectrum.size() != n_ ||
+        f->grid.rows() != n_ || f->grid.cols() != 2 * n_ - 1) {
+      throw std::logic_error("FluidH5::append: a frame without the file's field diagnostics");
+    }
+    appendRow(gamma_.get(), H5T_NATIVE_DOUBLE, number, at, &f->gamma, path_);
+    appendRow(enstrophy_steady_.get(), H5T_NATIVE_DOUBLE, number, at, &f->enstrophy_steady, path_);
+    appendRow(enstrophy_remainder_.get(), H5T_NATIVE_DOUBLE, number, at, &f->enstrophy_remainder,
+              path_);
+    appendRow(energy_spectrum_.get(), H5T_NATIVE_DOUBLE, shapes.spectrum, at,
+              f->energy_spectrum.data(), path_);
+    appendRow(enstrophy_spectrum_.get(), H5T_NATIVE_DOUBLE, shapes.spectrum, at,
+              f->enstrophy_spectrum.data(), path_);
+    // θ down the rows, φ along them: row-major in the file, as quflow's fun arrays.
+    grid_row_major_ = f->grid;
+    appendRow(grid_.get(), H5T_NATIVE_DOUBLE, shapes.grid, at, grid_row_major_.data(), path_);
+  }
   ++frames_;
 }
 

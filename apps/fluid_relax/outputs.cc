@@ -13,16 +13,17 @@
 
 namespace ddb::fluid {
 
-HistoryCsv::HistoryCsv(const std::filesystem::path& path) : file_(path), row_(7) {
-  file_.write("t,energy,enstrophy,commutator_norm,spectrum_drift,h,residual\n");
+HistoryCsv::HistoryCsv(const std::filesystem::path& path)
+    : file_(path), row_(8), gamma_column_(true) {
+  file_.write("t,energy,enstrophy,commutator_norm,spectrum_drift,h,residual,gamma\n");
 }
 
 HistoryCsv::HistoryCsv(const std::filesystem::path& path, std::uint64_t length,
-                       std::uint64_t digest)
-    : file_(path, length, digest), row_(7) {}
+                       std::uint64_t digest, bool gamma_column)
+    : file_(path, length, digest), row_(gamma_column ? 8 : 7), gamma_column_(gamma_column) {}
 
 void HistoryCsv::write(double t, double energy, double enstrophy, double commutator_norm,
-                       double spectrum_drift, double h, double residual) {
+                       double spectrum_drift, double h, double residual, double gamma) {
   row_.put(t);
   row_.put(energy);
   row_.put(enstrophy);
@@ -30,6 +31,7 @@ void HistoryCsv::write(double t, double energy, double enstrophy, double commuta
   row_.put(spectrum_drift);
   row_.put(h);
   row_.put(residual);
+  if (gamma_column_) row_.put(gamma);
   row_.writeTo(file_);
 }
 
@@ -38,17 +40,20 @@ HistoryFiles::HistoryFiles(const Options& o, const Settings& s, const LiePoisson
     : hamiltonian_(dynamic_cast<const ZeitlinHamiltonian&>(system.hamiltonian())),
       diagnostics_(hamiltonian_),
       probe_(system),
-      basis_(hamiltonian_.laplacian()) {
+      basis_(hamiltonian_.laplacian()),
+      gamma_(basis_),
+      field_diagnostics_(resume == nullptr || resume->files.field_diagnostics) {
   if (resume != nullptr) {
     csv_.emplace(s.out / kHistoryCsv, resume->files.history_bytes,
-                 resume->files.history_digest.value());
+                 resume->files.history_digest.value(), field_diagnostics_);
   } else {
     csv_.emplace(s.out / kHistoryCsv);
   }
   if (o.h5 || o.animate) {
     h5_ = resume != nullptr
-              ? FluidH5::reopen(s.out / kFluidH5, resume->files.h5_frames)
+              ? FluidH5::reopen(s.out / kFluidH5, resume->files.h5_frames, field_diagnostics_)
               : FluidH5::create(s.out / kFluidH5, h5Attributes(o, s, hamiltonian_.hbar()));
+    if (field_diagnostics_) grid_.emplace(hamiltonian_.laplacian().size());
   }
 }
 
@@ -56,18 +61,39 @@ void HistoryFiles::write(long k, double t, double h, const Eigen::MatrixXcd& Q, 
   probe_.evaluate(Q);
   const double energy = diagnostics_.energy(Q), enstrophy = diagnostics_.enstrophy(Q),
                commutator = diagnostics_.commutatorNorm(Q);
-  csv_->write(t, energy, enstrophy, commutator, drift, h, probe_.residual());
-  if (h5_) {
-    // The frame's vorticity is the relative one, W = Q − F (Q itself on a resting sphere).
-    const Eigen::MatrixXcd& W = hamiltonian_.relativeVorticity(Q, relative_);
-    h5_->append({k, t, W, basis_.coefficients(W), energy, enstrophy, commutator, drift});
+  // The field diagnostics are of the relative vorticity, W = Q − F (Q itself on a resting
+  // sphere); γ in O(N²), the coefficients (O(N³), "Cost" in
+  // docs/reference/command-lines-and-files.md) only for a frame of fluid.hdf5.
+  const Eigen::MatrixXcd& W = hamiltonian_.relativeVorticity(Q, relative_);
+  const double gamma = gamma_(W);
+  csv_->write(t, energy, enstrophy, commutator, drift, h, probe_.residual(), gamma);
+  if (!h5_) return;
+  omega_ = basis_.coefficients(W);
+  if (!h5_->fields()) {
+    h5_->append({k, t, W, omega_, energy, enstrophy, commutator, drift});
+    return;
   }
+  // With --h5 also the spectra, the scale decomposition (an eigendecomposition of ψ) and the
+  // grid, per frame.
+  const ZeitlinSpectra spectra = zeitlinSpectra(omega_, hamiltonian_.laplacian().kappaSquared());
+  hamiltonian_.streamInto(Q, stream_);
+  const ScaleDecomposition scales = zeitlinScaleDecomposition(W, stream_);
+  const double to_enstrophy = 1.0 / (2.0 * double(W.rows()));
+  const Eigen::MatrixXd grid = grid_->evaluate(omega_);
+  const FluidH5Fields fields{gamma,
+                             spectra.energy,
+                             spectra.enstrophy,
+                             scales.steady.squaredNorm() * to_enstrophy,
+                             scales.remainder.squaredNorm() * to_enstrophy,
+                             grid};
+  h5_->append({k, t, W, omega_, energy, enstrophy, commutator, drift, &fields});
 }
 
 HistoryFiles::Lengths HistoryFiles::sync() {
   Lengths lengths;
   lengths.history_bytes = csv_->sync();
   lengths.history_digest = csv_->digest();
+  lengths.field_diagnostics = field_diagnostics_;
   if (h5_) {
     h5_->flush();
     lengths.h5_frames = h5_->frames();

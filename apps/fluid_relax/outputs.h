@@ -5,7 +5,9 @@
 
 #include <ddb/integrators/drivers/steady_state_probe.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
+#include <ddb/systems/spherical_harmonic_grid.h>
 #include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_spectra.h>
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -28,10 +30,12 @@ class HistoryCsv {
   /// Creates the file with its header.
   explicit HistoryCsv(const std::filesystem::path& path);
   /// Continues the file of a resumed run from the `length` bytes its checkpoint recorded,
-  /// whose hash is `digest` (checked by checkResumeFolder).
-  HistoryCsv(const std::filesystem::path& path, std::uint64_t length, std::uint64_t digest);
+  /// whose hash is `digest` (checked by checkResumeFolder), with the gamma column if it has it
+  /// (the files of a run begun before 0.3.0 have not).
+  HistoryCsv(const std::filesystem::path& path, std::uint64_t length, std::uint64_t digest,
+             bool gamma_column);
   void write(double t, double energy, double enstrophy, double commutator_norm,
-             double spectrum_drift, double h, double residual);
+             double spectrum_drift, double h, double residual, double gamma);
   /// Makes the rows written durable; returns the file's length (for a checkpoint).
   std::uint64_t sync() { return file_.sync(); }
   /// The hash of the file's bytes so far (JournalFile::digest).
@@ -42,6 +46,7 @@ class HistoryCsv {
  private:
   app::JournalFile file_;
   app::CsvRow row_;
+  bool gamma_column_;
 };
 
 /// The name of the history's file in --out (a JournalFile: `.partial` while a run writes it).
@@ -81,6 +86,11 @@ class HistoryFiles {
   Eigen::MatrixXcd relative_;    // a frame's W = Q − F on a rotating sphere
   SteadyStateProbe<SUN> probe_;  // r of each row, whether or not the run evaluates it
   SphericalHarmonicBasis basis_;
+  ZeitlinGammaFromMatrix gamma_;
+  bool field_diagnostics_;   // FileLengths::field_diagnostics
+  Eigen::VectorXd omega_;    // a row's coefficients
+  Eigen::MatrixXcd stream_;  // a frame's ψ
+  std::optional<SphericalHarmonicGrid> grid_;
   std::optional<HistoryCsv> csv_;
   std::optional<FluidH5> h5_;
 };

@@ -79,7 +79,8 @@ void checkResumeFolder(const std::string& dir, Checkpoint& c) {
     app::requireRegularFile("--resume", dir, h5);
     try {
       // ħ is not compared (it follows from N), nor the version and time of creation.
-      FluidH5::checkResumable(h5, h5Attributes(c.options, c.settings, 0.0), c.files.h5_frames);
+      FluidH5::checkResumable(h5, h5Attributes(c.options, c.settings, 0.0), c.files.h5_frames,
+                              c.files.field_diagnostics);
     } catch (const app::IoError& error) {
       app::usageError("--resume", dir, std::string(error.what()) + ": refusing to resume into it");
     }

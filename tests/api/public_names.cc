@@ -44,6 +44,7 @@
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
+#include <ddb/systems/spherical_harmonic_grid.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <ddb/systems/zeitlin_spectra.h>
@@ -539,8 +540,11 @@ static_assert(
   const ddb::ZeitlinSpectra spectra = ddb::zeitlinSpectra(omega, 4.0);
   const ddb::ScaleDecomposition parts =
       ddb::zeitlinScaleDecomposition(W, hamiltonian.streamMatrix(Q));
+  const ddb::SphericalHarmonicGrid grid(n);
+  const Eigen::MatrixXd field = grid.evaluate(omega);
+  const ddb::ZeitlinGammaFromMatrix gammaOf(basis);
   use(state, spectra.energy, spectra.enstrophy, ddb::zeitlinGamma(omega), parts.steady,
-      parts.remainder);
+      parts.remainder, field, grid.colatitudes(), grid.longitudes(), gammaOf(W));
 }
 
 // docs/guide/steady-states.md

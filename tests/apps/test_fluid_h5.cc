@@ -52,10 +52,25 @@ Eigen::MatrixXcd frameMatrix(long step) {
   return W;
 }
 
+/// Frame `step`'s grid: f(j, k) = step + 10 j + 100 k.
+Eigen::MatrixXd frameGrid(long step) {
+  Eigen::MatrixXd f(kN, 2 * kN - 1);
+  for (Eigen::Index j = 0; j < f.rows(); ++j) {
+    for (Eigen::Index k = 0; k < f.cols(); ++k) f(j, k) = double(step + 10 * j + 100 * k);
+  }
+  return f;
+}
+
 void appendFrame(FluidH5& h5, long step) {
   const Eigen::MatrixXcd W = frameMatrix(step);
   const Eigen::VectorXd omega = Eigen::VectorXd::Constant(kN * kN, double(step));
-  h5.append({step, 0.5 * double(step), W, omega, 1.0 + step, 2.0 + step, 3.0 + step, 4.0 + step});
+  const Eigen::VectorXd energy = Eigen::VectorXd::LinSpaced(kN, double(step), double(step) + 1.0);
+  const Eigen::VectorXd enstrophy = 2.0 * energy;
+  const Eigen::MatrixXd grid = frameGrid(step);
+  const ddb::fluid::FluidH5Fields fields{5.0 + step, energy,     enstrophy,
+                                         6.0 + step, 7.0 + step, grid};
+  h5.append({step, 0.5 * double(step), W, omega, 1.0 + step, 2.0 + step, 3.0 + step, 4.0 + step,
+             h5.fields() ? &fields : nullptr});
 }
 
 fs::path freshFile(const std::string& name) {
@@ -102,6 +117,23 @@ TEST(FluidH5, AppendWritesEachFrameAsGiven) {
   const auto state = readAll<double>(path, "state", H5T_NATIVE_DOUBLE, &rows);
   ASSERT_EQ(state.size(), std::size_t(4 * kN * kN));
   EXPECT_EQ(state[3 * kN * kN + 5], 6.0);
+  // The field diagnostics: numbers, spectra of N values and grids of N × (2N − 1), row-major.
+  const auto gamma = readAll<double>(path, "gamma", H5T_NATIVE_DOUBLE, &rows);
+  const auto steady = readAll<double>(path, "enstrophy_steady", H5T_NATIVE_DOUBLE, &rows);
+  const auto remainder = readAll<double>(path, "enstrophy_remainder", H5T_NATIVE_DOUBLE, &rows);
+  const auto spectrum = readAll<double>(path, "enstrophy_spectrum", H5T_NATIVE_DOUBLE, &rows);
+  const auto fun = readAll<double>(path, "fun", H5T_NATIVE_DOUBLE, &rows);
+  ASSERT_EQ(spectrum.size(), std::size_t(4 * kN));
+  ASSERT_EQ(fun.size(), std::size_t(4 * kN * (2 * kN - 1)));
+  for (std::size_t f = 0; f < 4; ++f) {
+    const double step = double(steps[f]);
+    EXPECT_EQ(gamma[f], 5.0 + step);
+    EXPECT_EQ(steady[f], 6.0 + step);
+    EXPECT_EQ(remainder[f], 7.0 + step);
+    EXPECT_EQ(spectrum[f * kN + kN - 1], 2.0 * (step + 1.0));
+    const std::size_t j = 2, k = 3;
+    EXPECT_EQ(fun[f * kN * (2 * kN - 1) + j * (2 * kN - 1) + k], step + 10.0 * j + 100.0 * k);
+  }
 }
 
 TEST(FluidH5, ReopenShrinksToFramesAndAppendsAfterThem) {
@@ -111,7 +143,7 @@ TEST(FluidH5, ReopenShrinksToFramesAndAppendsAfterThem) {
     for (long step = 0; step < 5; ++step) appendFrame(h5, step);
   }
   {
-    FluidH5 h5 = FluidH5::reopen(path, 3);
+    FluidH5 h5 = FluidH5::reopen(path, 3, true);
     EXPECT_EQ(h5.frames(), 3);
     appendFrame(h5, 99);
     EXPECT_EQ(h5.frames(), 4);
@@ -127,7 +159,7 @@ TEST(FluidH5, ReopenShrinksToFramesAndAppendsAfterThem) {
   }
   const auto time = readAll<double>(path, "time", H5T_NATIVE_DOUBLE, &rows);
   EXPECT_EQ(time, (std::vector<double>{0.0, 0.5, 1.0, 49.5}));
-  EXPECT_EQ(FluidH5::reopen(path, 0).frames(), 0);
+  EXPECT_EQ(FluidH5::reopen(path, 0, true).frames(), 0);
 }
 
 TEST(FluidH5, ReopenCutsDatasetsOfUnequalLengthsAlike) {
@@ -146,10 +178,10 @@ TEST(FluidH5, ReopenCutsDatasetsOfUnequalLengthsAlike) {
   H5Dclose(state);
   H5Dclose(mat);
   H5Fclose(file);
-  EXPECT_THAT([&] { FluidH5::reopen(path, 4); },
+  EXPECT_THAT([&] { FluidH5::reopen(path, 4, true); },
               testing::ThrowsMessage<IoError>(HasSubstr(path.string() + ": has 3 frames")));
   {
-    FluidH5 h5 = FluidH5::reopen(path, 3);
+    FluidH5 h5 = FluidH5::reopen(path, 3, true);
     appendFrame(h5, 7);
   }
   hsize_t rows = 0;
@@ -171,20 +203,20 @@ TEST(FluidH5, ReopenRefusesFilesItCannotContinue) {
     appendFrame(h5, 1);
   }
   testing::internal::CaptureStderr();
-  EXPECT_THAT([&] { FluidH5::reopen(path, 3); },
+  EXPECT_THAT([&] { FluidH5::reopen(path, 3, true); },
               testing::ThrowsMessage<IoError>(HasSubstr(path.string() + ": has 2 frames")));
   const fs::path text = path.parent_path() / "notes.hdf5";
   std::ofstream(text) << "not HDF5\n";
-  EXPECT_THAT([&] { FluidH5::reopen(text, 0); },
+  EXPECT_THAT([&] { FluidH5::reopen(text, 0, true); },
               testing::ThrowsMessage<IoError>(HasSubstr(text.string() + ": not an HDF5 file")));
   const fs::path missing = path.parent_path() / "missing.hdf5";
-  EXPECT_THAT([&] { FluidH5::reopen(missing, 0); },
+  EXPECT_THAT([&] { FluidH5::reopen(missing, 0, true); },
               testing::ThrowsMessage<IoError>(HasSubstr(missing.string())));
   // An HDF5 file of another layout.
   const fs::path other = path.parent_path() / "other.hdf5";
   H5Fclose(H5Fcreate(other.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
   EXPECT_THAT(
-      [&] { FluidH5::reopen(other, 0); },
+      [&] { FluidH5::reopen(other, 0, true); },
       testing::ThrowsMessage<IoError>(HasSubstr(other.string() + ": not a fluid-relax HDF5 file")));
   // HDF5's own error stack is not printed: the message above is the only report.
   EXPECT_EQ(testing::internal::GetCapturedStderr(), "");

@@ -8,6 +8,7 @@
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
+#include <ddb/systems/zeitlin_spectra.h>
 #include <gmock/gmock.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -87,12 +88,12 @@ TEST(FluidRelax, WritesContractFilesMatchingTheLibrary) {
 
       std::string header;
       const auto rows = readCsv(out / "history.csv", &header);
-      EXPECT_EQ(header, "t,energy,enstrophy,commutator_norm,spectrum_drift,h,residual");
+      EXPECT_EQ(header, "t,energy,enstrophy,commutator_norm,spectrum_drift,h,residual,gamma");
       // k = 0, 3, ..., 39 and the last, 40; or every k.
       ASSERT_EQ(rows.size(), every == 3 ? 15u : 41u);
       EXPECT_NEAR(rows.back()[0], steps * h, 1e-12);
       for (size_t i = 0; i < rows.size(); ++i) {
-        ASSERT_EQ(rows[i].size(), 7u);
+        ASSERT_EQ(rows[i].size(), 8u);
         EXPECT_EQ(rows[i][5], i == 0 ? 0.0 : h) << "the step that reached row " << i;
         for (double v : rows[i]) EXPECT_TRUE(std::isfinite(v));
         EXPECT_LE(rows[i][4], 1e-12) << "spectrum drift, N = " << n;
@@ -109,6 +110,10 @@ TEST(FluidRelax, WritesContractFilesMatchingTheLibrary) {
       const Matrix W = readMatrix(out / "W_final.csv");
       ASSERT_EQ(W.rows(), n);
       EXPECT_LT((W - expected).cwiseAbs().maxCoeff(), 1e-13) << "N = " << n;
+      // gamma (from the matrix, O(N²)) against the coefficients of every degree.
+      const ddb::SphericalHarmonicBasis basis{ddb::HoppeYauLaplacian(n)};
+      EXPECT_NEAR(rows.front()[7], ddb::zeitlinGamma(basis.coefficients(W0)), 1e-13);
+      EXPECT_NEAR(rows.back()[7], ddb::zeitlinGamma(basis.coefficients(W)), 1e-13);
 
       auto summary = readJson(out / "summary.json");
       for (const std::string key : {"n", "alpha", "h", "steps", "energy_initial", "energy_final",
@@ -138,7 +143,6 @@ TEST(FluidRelax, WritesContractFilesMatchingTheLibrary) {
         coefficients(ddb::SphericalHarmonicBasis::index(long(omega[i][0]), long(omega[i][1]))) =
             omega[i][2];
       }
-      const ddb::SphericalHarmonicBasis basis{ddb::HoppeYauLaplacian(n)};
       EXPECT_LT((basis.matrix(coefficients) - W).norm(), 1e-13 * W.norm());
       EXPECT_TRUE(fs::exists(out / "omega_initial.csv"));
     }

@@ -2,7 +2,9 @@
 h5py, as quflow reads it, and checked against the CSV files the app writes through its other
 code path:
 W_final.csv (mat), omega_initial.csv and omega_final.csv (state, quflow's index
-l^2 + l + m), history.csv (time and the diagnostics, one frame per row).
+l^2 + l + m), history.csv (time and the diagnostics, one frame per row). The field diagnostics
+(spectra, gamma, the scale decomposition, the grid "fun") against what numpy and scipy compute
+from the frames' matrices and coefficients, and against the sums they must have.
 
 ctest sets FLUID_RELAX to the app of this build and DDB_ANIMATE_SCRIPT to
 scripts/animate_fluid.py (tests/CMakeLists.txt).
@@ -95,6 +97,56 @@ def test_frames_equal_the_csv_files(run):
         # quflow's qtime: time in units of hbar = 2/sqrt(N^2 - 1) (quflow.utils.qtime2seconds).
         hbar = 2.0 / math.sqrt(N * N - 1)
         np.testing.assert_allclose(f["qtime"][:] * hbar, history["t"], rtol=1e-15, atol=0)
+
+
+def grid_from_coefficients(omega, n):
+    """sqrt(4 pi) sum omega_lm Y_lm on quflow's grid (N x (2N - 1), MW sampling), Y_lm the real
+    harmonics of docs/reference/conventions.md from scipy's complex ones (Condon-Shortley)."""
+    from scipy.special import sph_harm
+    theta = np.pi * (2 * np.arange(n) + 1) / (2 * n - 1)
+    phi = 2 * np.pi * np.arange(2 * n - 1) / (2 * n - 1)
+    P, T = np.meshgrid(phi, theta)
+    f = np.zeros_like(T)
+    for l in range(n):
+        for m in range(-l, l + 1):
+            y = sph_harm(abs(m), l, P, T)
+            if m > 0:
+                y = math.sqrt(2) * (-1) ** m * y.real
+            elif m < 0:
+                y = math.sqrt(2) * (-1) ** m * y.imag
+            else:
+                y = y.real
+            f += omega[l * l + l + m] * y
+    return math.sqrt(4 * math.pi) * f
+
+
+def test_field_diagnostics(run):
+    pytest.importorskip("scipy", reason="scipy is not installed (Debian: python3-scipy)")
+    history = read_csv(run / "history.csv")
+    with h5py.File(run / "fluid.hdf5", "r") as f:
+        frames = f["state"].shape[0]
+        assert f["fun"].shape == (frames, N, 2 * N - 1)
+        assert f["fun"].attrs["qtype"] == "fun"
+        assert f["energy_spectrum"].shape == (frames, N)
+        np.testing.assert_array_equal(f["gamma"][:], history["gamma"])
+        for i in range(frames):
+            omega, W = f["state"][i], f["mat"][i]
+            # The spectra sum to the energy and the enstrophy (history.csv's, from traces).
+            assert f["energy_spectrum"][i].sum() == pytest.approx(history["energy"][i], rel=1e-12)
+            assert f["enstrophy_spectrum"][i].sum() == pytest.approx(history["enstrophy"][i],
+                                                                     rel=1e-12)
+            assert f["enstrophy_spectrum"][i][2] == pytest.approx(0.5 * np.sum(omega[4:9] ** 2),
+                                                                  rel=1e-12)
+            assert f["gamma"][i] == pytest.approx(np.linalg.norm(omega[1:4]) /
+                                                  np.linalg.norm(omega), rel=1e-12)
+            # The scale decomposition is orthogonal (W_s is W's diagonal in psi's eigenbasis):
+            # its two enstrophies, computed apart, sum to W's (tests/unit/test_zeitlin_spectra.cc
+            # checks W_s itself).
+            steady, remainder = f["enstrophy_steady"][i], f["enstrophy_remainder"][i]
+            assert steady + remainder == pytest.approx(history["enstrophy"][i], rel=1e-12)
+            assert 0 < steady < history["enstrophy"][i]
+            np.testing.assert_allclose(f["fun"][i], grid_from_coefficients(omega, N),
+                                       rtol=0, atol=1e-12 * np.abs(f["fun"][i]).max())
 
 
 def test_bad_input_creates_nothing(tmp_path):
