@@ -2,11 +2,13 @@
 // (energy E, enstrophy Z, ||[P, W]||, the spherical-harmonic coefficients omega_lm) and
 // the apps' initial vorticities (random, l1, zonal with a seed).
 #include <ddb/systems/spherical_harmonic_basis.h>
+#include <ddb/systems/spherical_harmonic_grid.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <ddb/systems/zeitlin_spectra.h>
 #include <pybind11/eigen.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -152,6 +154,16 @@ void bindZeitlin(py::module_& m) {
           "(W_s, W_r): W = Q - F split into the part diagonal in the stream matrix's eigenbasis "
           "(it commutes with psi; all of W at a steady state) and the rest.")
       .def(
+          "vorticity_on_grid",
+          [](const ZeitlinFluid& f, py::handle Q) {
+            return SphericalHarmonicGrid(f.n()).evaluate(
+                f.relativeCoefficients(stateFromArray<SUN>("Q", Q, f.n())));
+          },
+          py::arg("Q"),
+          "The relative vorticity W = Q - F on quflow's N x (2N - 1) latitude-longitude grid "
+          "(ddb.grid_coordinates(N)): vorticity_on_grid(omega_lm(Q - F)), what fluid.hdf5's "
+          "'fun' holds.")
+      .def(
           "planetary_vorticity",
           [](const ZeitlinFluid& f) {
             const ZeitlinHamiltonian& h = f.hamiltonian();
@@ -178,6 +190,34 @@ void bindZeitlin(py::module_& m) {
       "`rotation` (Omega; its states are absolute vorticities Q = W + F, "
       "planetary_vorticity() is F) and quasi-geostrophic with `deformation_radius` L_d > 0 "
       "(the stream matrix (Laplacian - 1/L_d^2)^-1 (Q - F); None: Euler).");
+  m.def(
+      "vorticity_on_grid",
+      [](py::handle omega) {
+        const Eigen::VectorXd coefficients =
+            vectorArgument("omega", omega, -1, "a 1-D array of N^2 finite numbers");
+        const auto n =
+            static_cast<Eigen::Index>(std::lround(std::sqrt(double(coefficients.size()))));
+        if (n < 1 || n * n != coefficients.size() || !coefficients.allFinite()) {
+          throwInvalid("omega", std::string(py::repr(omega)),
+                       "must be a 1-D array of N^2 finite numbers (omega_lm at l^2 + l + m)");
+        }
+        return SphericalHarmonicGrid(n).evaluate(coefficients);
+      },
+      py::arg("omega"),
+      "The vorticity sqrt(4 pi) sum omega_lm Y_lm(theta, phi) that the coefficients omega "
+      "(N^2 of them, omega_lm at l^2 + l + m: omega_lm(W), or a frame of fluid.hdf5's 'state') "
+      "quantise, on quflow's N x (2N - 1) grid (grid_coordinates(N); quflow's shr2fun without "
+      "Berezin's multipliers; systems/spherical_harmonic_grid.h).");
+  m.def(
+      "grid_coordinates",
+      [](py::handle n_object) {
+        const SphericalHarmonicGrid grid(
+            integerArgument<Eigen::Index>("N", n_object, 1, SUN::kMaxN));
+        return py::make_tuple(grid.colatitudes(), grid.longitudes());
+      },
+      py::arg("N"),
+      "(theta, phi): the colatitudes pi (2j + 1)/(2N - 1), j < N, and longitudes "
+      "2 pi k/(2N - 1), k < 2N - 1, of vorticity_on_grid's rows and columns.");
   m.def(
       "zeitlin_vorticity",
       [](py::handle kind_object, py::handle n_object, py::handle seed_object) {

@@ -136,6 +136,30 @@ def test_field_diagnostics_sum_to_the_energy_and_enstrophy():
     assert np.linalg.norm(Ws @ P - P @ Ws) < 1e-12 * np.linalg.norm(Ws) * np.linalg.norm(P)
 
 
+def test_vorticity_on_the_grid():
+    # F = 2 Omega X3 quantises 2 Omega cos(theta): the quantisation's scale, sqrt(4 pi).
+    n, rotation = 7, 1.3
+    fluid = ddb.zeitlin(n, 0.0, rotation=rotation)
+    theta, phi = ddb.grid_coordinates(n)
+    assert theta.shape == (n,) and phi.shape == (2 * n - 1,)
+    np.testing.assert_allclose(theta, np.pi * (2 * np.arange(n) + 1) / (2 * n - 1), rtol=1e-15)
+    F = fluid.planetary_vorticity()
+    f = ddb.vorticity_on_grid(fluid.omega_lm(F))
+    np.testing.assert_allclose(f, np.outer(2 * rotation * np.cos(theta), np.ones(phi.size)),
+                               rtol=0, atol=1e-13)
+    # The fluid's grid is of W = Q - F; T_11's is sqrt(4 pi) sqrt(3/(4 pi)) sin(theta) cos(phi).
+    coefficients = np.zeros(n * n)
+    coefficients[1 + 1 + 1] = 1.0
+    W = fluid.vorticity(coefficients)
+    np.testing.assert_allclose(fluid.vorticity_on_grid(W + F),
+                               np.sqrt(3) * np.outer(np.sin(theta), np.cos(phi)), rtol=0,
+                               atol=1e-13)
+    with pytest.raises(ValueError, match="omega"):
+        ddb.vorticity_on_grid(np.zeros(10))
+    with pytest.raises(ValueError, match="omega"):
+        ddb.vorticity_on_grid(np.full(9, np.nan))
+
+
 def test_manakov_and_se3_casimirs():
     rng = np.random.default_rng(1)
     a = rng.standard_normal((5, 5))
