@@ -17,6 +17,15 @@ class GroupTest : public ::testing::Test {
   using M = typename G::template Matrix<double>;
   Sampler sampler;
   Samples<TG> samples{sampler};
+  /// Runs `check` at every N of the group's samples (Samples::sizes), naming N in failures.
+  template <class Check>
+  void forEachSize(const Check& check) {
+    for (const int n : Samples<TG>::sizes()) {
+      samples.resize(n);
+      SCOPED_TRACE("N = " + std::to_string(n));
+      check();
+    }
+  }
   std::vector<A> points() { return samples.points(/*near_pi=*/true); }
   A algebra() { return samples.algebra(); }
   D dual() { return samples.dual(); }
@@ -30,107 +39,121 @@ class GroupTest : public ::testing::Test {
 TYPED_TEST_SUITE(GroupTest, AllGroups::Groups);
 
 TYPED_TEST(GroupTest, ExpMatchesEigenMatrixExponential) {
-  using G = typename TestFixture::G;
-  for (const auto& x : this->points()) {
-    const typename TestFixture::M expected = G::hat(x).exp();
-    EXPECT_LT((G::exp(x) - expected).norm(), this->tol(x)) << "x = " << x.transpose();
-  }
+  this->forEachSize([&] {
+    using G = typename TestFixture::G;
+    for (const auto& x : this->points()) {
+      const typename TestFixture::M expected = G::hat(x).exp();
+      EXPECT_LT((G::exp(x) - expected).norm(), this->tol(x)) << "x = " << x.transpose();
+    }
+  });
 }
 
 TYPED_TEST(GroupTest, LogInvertsExp) {
-  using G = typename TestFixture::G;
-  for (const auto& x : this->points()) {
-    // log is ill-conditioned at π: the samples there, |θ| = π − 1e-6, give exp(x) two
-    // eigenvalues 2 sin(1e-6) apart, and a rounding of a few ulps in exp(x) turns its
-    // eigenvectors by ulps/gap, which moves log by up to 2π·ulps/gap ≈ 3e-9.
-    const double tolerance = x.norm() > 3.0 ? 1e-8 : this->tol(x);
-    EXPECT_LT((G::log(G::exp(x)) - x).norm(), tolerance) << "x = " << x.transpose();
-  }
+  this->forEachSize([&] {
+    using G = typename TestFixture::G;
+    for (const auto& x : this->points()) {
+      // log is ill-conditioned at π: the samples there, |θ| = π − 1e-6, give exp(x) two
+      // eigenvalues 2 sin(1e-6) apart, and a rounding of a few ulps in exp(x) turns its
+      // eigenvectors by ulps/gap, which moves log by up to 2π·ulps/gap ≈ 3e-9.
+      const double tolerance = x.norm() > 3.0 ? 1e-8 : this->tol(x);
+      EXPECT_LT((G::log(G::exp(x)) - x).norm(), tolerance) << "x = " << x.transpose();
+    }
+  });
 }
 
 TYPED_TEST(GroupTest, BracketIsMatrixCommutatorAndSatisfiesJacobi) {
-  using G = typename TestFixture::G;
-  using A = typename TestFixture::A;
-  for (int i = 0; i < 5; ++i) {
-    const A x = this->algebra(), y = this->algebra(), z = this->algebra();
-    const auto X = G::hat(x), Y = G::hat(y);
-    EXPECT_LT((G::hat(G::bracket(x, y)) - (X * Y - Y * X)).norm(), this->tol(x, y));
-    const A jacobi = G::bracket(x, G::bracket(y, z)) + G::bracket(y, G::bracket(z, x)) +
-                     G::bracket(z, G::bracket(x, y));
-    EXPECT_LT(jacobi.norm(), this->tol(x, y, z));
-  }
+  this->forEachSize([&] {
+    using G = typename TestFixture::G;
+    using A = typename TestFixture::A;
+    for (int i = 0; i < 5; ++i) {
+      const A x = this->algebra(), y = this->algebra(), z = this->algebra();
+      const auto X = G::hat(x), Y = G::hat(y);
+      EXPECT_LT((G::hat(G::bracket(x, y)) - (X * Y - Y * X)).norm(), this->tol(x, y));
+      const A jacobi = G::bracket(x, G::bracket(y, z)) + G::bracket(y, G::bracket(z, x)) +
+                       G::bracket(z, G::bracket(x, y));
+      EXPECT_LT(jacobi.norm(), this->tol(x, y, z));
+    }
+  });
 }
 
 TYPED_TEST(GroupTest, PairingIsTracePairingOfRepresentatives) {
-  using G = typename TestFixture::G;
-  using A = typename TestFixture::A;
-  using D = typename TestFixture::D;
-  for (int i = 0; i < 5; ++i) {
-    const A x = this->algebra();
-    const D mu = this->dual();
-    const double trace = std::real((G::dualHat(mu).adjoint() * G::hat(x)).trace());
-    EXPECT_NEAR(G::pairing(mu, x), trace, this->tol(mu, x));
-    EXPECT_LT((G::dualVee(G::dualHat(mu)) - mu).norm(), this->tol(mu));
-  }
+  this->forEachSize([&] {
+    using G = typename TestFixture::G;
+    using A = typename TestFixture::A;
+    using D = typename TestFixture::D;
+    for (int i = 0; i < 5; ++i) {
+      const A x = this->algebra();
+      const D mu = this->dual();
+      const double trace = std::real((G::dualHat(mu).adjoint() * G::hat(x)).trace());
+      EXPECT_NEAR(G::pairing(mu, x), trace, this->tol(mu, x));
+      EXPECT_LT((G::dualVee(G::dualHat(mu)) - mu).norm(), this->tol(mu));
+    }
+  });
 }
 
 TYPED_TEST(GroupTest, CoadjointActionsAreDualsOfAdjointActions) {
-  using G = typename TestFixture::G;
-  using A = typename TestFixture::A;
-  using D = typename TestFixture::D;
-  for (int i = 0; i < 5; ++i) {
-    const A x = this->algebra(), y = this->algebra();
-    const D mu = this->dual();
-    const auto g = this->randomElement(), h = this->randomElement();
-    // <ad*_x mu, y> = <mu, [x, y]>
-    EXPECT_NEAR(G::pairing(G::adDual(x, mu), y), G::pairing(mu, G::bracket(x, y)),
-                this->tol(x, y, mu));
-    // <Ad*_g mu, y> = <mu, Ad_g y>, with Ad_g y checked against g Y g^{-1}.
-    EXPECT_NEAR(G::pairing(G::AdDual(g, mu), y), G::pairing(mu, G::Ad(g, y)), this->tol(y, mu));
-    const auto gYgInv = (g * G::hat(y) * g.inverse()).eval();
-    EXPECT_LT((G::hat(G::Ad(g, y)) - gYgInv).norm(), this->tol(y));
-    // Ad*_{gh} = Ad*_h Ad*_g
-    const D lhs = G::AdDual(G::compose(g, h), mu);
-    EXPECT_LT((lhs - G::AdDual(h, G::AdDual(g, mu))).norm(), this->tol(mu));
-  }
+  this->forEachSize([&] {
+    using G = typename TestFixture::G;
+    using A = typename TestFixture::A;
+    using D = typename TestFixture::D;
+    for (int i = 0; i < 5; ++i) {
+      const A x = this->algebra(), y = this->algebra();
+      const D mu = this->dual();
+      const auto g = this->randomElement(), h = this->randomElement();
+      // <ad*_x mu, y> = <mu, [x, y]>
+      EXPECT_NEAR(G::pairing(G::adDual(x, mu), y), G::pairing(mu, G::bracket(x, y)),
+                  this->tol(x, y, mu));
+      // <Ad*_g mu, y> = <mu, Ad_g y>, with Ad_g y checked against g Y g^{-1}.
+      EXPECT_NEAR(G::pairing(G::AdDual(g, mu), y), G::pairing(mu, G::Ad(g, y)), this->tol(y, mu));
+      const auto gYgInv = (g * G::hat(y) * g.inverse()).eval();
+      EXPECT_LT((G::hat(G::Ad(g, y)) - gYgInv).norm(), this->tol(y));
+      // Ad*_{gh} = Ad*_h Ad*_g
+      const D lhs = G::AdDual(G::compose(g, h), mu);
+      EXPECT_LT((lhs - G::AdDual(h, G::AdDual(g, mu))).norm(), this->tol(mu));
+    }
+  });
 }
 
 TYPED_TEST(GroupTest, CasimirsAreConstantOnCoadjointOrbits) {
-  using G = typename TestFixture::G;
-  using D = typename TestFixture::D;
-  for (int i = 0; i < 5; ++i) {
-    const D mu = this->dual();
-    const auto g = this->randomElement();
-    EXPECT_LT((G::casimirs(G::AdDual(g, mu)) - G::casimirs(mu)).norm(), this->tol(mu));
-  }
+  this->forEachSize([&] {
+    using G = typename TestFixture::G;
+    using D = typename TestFixture::D;
+    for (int i = 0; i < 5; ++i) {
+      const D mu = this->dual();
+      const auto g = this->randomElement();
+      EXPECT_LT((G::casimirs(G::AdDual(g, mu)) - G::casimirs(mu)).norm(), this->tol(mu));
+    }
+  });
 }
 
 TYPED_TEST(GroupTest, ClosedFormsAgreeWithGenericBase) {
-  using G = typename TestFixture::G;
-  using Base = LieGroupBase<G>;
-  using A = typename TestFixture::A;
-  using D = typename TestFixture::D;
-  for (const auto& x : this->points()) {
-    const A y = this->algebra();
-    const D mu = this->dual();
-    const auto g = this->randomElement();
-    const double tol = this->tol(x, y, mu);
-    EXPECT_LT((G::bracket(x, y) - Base::bracket(x, y)).norm(), tol);
-    EXPECT_LT((G::adDual(x, mu) - Base::adDual(x, mu)).norm(), tol);
-    EXPECT_LT((G::Ad(g, y) - Base::Ad(g, y)).norm(), tol);
-    EXPECT_LT((G::AdDual(g, mu) - Base::AdDual(g, mu)).norm(), tol);
-    EXPECT_LT((G::inverse(g) - g.inverse()).norm(), tol);
-    EXPECT_LT((G::cay(x) - Base::cay(x)).norm(), tol);
-    EXPECT_LT((G::dcay(x, y) - Base::dcay(x, y)).norm(), tol);
-    EXPECT_LT((G::dcayInv(x, y) - Base::dcayInv(x, y)).norm(), tol);
-    EXPECT_LT((G::dcayInvDual(x, mu) - Base::dcayInvDual(x, mu)).norm(), tol);
-    EXPECT_LT((G::cayTransport(x, y, mu) - Base::cayTransport(x, y, mu)).norm(), tol);
-    if (x.norm() < 3.0) {  // the series converge for |x| < 2π; near π they need ~100 terms
-      EXPECT_LT((G::dexp(x, y) - Base::dexp(x, y)).norm(), 1e-12);
-      EXPECT_LT((G::dexpInv(x, y) - Base::dexpInv(x, y)).norm(), 1e-12);
-      EXPECT_LT((G::dexpInvDual(x, mu) - Base::dexpInvDual(x, mu)).norm(), 1e-12);
+  this->forEachSize([&] {
+    using G = typename TestFixture::G;
+    using Base = LieGroupBase<G>;
+    using A = typename TestFixture::A;
+    using D = typename TestFixture::D;
+    for (const auto& x : this->points()) {
+      const A y = this->algebra();
+      const D mu = this->dual();
+      const auto g = this->randomElement();
+      const double tol = this->tol(x, y, mu);
+      EXPECT_LT((G::bracket(x, y) - Base::bracket(x, y)).norm(), tol);
+      EXPECT_LT((G::adDual(x, mu) - Base::adDual(x, mu)).norm(), tol);
+      EXPECT_LT((G::Ad(g, y) - Base::Ad(g, y)).norm(), tol);
+      EXPECT_LT((G::AdDual(g, mu) - Base::AdDual(g, mu)).norm(), tol);
+      EXPECT_LT((G::inverse(g) - g.inverse()).norm(), tol);
+      EXPECT_LT((G::cay(x) - Base::cay(x)).norm(), tol);
+      EXPECT_LT((G::dcay(x, y) - Base::dcay(x, y)).norm(), tol);
+      EXPECT_LT((G::dcayInv(x, y) - Base::dcayInv(x, y)).norm(), tol);
+      EXPECT_LT((G::dcayInvDual(x, mu) - Base::dcayInvDual(x, mu)).norm(), tol);
+      EXPECT_LT((G::cayTransport(x, y, mu) - Base::cayTransport(x, y, mu)).norm(), tol);
+      if (x.norm() < 3.0) {  // the series converge for |x| < 2π; near π they need ~100 terms
+        EXPECT_LT((G::dexp(x, y) - Base::dexp(x, y)).norm(), 1e-12);
+        EXPECT_LT((G::dexpInv(x, y) - Base::dexpInv(x, y)).norm(), 1e-12);
+        EXPECT_LT((G::dexpInvDual(x, mu) - Base::dexpInvDual(x, mu)).norm(), 1e-12);
+      }
     }
-  }
+  });
 }
 
 TEST(SO3, LogNearPiRecoversAxisUpToSign) {

@@ -21,6 +21,15 @@ class RetractionTest : public ::testing::Test {
   R retraction;
   Sampler sampler;
   Samples<TG> samples{sampler};
+  /// Runs `check` at every N of the group's samples (Samples::sizes), naming N in failures.
+  template <class Check>
+  void forEachSize(const Check& check) {
+    for (const int n : Samples<TG>::sizes()) {
+      samples.resize(n);
+      SCOPED_TRACE("N = " + std::to_string(n));
+      check();
+    }
+  }
   std::vector<A> points() {
     // Cayley is singular nowhere on compact groups but the near-π points matter only for exp.
     auto p = samples.points(/*near_pi=*/true);
@@ -46,68 +55,76 @@ using AllRetractions = Concat<AllGroups::With<Cayley>, AllGroups::With<Exponenti
 TYPED_TEST_SUITE(RetractionTest, AllRetractions);
 
 TYPED_TEST(RetractionTest, IdentityAndInverseProperty) {
-  using G = typename TestFixture::G;
-  using A = typename TestFixture::A;
-  const auto& r = this->retraction;
-  const A zero = this->algebra() * 0.0;
-  EXPECT_LT((r.tau(zero) - G::identityLike(r.tau(zero))).norm(), kTight);
-  for (const auto& x : this->points()) {
-    const A minus = -x;
-    const auto product = G::compose(r.tau(x), r.tau(minus));
-    EXPECT_LT((product - G::identityLike(product)).norm(), 1e-12 * this->scale(x))
-        << "x = " << x.transpose();
-  }
+  this->forEachSize([&] {
+    using G = typename TestFixture::G;
+    using A = typename TestFixture::A;
+    const auto& r = this->retraction;
+    const A zero = this->algebra() * 0.0;
+    EXPECT_LT((r.tau(zero) - G::identityLike(r.tau(zero))).norm(), kTight);
+    for (const auto& x : this->points()) {
+      const A minus = -x;
+      const auto product = G::compose(r.tau(x), r.tau(minus));
+      EXPECT_LT((product - G::identityLike(product)).norm(), 1e-12 * this->scale(x))
+          << "x = " << x.transpose();
+    }
+  });
 }
 
 TYPED_TEST(RetractionTest, TauInverseInvertsTau) {
-  for (const auto& x : this->points()) {
-    const double tolerance = (x.norm() > 3.0 ? 1e-8 : 1e-12) * this->scale(x);
-    EXPECT_LT((this->retraction.tauInverse(this->retraction.tau(x)) - x).norm(),
-              tolerance * (1 + x.norm()))
-        << "x = " << x.transpose();
-  }
+  this->forEachSize([&] {
+    for (const auto& x : this->points()) {
+      const double tolerance = (x.norm() > 3.0 ? 1e-8 : 1e-12) * this->scale(x);
+      EXPECT_LT((this->retraction.tauInverse(this->retraction.tau(x)) - x).norm(),
+                tolerance * (1 + x.norm()))
+          << "x = " << x.transpose();
+    }
+  });
 }
 
 TYPED_TEST(RetractionTest, TangentMatchesCentralDifferences) {
-  using G = typename TestFixture::G;
-  using A = typename TestFixture::A;
-  const auto& r = this->retraction;
-  const double eps = 1e-6;
-  for (const auto& x : this->points()) {
-    const A y = this->algebra();
-    const A xp = x + eps * y, xm = x - eps * y;
-    const auto difference = ((r.tau(xp) - r.tau(xm)) / (2 * eps)).eval();
-    // T_xτ(y) = dτ_x(y) τ(x)
-    const auto expected = (G::hat(r.dTau(x, y)) * r.tau(x)).eval();
-    EXPECT_LT((difference - expected).norm(), 1e-8 * (1 + x.squaredNorm()) * this->scale(y))
-        << "x = " << x.transpose();
-  }
+  this->forEachSize([&] {
+    using G = typename TestFixture::G;
+    using A = typename TestFixture::A;
+    const auto& r = this->retraction;
+    const double eps = 1e-6;
+    for (const auto& x : this->points()) {
+      const A y = this->algebra();
+      const A xp = x + eps * y, xm = x - eps * y;
+      const auto difference = ((r.tau(xp) - r.tau(xm)) / (2 * eps)).eval();
+      // T_xτ(y) = dτ_x(y) τ(x)
+      const auto expected = (G::hat(r.dTau(x, y)) * r.tau(x)).eval();
+      EXPECT_LT((difference - expected).norm(), 1e-8 * (1 + x.squaredNorm()) * this->scale(y))
+          << "x = " << x.transpose();
+    }
+  });
 }
 
 TYPED_TEST(RetractionTest, TangentInverseAndDual) {
-  using G = typename TestFixture::G;
-  using A = typename TestFixture::A;
-  using D = typename TestFixture::D;
-  const auto& r = this->retraction;
-  for (const auto& x : this->points()) {
-    // The exponential's dτ⁻¹ is a series with poles at ad-radius 2π; matrix groups reach
-    // that at spectral radius π, where it cannot be summed to round-off.
-    if (std::is_same_v<typename TestFixture::R, Exponential<G>> &&
-        Samples<TypeParam>::adRadius(x) > 4.0) {
-      continue;
+  this->forEachSize([&] {
+    using G = typename TestFixture::G;
+    using A = typename TestFixture::A;
+    using D = typename TestFixture::D;
+    const auto& r = this->retraction;
+    for (const auto& x : this->points()) {
+      // The exponential's dτ⁻¹ is a series with poles at ad-radius 2π; matrix groups reach
+      // that at spectral radius π, where it cannot be summed to round-off.
+      if (std::is_same_v<typename TestFixture::R, Exponential<G>> &&
+          Samples<TypeParam>::adRadius(x) > 4.0) {
+        continue;
+      }
+      const A y = this->algebra();
+      const D mu = this->dual();
+      const double scale = (1 + x.squaredNorm()) * this->scale(y, mu);
+      EXPECT_LT((r.dTau(x, r.dTauInverse(x, y)) - y).norm(), 1e-12 * scale);
+      EXPECT_LT((r.dTauInverse(x, r.dTau(x, y)) - y).norm(), 1e-12 * scale);
+      EXPECT_NEAR(G::pairing(r.dTauInverseDual(x, mu), y), G::pairing(mu, r.dTauInverse(x, y)),
+                  1e-12 * scale);
+      const A minus = -x;
+      const D lhs = r.dTauInverseDual(minus, mu);
+      const D rhs = G::AdDual(r.tau(x), r.dTauInverseDual(x, mu));
+      EXPECT_LT((lhs - rhs).norm(), 1e-12 * scale) << "x = " << x.transpose();
     }
-    const A y = this->algebra();
-    const D mu = this->dual();
-    const double scale = (1 + x.squaredNorm()) * this->scale(y, mu);
-    EXPECT_LT((r.dTau(x, r.dTauInverse(x, y)) - y).norm(), 1e-12 * scale);
-    EXPECT_LT((r.dTauInverse(x, r.dTau(x, y)) - y).norm(), 1e-12 * scale);
-    EXPECT_NEAR(G::pairing(r.dTauInverseDual(x, mu), y), G::pairing(mu, r.dTauInverse(x, y)),
-                1e-12 * scale);
-    const A minus = -x;
-    const D lhs = r.dTauInverseDual(minus, mu);
-    const D rhs = G::AdDual(r.tau(x), r.dTauInverseDual(x, mu));
-    EXPECT_LT((lhs - rhs).norm(), 1e-12 * scale) << "x = " << x.transpose();
-  }
+  });
 }
 
 TEST(Cayley, SO3DualMatchesPaperClosedForm) {
