@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
 """Figures for a fluid-relax output folder (docs/reference/command-lines-and-files.md), from its
-CSV/JSON only.
+CSV/JSON files (and fluid.hdf5 for the spectrum).
 
 Usage: plot_fluid.py OUT_DIR
 
 vorticity_sphere.png  the vorticity on the sphere, initial and final, Mollweide projection,
                       one colour scale, evaluated from omega_initial.csv / omega_final.csv
+spectrum.png          with --h5: the energy spectrum E_l of the first and last frames of
+                      fluid.hdf5, log-log, with l^-3 and l^-5/3 slopes (needs h5py)
 history.png           energy, enstrophy, ||[P,W]||_F (log) and spectrum drift (log, zeros
                       omitted) against t, from history.csv; for a Newton search (--newton),
                       whose rows all have t = 0 and no h, against the iteration k
@@ -151,6 +153,47 @@ def plot_history(out, summary):
     save(fig, out, "history.png")
 
 
+def plot_spectrum(out, summary):
+    """spectrum.png: the energy spectrum E_l of fluid.hdf5's first and last frames, log-log, with
+    the l^-3 (enstrophy cascade) and l^-5/3 (energy cascade) slopes through the last frame's
+    E_l at l = 4. Only for a file with the field diagnostics (run with --h5)."""
+    path = os.path.join(out, "fluid.hdf5")
+    if not os.path.exists(path):
+        return
+    try:
+        import h5py
+    except ImportError:
+        print("plot_fluid.py: no spectrum.png: fluid.hdf5 needs h5py (Debian: python3-h5py)",
+              file=sys.stderr)
+        return
+    with h5py.File(path, "r") as f:
+        if "energy_spectrum" not in f or f["energy_spectrum"].shape[0] == 0:
+            return
+        spectra = f["energy_spectrum"][[0, -1]]
+        times = f["time"][[0, -1]]
+    l = np.arange(1, spectra.shape[1])
+    fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    for spectrum, t, style in zip(spectra, times, ("--", "-")):
+        ax.loglog(l, np.maximum(spectrum[1:], 1e-300), style, label="t = %.4g" % t)
+    anchor = min(4, l.size)
+    level = spectra[-1][anchor]
+    if level > 0:
+        for slope, name in ((-3.0, "$l^{-3}$"), (-5.0 / 3.0, "$l^{-5/3}$")):
+            ax.loglog(l, level * (l / anchor) ** slope, ":", color="gray" if slope < -2 else "k",
+                      label=name)
+    positive = spectra[:, 1:][spectra[:, 1:] > 0]
+    if positive.size:
+        ax.set_ylim(max(positive.min(), positive.max() * 1e-14), positive.max() * 10)
+    ax.set_xlabel("degree $l$")
+    ax.set_ylabel("$E_l$")
+    ax.set_title("energy spectrum, N = %d, alpha = %g, %s" % (summary["n"], summary["alpha"],
+                                                             summary["method"]))
+    ax.grid(alpha=0.3, which="both")
+    ax.legend()
+    fig.tight_layout()
+    save(fig, out, "spectrum.png")
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
@@ -159,6 +202,7 @@ def main():
         summary = json.load(f)
     plot_history(out, summary)
     plot_sphere(out, summary)
+    plot_spectrum(out, summary)
 
 
 if __name__ == "__main__":

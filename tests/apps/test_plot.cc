@@ -128,6 +128,19 @@ TEST(Plot, ANewtonSearchGetsItsFigures) {
   EXPECT_EQ(readJson(out / "summary.json")["status"], "ok");
 }
 
+// With --h5 the spectrum too, from fluid.hdf5's energy_spectrum (where h5py is installed, as
+// Debian's python3-h5py for the CI; without it the figure is left out, saying so).
+TEST(Plot, AnH5RunGetsItsSpectrum) {
+  const fs::path out = freshFolder("spectrum");
+  const AppResult r =
+      runProgram(FLUID_RELAX_PATH, {"--quiet", "--n", "8", "--steps", "6", "--every", "3", "--h5",
+                                    "--plot", "--out", out.string()});
+  ASSERT_EQ(r.status, 0) << r.output;
+  if (r.output.find("needs h5py") != std::string::npos) GTEST_SKIP() << r.output;
+  EXPECT_TRUE(fs::is_regular_file(out / "spectrum.png")) << r.output;
+  EXPECT_TRUE(fs::is_regular_file(out / "history.png"));
+}
+
 TEST(Plot, AFailedFigureIsExitStatusOneAndSummaryJsonSaysWhy) {
   // A matplotlib that cannot be imported, first on the interpreter's path.
   const fs::path dir = freshFolder("broken_matplotlib");

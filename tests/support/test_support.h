@@ -96,6 +96,15 @@ class Samples {
   }
   /// Samples of size N from here on (a matrix group's).
   void resize(int n) { n_ = n; }
+  /// Runs `check` with samples of every N of sizes(), naming N in failures.
+  template <class Check>
+  void forEachSize(const Check& check) {
+    for (const int n : sizes()) {
+      resize(n);
+      SCOPED_TRACE("N = " + std::to_string(n));
+      check();
+    }
+  }
   int n() const { return n_; }
 
   /// Fixed-size: entries in [-1, 1]. Matrix groups: a random element of so(N) or su(N)

@@ -17,15 +17,6 @@ class GroupTest : public ::testing::Test {
   using M = typename G::template Matrix<double>;
   Sampler sampler;
   Samples<TG> samples{sampler};
-  /// Runs `check` at every N of the group's samples (Samples::sizes), naming N in failures.
-  template <class Check>
-  void forEachSize(const Check& check) {
-    for (const int n : Samples<TG>::sizes()) {
-      samples.resize(n);
-      SCOPED_TRACE("N = " + std::to_string(n));
-      check();
-    }
-  }
   std::vector<A> points() { return samples.points(/*near_pi=*/true); }
   A algebra() { return samples.algebra(); }
   D dual() { return samples.dual(); }
@@ -39,7 +30,7 @@ class GroupTest : public ::testing::Test {
 TYPED_TEST_SUITE(GroupTest, AllGroups::Groups);
 
 TYPED_TEST(GroupTest, ExpMatchesEigenMatrixExponential) {
-  this->forEachSize([&] {
+  this->samples.forEachSize([&] {
     using G = typename TestFixture::G;
     for (const auto& x : this->points()) {
       const typename TestFixture::M expected = G::hat(x).exp();
@@ -49,7 +40,7 @@ TYPED_TEST(GroupTest, ExpMatchesEigenMatrixExponential) {
 }
 
 TYPED_TEST(GroupTest, LogInvertsExp) {
-  this->forEachSize([&] {
+  this->samples.forEachSize([&] {
     using G = typename TestFixture::G;
     for (const auto& x : this->points()) {
       // log is ill-conditioned at π: the samples there, |θ| = π − 1e-6, give exp(x) two
@@ -62,7 +53,7 @@ TYPED_TEST(GroupTest, LogInvertsExp) {
 }
 
 TYPED_TEST(GroupTest, BracketIsMatrixCommutatorAndSatisfiesJacobi) {
-  this->forEachSize([&] {
+  this->samples.forEachSize([&] {
     using G = typename TestFixture::G;
     using A = typename TestFixture::A;
     for (int i = 0; i < 5; ++i) {
@@ -77,7 +68,7 @@ TYPED_TEST(GroupTest, BracketIsMatrixCommutatorAndSatisfiesJacobi) {
 }
 
 TYPED_TEST(GroupTest, PairingIsTracePairingOfRepresentatives) {
-  this->forEachSize([&] {
+  this->samples.forEachSize([&] {
     using G = typename TestFixture::G;
     using A = typename TestFixture::A;
     using D = typename TestFixture::D;
@@ -92,7 +83,7 @@ TYPED_TEST(GroupTest, PairingIsTracePairingOfRepresentatives) {
 }
 
 TYPED_TEST(GroupTest, CoadjointActionsAreDualsOfAdjointActions) {
-  this->forEachSize([&] {
+  this->samples.forEachSize([&] {
     using G = typename TestFixture::G;
     using A = typename TestFixture::A;
     using D = typename TestFixture::D;
@@ -115,7 +106,7 @@ TYPED_TEST(GroupTest, CoadjointActionsAreDualsOfAdjointActions) {
 }
 
 TYPED_TEST(GroupTest, CasimirsAreConstantOnCoadjointOrbits) {
-  this->forEachSize([&] {
+  this->samples.forEachSize([&] {
     using G = typename TestFixture::G;
     using D = typename TestFixture::D;
     for (int i = 0; i < 5; ++i) {
@@ -127,7 +118,7 @@ TYPED_TEST(GroupTest, CasimirsAreConstantOnCoadjointOrbits) {
 }
 
 TYPED_TEST(GroupTest, ClosedFormsAgreeWithGenericBase) {
-  this->forEachSize([&] {
+  this->samples.forEachSize([&] {
     using G = typename TestFixture::G;
     using Base = LieGroupBase<G>;
     using A = typename TestFixture::A;

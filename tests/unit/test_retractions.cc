@@ -21,15 +21,6 @@ class RetractionTest : public ::testing::Test {
   R retraction;
   Sampler sampler;
   Samples<TG> samples{sampler};
-  /// Runs `check` at every N of the group's samples (Samples::sizes), naming N in failures.
-  template <class Check>
-  void forEachSize(const Check& check) {
-    for (const int n : Samples<TG>::sizes()) {
-      samples.resize(n);
-      SCOPED_TRACE("N = " + std::to_string(n));
-      check();
-    }
-  }
   std::vector<A> points() {
     // Cayley is singular nowhere on compact groups but the near-π points matter only for exp.
     auto p = samples.points(/*near_pi=*/true);
@@ -55,7 +46,7 @@ using AllRetractions = Concat<AllGroups::With<Cayley>, AllGroups::With<Exponenti
 TYPED_TEST_SUITE(RetractionTest, AllRetractions);
 
 TYPED_TEST(RetractionTest, IdentityAndInverseProperty) {
-  this->forEachSize([&] {
+  this->samples.forEachSize([&] {
     using G = typename TestFixture::G;
     using A = typename TestFixture::A;
     const auto& r = this->retraction;
@@ -71,7 +62,7 @@ TYPED_TEST(RetractionTest, IdentityAndInverseProperty) {
 }
 
 TYPED_TEST(RetractionTest, TauInverseInvertsTau) {
-  this->forEachSize([&] {
+  this->samples.forEachSize([&] {
     for (const auto& x : this->points()) {
       const double tolerance = (x.norm() > 3.0 ? 1e-8 : 1e-12) * this->scale(x);
       EXPECT_LT((this->retraction.tauInverse(this->retraction.tau(x)) - x).norm(),
@@ -82,7 +73,7 @@ TYPED_TEST(RetractionTest, TauInverseInvertsTau) {
 }
 
 TYPED_TEST(RetractionTest, TangentMatchesCentralDifferences) {
-  this->forEachSize([&] {
+  this->samples.forEachSize([&] {
     using G = typename TestFixture::G;
     using A = typename TestFixture::A;
     const auto& r = this->retraction;
@@ -100,7 +91,7 @@ TYPED_TEST(RetractionTest, TangentMatchesCentralDifferences) {
 }
 
 TYPED_TEST(RetractionTest, TangentInverseAndDual) {
-  this->forEachSize([&] {
+  this->samples.forEachSize([&] {
     using G = typename TestFixture::G;
     using A = typename TestFixture::A;
     using D = typename TestFixture::D;
