@@ -83,7 +83,7 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDDB_BUILD_APPS=
       -DDDB_BUILD_BENCH=OFF -DDDB_BUILD_PYTHON=OFF -DDDB_BUILD_MPI=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
       -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" \
       -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined"
-cmake --build build-sanitize -j2 --target sanitizer_tests  # the two, tests/CMakeLists.txt
+cmake --build build-sanitize -j2 --target sanitizer_tests  # unit_failures, tests/CMakeLists.txt
 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 ASAN_OPTIONS=detect_leaks=1 \
   ctest --test-dir build-sanitize --output-on-failure -j2 -E "_NOT_BUILT|^check_"
 echo "== all checks passed"

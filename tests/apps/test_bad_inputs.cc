@@ -14,7 +14,7 @@
 
 #include "app_test_support.h"
 
-namespace {
+namespace bad_inputs_tests {
 
 using namespace ddb::test;
 
@@ -157,4 +157,4 @@ TEST(BadInputs, ABadDdbNumThreadsExitsTwoAndWritesNothing) {
   fs::remove_all(tmp);
 }
 
-}  // namespace
+}  // namespace bad_inputs_tests

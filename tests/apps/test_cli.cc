@@ -11,7 +11,7 @@
 #include "common/cli.h"
 #include "common/exit_status.h"
 
-namespace {
+namespace cli_tests {
 
 using ddb::app::parseNumber;
 using ddb::app::UsageError;
@@ -95,4 +95,4 @@ TEST(Cli, RepeatedOptionsAreCountedByCli11sOwnParse) {
   EXPECT_EQ(parseError({"--h", "0.1", "--out", "x", "--plot"}), "");
 }
 
-}  // namespace
+}  // namespace cli_tests

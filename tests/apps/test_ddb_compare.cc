@@ -29,7 +29,7 @@
 #include "app_test_support.h"
 #include "ddb_compare/system_table.h"
 
-namespace {
+namespace ddb_compare_tests {
 
 using namespace ddb::test;
 using Json = nlohmann::ordered_json;
@@ -679,4 +679,4 @@ TEST(DdbCompare, AdaptiveRunsOnlyTheMethodsThatKeepTheCasimirs) {
   EXPECT_TRUE(summary["methods"].contains("sddb-exp"));
 }
 
-}  // namespace
+}  // namespace ddb_compare_tests

@@ -21,7 +21,7 @@
 
 #include "app_test_support.h"
 
-namespace {
+namespace ddb_compare_matrix_tests {
 
 using namespace ddb::test;
 using Json = nlohmann::ordered_json;
@@ -347,4 +347,4 @@ TEST(DdbCompareMatrix, TheCapOnNSaysWhy) {
   EXPECT_THAT(r.error, ::testing::HasSubstr("O(N^3)"));
 }
 
-}  // namespace
+}  // namespace ddb_compare_matrix_tests

@@ -11,7 +11,7 @@
 
 #include "app_test_support.h"
 
-namespace {
+namespace determinism_tests {
 
 using namespace ddb::test;
 
@@ -170,4 +170,4 @@ TEST(Determinism, FluidRelaxWritesTheSameFilesTwice) {
   }
 }
 
-}  // namespace
+}  // namespace determinism_tests

@@ -11,7 +11,7 @@
 
 #include "app_test_support.h"
 
-namespace {
+namespace energy_rises_tests {
 
 using namespace ddb::test;
 
@@ -86,4 +86,4 @@ TEST(EnergyRises, AreNotCountedWhereNoMonotoneEnergyIsPromised) {
   EXPECT_EQ(summaryRises(out / "summary.json"), -1);
 }
 
-}  // namespace
+}  // namespace energy_rises_tests

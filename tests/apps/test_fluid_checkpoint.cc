@@ -17,7 +17,7 @@
 
 #include "app_test_support.h"
 
-namespace {
+namespace fluid_checkpoint_tests {
 
 using namespace ddb::test;
 
@@ -198,4 +198,4 @@ TEST_F(Checkpoint, RefusesACorruptCheckpointAFlagThatChangesTheRunAndAReachedCap
   EXPECT_FALSE(fs::exists(out.string() + "_missing"));
 }
 
-}  // namespace
+}  // namespace fluid_checkpoint_tests

@@ -16,7 +16,7 @@
 #include "fluid_relax/fluid_h5.h"
 #include "h5_test_support.h"
 
-namespace {
+namespace fluid_h5_tests {
 
 using ddb::app::IoError;
 using ddb::fluid::FluidH5;
@@ -237,4 +237,4 @@ TEST(FluidH5, CreateFailureNamesTheFileAndLeavesNothing) {
   EXPECT_TRUE(fs::is_directory(folder));
 }
 
-}  // namespace
+}  // namespace fluid_h5_tests

@@ -22,7 +22,7 @@
 #include "app_test_support.h"
 #include "cpu_flags.h"
 
-namespace {
+namespace fluid_relax_tests {
 
 using namespace ddb::test;
 using Matrix = Eigen::MatrixXcd;
@@ -601,4 +601,4 @@ TEST(FluidRelax, HelpListsMethodsInitsAndDefaults) {
   }
 }
 
-}  // namespace
+}  // namespace fluid_relax_tests

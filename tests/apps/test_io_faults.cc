@@ -16,7 +16,7 @@
 
 #include "app_test_support.h"
 
-namespace {
+namespace io_faults_tests {
 
 using namespace ddb::test;
 
@@ -89,7 +89,8 @@ TEST(IoFaults, DdbCompareExitsOneNamingTheFileAndKeepsTheFilesBefore) {
   // between runs, so the faults are put on the CSV files only).
   const AppCase app{DDB_COMPARE_PATH,
                     "--quiet --t-end 1 --method ddb-cay,rk4,sddb-cay --repeat 1",
-                    {"ddb-cay.csv", "rk4.csv", "sddb-cay.csv", "summary.json", "runtime_table.md"}};
+                    {"ddb-cay.csv", "rk4.csv", "sddb-cay.csv", "summary.json", "runtime_table.md"},
+                    {}};
   expectFaultsHandled(app, "ddb_io_faults_", {"ddb-cay.csv", "sddb-cay.csv"});
 }
 
@@ -98,7 +99,8 @@ TEST(IoFaults, FluidRelaxExitsOneNamingTheFileAndKeepsTheFilesBefore) {
   const AppCase app{FLUID_RELAX_PATH,
                     "--quiet --n 8 --steps 20 --seed 2",
                     {"history.csv", "checkpoint.ddb", "W_final.csv", "omega_initial.csv",
-                     "omega_final.csv", "summary.json"}};
+                     "omega_final.csv", "summary.json"},
+                    {}};
   expectFaultsHandled(app, "fluid_io_faults_", {"history.csv", "omega_initial.csv"});
 }
 
@@ -116,4 +118,4 @@ TEST(IoFaults, FluidRelaxMpiExitsOneNamingTheFileAndKeepsTheFilesBefore) {
 }
 #endif
 
-}  // namespace
+}  // namespace io_faults_tests

@@ -14,7 +14,7 @@
 #include "app_test_support.h"
 #include "common/plot.h"
 
-namespace {
+namespace plot_tests {
 
 using namespace ddb::test;
 using ::testing::HasSubstr;
@@ -168,4 +168,4 @@ TEST(Plot, AFailedFigureIsExitStatusOneAndSummaryJsonSaysWhy) {
   }
 }
 
-}  // namespace
+}  // namespace plot_tests

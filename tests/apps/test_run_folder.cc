@@ -23,7 +23,7 @@
 
 #include "app_test_support.h"
 
-namespace {
+namespace run_folder_tests {
 
 using namespace ddb::test;
 using ::testing::HasSubstr;
@@ -161,11 +161,13 @@ TEST_F(RunFolder, AnotherRunsCheckpointOrFilesAreRefused) {
   const std::string resume = "--quiet --resume " + out.string() + " --steps 40";
   const std::string own = readFile(out / "checkpoint.ddb");
   // Runs that differ in N, alpha, seed and method: their checkpoints copied in.
-  for (const std::string& other :
+  for (const char* other :
        {"--n 12 --seed 3", "--n 8 --seed 3 --alpha 0.7", "--n 8 --seed 9",
         "--n 8 --seed 3 --method ddb-exp", "--n 8 --seed 3 --method sddb-cay"}) {
     const fs::path donor = freshFolder("donor");
-    ASSERT_EQ(run("--quiet --h5 --steps 20 " + other + " --out " + donor.string()).status, 0);
+    ASSERT_EQ(
+        run(std::string("--quiet --h5 --steps 20 ") + other + " --out " + donor.string()).status,
+        0);
     fs::copy_file(donor / "checkpoint.ddb", out / "checkpoint.ddb",
                   fs::copy_options::overwrite_existing);
     expectRefused(resume, "not the history its checkpoint continues", out);
@@ -363,8 +365,8 @@ TEST_F(RunFolder, ARunStoppedByAFullDiskResumesToTheUninterruptedRun) {
                                                  {"history.csv fsync", "3"},
                                                  {"checkpoint.ddb write", "6"},
                                                  {"checkpoint.ddb fsync", "3"}};
-  for (const std::string& file : {"history.csv", "checkpoint.ddb"}) {
-    for (const std::string& operation : {"write", "fsync"}) {
+  for (const std::string file : {"history.csv", "checkpoint.ddb"}) {
+    for (const std::string operation : {"write", "fsync"}) {
       const std::string what = operation + " fault on " + file;
       const fs::path out = freshFolder("full_disk");
       const AppResult r = run(
@@ -381,4 +383,4 @@ TEST_F(RunFolder, ARunStoppedByAFullDiskResumesToTheUninterruptedRun) {
   }
 }
 
-}  // namespace
+}  // namespace run_folder_tests

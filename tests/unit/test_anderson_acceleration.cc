@@ -11,7 +11,7 @@
 #include <complex>
 
 namespace ddb {
-namespace {
+namespace anderson_acceleration_tests {
 
 // Iterates p ← mix(p, A p + c) from p = 0 and returns the number of maps applied until the
 // residual ‖A p + c − p‖ is below tolerance (or `budget`).
@@ -75,5 +75,5 @@ TEST(AndersonAcceleration, RemovesTheSlowDirectionOfARealLinearMapOnComplexMatri
   EXPECT_LT((solution - reference).norm(), 1e-11 * reference.norm());
 }
 
-}  // namespace
+}  // namespace anderson_acceleration_tests
 }  // namespace ddb

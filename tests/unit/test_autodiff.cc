@@ -6,7 +6,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace autodiff_tests {
 
 const Eigen::Vector3d kA(0.3, -0.7, 0.2);
 const Eigen::Matrix3d kB = (Eigen::Matrix3d() << 2, 0.5, 0, 0.5, 1, -0.3, 0, -0.3, 3).finished();
@@ -46,5 +46,5 @@ TEST(AutoDiffLagrangian, GradientAndHessianMatchClosedForm) {
   }
 }
 
-}  // namespace
+}  // namespace autodiff_tests
 }  // namespace ddb::test

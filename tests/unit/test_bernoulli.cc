@@ -10,7 +10,7 @@
 #include <limits>
 
 namespace ddb::test {
-namespace {
+namespace bernoulli_tests {
 
 /// Whether `value` is the double nearest to `reference` (up to the reference's error).
 bool nearest(double value, long double reference) {
@@ -60,5 +60,5 @@ TEST(Bernoulli, IsTheNearestDoubleToTheZetaFormUpToTheLastIndex) {
   }
 }
 
-}  // namespace
+}  // namespace bernoulli_tests
 }  // namespace ddb::test

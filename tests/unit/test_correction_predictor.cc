@@ -10,7 +10,7 @@
 #include <vector>
 
 namespace ddb::test {
-namespace {
+namespace correction_predictor_tests {
 
 using Matrix = Eigen::MatrixXcd;
 
@@ -60,5 +60,5 @@ TEST(CorrectionPredictor, APredictionBeyondTwiceTheRememberedCorrectionsFallsBac
   EXPECT_LT((guess - (near + newest)).norm(), 1e-12 * newest.norm());
 }
 
-}  // namespace
+}  // namespace correction_predictor_tests
 }  // namespace ddb::test

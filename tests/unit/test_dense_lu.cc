@@ -6,7 +6,7 @@
 #include <Eigen/LU>
 
 namespace ddb::test {
-namespace {
+namespace dense_lu_tests {
 
 using Matrix = Eigen::MatrixXcd;
 
@@ -41,5 +41,5 @@ TEST(DenseLu, SolvesAgreeWithEigensInverseAndASingularMatrixIsReported) {
   EXPECT_FALSE(lu.factor(singular));
 }
 
-}  // namespace
+}  // namespace dense_lu_tests
 }  // namespace ddb::test

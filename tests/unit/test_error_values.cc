@@ -15,7 +15,7 @@
 #include <string>
 
 namespace ddb::test {
-namespace {
+namespace error_values_tests {
 
 /// The shortest text printf's %.{p}g gives, p = 1..17, that reads back as x.
 std::size_t shortestPrintf(double x) {
@@ -67,5 +67,5 @@ TEST(ErrorValues, MessagesCarryTheShortestDecimals) {
   }
 }
 
-}  // namespace
+}  // namespace error_values_tests
 }  // namespace ddb::test

@@ -19,7 +19,7 @@
 #include <string>
 
 namespace ddb::test {
-namespace {
+namespace failure_modes_tests {
 
 using ::testing::HasSubstr;
 const RigidBodyScenario& kA = rigidBodyScenario("A");
@@ -186,5 +186,5 @@ TEST(Injectivity, Se3UsesTheRotationPart) {
   }
 }
 
-}  // namespace
+}  // namespace failure_modes_tests
 }  // namespace ddb::test

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <limits>
 
-namespace {
+namespace flow_rate_tests {
 
 /// ‖∂f/∂μ‖∞ at mu0 by central differences with step 1e-6·max(1, |μ_j|): truncation error
 /// O(1e-12) relative for these polynomial fields, round-off O(1e-10).
@@ -61,4 +61,4 @@ TEST(FlowRate, NotFiniteIsInfinity) {
             std::numeric_limits<double>::infinity());
 }
 
-}  // namespace
+}  // namespace flow_rate_tests

@@ -6,7 +6,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace groups_tests {
 
 template <class TG>
 class GroupTest : public ::testing::Test {
@@ -156,5 +156,5 @@ TEST(SO3, LogNearPiRecoversAxisUpToSign) {
   EXPECT_LT((SO3::exp(x) - R).norm(), 1e-12);
 }
 
-}  // namespace
+}  // namespace groups_tests
 }  // namespace ddb::test

@@ -9,7 +9,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace groups_jet_tests {
 
 constexpr int kSeeds = 4;  // infinitesimal directions of the Jet samples
 using Jet = ceres::Jet<double, kSeeds>;
@@ -206,5 +206,5 @@ TEST(GroupJets, DexpJetDerivativeLosesDigitsAboveItsTaylorThreshold) {
 TEST(GroupJets, SO3DerivativesMatchCentralDifferences) { checkSolveDerivatives<SO3>(); }
 TEST(GroupJets, SE3DerivativesMatchCentralDifferences) { checkSolveDerivatives<SE3>(); }
 
-}  // namespace
+}  // namespace groups_jet_tests
 }  // namespace ddb::test

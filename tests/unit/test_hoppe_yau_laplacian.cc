@@ -13,7 +13,7 @@
 #include <string>
 
 namespace ddb::test {
-namespace {
+namespace hoppe_yau_laplacian_tests {
 
 using Matrix = Eigen::MatrixXcd;
 
@@ -92,5 +92,5 @@ TEST(HoppeYauLaplacian, SolvingEachDiagonalAloneInvertsTheLaplacian) {
   EXPECT_THROW(HoppeYauLaplacian(4).solveDiagonal(2, one), InvalidArgument);
 }
 
-}  // namespace
+}  // namespace hoppe_yau_laplacian_tests
 }  // namespace ddb::test

@@ -15,7 +15,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace integrators_tests {
 
 const RigidBodyScenario& kA = rigidBodyScenario("A");
 const Eigen::Vector3d kInertia = kA.inertia;
@@ -379,5 +379,5 @@ TEST(Integrate, OverflowIsReportedAsANonFiniteState) {
   }
 }
 
-}  // namespace
+}  // namespace integrators_tests
 }  // namespace ddb::test

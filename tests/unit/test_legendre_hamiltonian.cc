@@ -11,7 +11,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace legendre_hamiltonian_tests {
 
 const Eigen::Vector3d kInertia = rigidBodyScenario("A").inertia;
 
@@ -73,5 +73,5 @@ TEST(LegendreHamiltonian, NonQuadraticLagrangian) {
   }
 }
 
-}  // namespace
+}  // namespace legendre_hamiltonian_tests
 }  // namespace ddb::test

@@ -14,7 +14,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace legendre_jacobian_tests {
 
 // Central differences of a map R^n → R^n at x, step eps·(1 + |x|).
 template <int N, class Map>
@@ -165,5 +165,5 @@ TEST(LegendreJacobian, MatchesJetsAndDifferences) {
   expectBothTargets<Cayley<SO3>>(user, a.mu0(), "quartic");
 }
 
-}  // namespace
+}  // namespace legendre_jacobian_tests
 }  // namespace ddb::test

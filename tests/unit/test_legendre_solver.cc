@@ -12,7 +12,7 @@
 #include <algorithm>
 
 namespace ddb::test {
-namespace {
+namespace legendre_solver_tests {
 
 const RigidBodyScenario& kA = rigidBodyScenario("A");
 constexpr double kTolerance = 1e-14;  // SolverOptions' default relative tolerance
@@ -149,5 +149,5 @@ TEST(LegendreSolver, NoSweepsWhenTheVelocityIsItselfASolve) {
   }
 }
 
-}  // namespace
+}  // namespace legendre_solver_tests
 }  // namespace ddb::test

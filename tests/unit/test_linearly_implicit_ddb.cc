@@ -22,7 +22,7 @@
 #include "order_fit.h"
 
 namespace ddb::test {
-namespace {
+namespace linearly_implicit_ddb_tests {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
@@ -167,5 +167,5 @@ TEST(LinearlyImplicitDdb, NeedsTheScalarMetric) {
   }
 }
 
-}  // namespace
+}  // namespace linearly_implicit_ddb_tests
 }  // namespace ddb::test

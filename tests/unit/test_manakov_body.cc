@@ -11,7 +11,7 @@
 #include <cmath>
 
 namespace ddb::test {
-namespace {
+namespace manakov_body_tests {
 
 // The Manakov body at N = 3 is the rigid body with 𝕀 = (J₂+J₃, J₁+J₃, J₁+J₂): 1000 DDB
 // Cayley steps (Hamiltonian form on both sides) agree to 1e-12.
@@ -39,5 +39,5 @@ TEST(ManakovBody, RejectsBadPrincipalValues) {
   EXPECT_THROW(makeManakovBody(Eigen::Vector3d(1, NAN, 2), 0.1), InvalidArgument);
 }
 
-}  // namespace
+}  // namespace manakov_body_tests
 }  // namespace ddb::test

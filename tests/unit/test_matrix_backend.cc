@@ -15,7 +15,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace matrix_backend_tests {
 
 using Matrix = Eigen::MatrixXcd;
 using B = MatrixBackend<Matrix>;
@@ -223,5 +223,5 @@ TEST(MatrixBackend, FlushSubnormalsAndAllFiniteLookAtEveryPartOfEveryEntry) {
   EXPECT_TRUE(sameBits(real, Eigen::MatrixXd(Eigen::MatrixXd::Constant(3, 3, -0.0))));
 }
 
-}  // namespace
+}  // namespace matrix_backend_tests
 }  // namespace ddb::test

@@ -12,7 +12,7 @@
 #include "zeitlin_step_fraction.h"
 
 namespace ddb::test {
-namespace {
+namespace matrix_cayley_transport_tests {
 
 using Matrix = Eigen::MatrixXcd;
 
@@ -43,5 +43,5 @@ TEST(MatrixCayleyTransport, TheCertifiedOneProductUpdateIsTheCayleyConjugation) 
   }
 }
 
-}  // namespace
+}  // namespace matrix_cayley_transport_tests
 }  // namespace ddb::test

@@ -24,7 +24,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace matrix_exponential_tests {
 
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 
@@ -252,5 +252,5 @@ TEST(MatrixExponential, StepsPastTheInjectivityLimitAreRefused) {
   }
 }
 
-}  // namespace
+}  // namespace matrix_exponential_tests
 }  // namespace ddb::test

@@ -10,7 +10,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace matrix_groups_tests {
 
 // so(3) ≅ R³ by hat; the matrix pairing is twice the dot product.
 TEST(SON, So3IsR3ThroughHat) {
@@ -63,5 +63,5 @@ TEST(SUN, Su2IsSo3ThroughPauliMatrices) {
   }
 }
 
-}  // namespace
+}  // namespace matrix_groups_tests
 }  // namespace ddb::test

@@ -15,7 +15,7 @@
 #include "zeitlin_step_fraction.h"
 
 namespace ddb::test {
-namespace {
+namespace matrix_legendre_solver_tests {
 
 using Matrix = Eigen::MatrixXcd;
 
@@ -55,5 +55,5 @@ TEST(MatrixLegendreSolver, NewtonKrylovTakesOverWhereTheFixedPointStalls) {
   EXPECT_LT((SUN::casimirs(next) - SUN::casimirs(W)).norm(), 1e-13 * W.norm());
 }
 
-}  // namespace
+}  // namespace matrix_legendre_solver_tests
 }  // namespace ddb::test

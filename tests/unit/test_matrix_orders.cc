@@ -19,7 +19,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace matrix_orders_tests {
 
 struct OrderCase {
   std::string system;  // "manakov" or "zeitlin"
@@ -105,5 +105,5 @@ INSTANTIATE_TEST_SUITE_P(EveryMethod, MatrixOrder, ::testing::ValuesIn(everyMatr
                            return name;
                          });
 
-}  // namespace
+}  // namespace matrix_orders_tests
 }  // namespace ddb::test

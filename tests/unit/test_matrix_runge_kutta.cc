@@ -18,7 +18,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace matrix_runge_kutta_tests {
 
 /// The fitted slope of ‖μ_K − μ_K^ref‖ over t ∈ [0, t_end] for the given step counts.
 template <class G>
@@ -155,5 +155,5 @@ TEST(Lobatto3cOnMatrixGroups, AFailedSolveIsASolveFailureNamingTheStep) {
   }
 }
 
-}  // namespace
+}  // namespace matrix_runge_kutta_tests
 }  // namespace ddb::test

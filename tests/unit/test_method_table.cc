@@ -16,7 +16,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace method_table_tests {
 
 TEST(MethodTable, NamesAreUniqueAndDescriptionsAreOneLine) {
   std::set<std::string_view> names;
@@ -240,5 +240,5 @@ TEST(MethodTable, StepIterationsAreTheSolversOwnCountsOnSUN) {
   checkIterationCounts<SUN>(makeZeitlinFluid(6, 0.5), randomVorticity(6, 3), 0.05);
 }
 
-}  // namespace
+}  // namespace method_table_tests
 }  // namespace ddb::test

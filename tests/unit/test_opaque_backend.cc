@@ -150,7 +150,7 @@ struct OpaqueKernels {
   static Eigen::MatrixXcd& reveal(OpaqueMatrix& x) { return x.entries_; }
 };
 
-namespace {
+namespace opaque_backend_tests {
 
 /// SU(N) on opaque matrices: the methods see nothing but MatrixBackend<OpaqueMatrix>.
 using OpaqueSUN = SUNOn<OpaqueMatrix>;
@@ -368,5 +368,5 @@ TEST(OpaqueBackend, ARelaxationResumedFromItsRecordContinuesToTheBit) {
   EXPECT_TRUE(sameBits(second.state().t, whole.state().t));
 }
 
-}  // namespace
+}  // namespace opaque_backend_tests
 }  // namespace ddb

@@ -20,7 +20,7 @@
 #include <vector>
 
 namespace ddb::test {
-namespace {
+namespace orbit_newton_tests {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
@@ -245,5 +245,5 @@ TEST(OrbitNewton, BadArgumentsAreInvalidArguments) {
   EXPECT_THROW(Relaxation<SO3>(*conservative, s.mu0(), newtonUntil(1e-10)), InvalidArgument);
 }
 
-}  // namespace
+}  // namespace orbit_newton_tests
 }  // namespace ddb::test

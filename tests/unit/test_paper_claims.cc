@@ -9,7 +9,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace paper_claims_tests {
 
 using Scenario = RigidBodyScenario;
 const Scenario& kA = rigidBodyScenario("A");
@@ -72,5 +72,5 @@ TEST(PaperClaims, ScenarioCDdbEndsOnTheGreatCircle) {
   EXPECT_GT(std::abs(rk4.norm() - m0.norm()), 1e-10);
 }
 
-}  // namespace
+}  // namespace paper_claims_tests
 }  // namespace ddb::test

@@ -28,7 +28,7 @@
 #include <vector>
 
 namespace ddb::test {
-namespace {
+namespace randomised_tests {
 
 constexpr double kCasimirTolerance = 1e-13;
 constexpr long kSteps = 10;
@@ -265,5 +265,5 @@ TEST(Randomised, ZeitlinFluid) {
   });
 }
 
-}  // namespace
+}  // namespace randomised_tests
 }  // namespace ddb::test

@@ -17,7 +17,7 @@
 #include <vector>
 
 namespace ddb::test {
-namespace {
+namespace relax_tests {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
@@ -289,5 +289,5 @@ TEST(Relax, BadArgumentsAreInvalidArguments) {
   EXPECT_THROW(relax(*method, *conservative, s.mu0(), 0.1, options), InvalidArgument);
 }
 
-}  // namespace
+}  // namespace relax_tests
 }  // namespace ddb::test

@@ -9,7 +9,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace retractions_tests {
 
 template <class TG>
 class RetractionTest : public ::testing::Test {
@@ -153,5 +153,5 @@ TEST(TruncatedExponential, ErrorShrinksLikeFirstOmittedPower) {
   }
 }
 
-}  // namespace
+}  // namespace retractions_tests
 }  // namespace ddb::test

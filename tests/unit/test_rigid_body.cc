@@ -12,7 +12,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace rigid_body_tests {
 
 const Eigen::Vector3d kInertia = rigidBodyScenario("A").inertia;
 
@@ -251,5 +251,5 @@ TEST(TypedLiePoissonSystem, RejectsANullHamiltonianOrMetricNamingIt) {
       ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("metric")));
 }
 
-}  // namespace
+}  // namespace rigid_body_tests
 }  // namespace ddb::test

@@ -12,7 +12,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace se3_systems_tests {
 
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 const HeavyTopSetup kTop;
@@ -150,5 +150,5 @@ TEST(SE3Systems, RejectBadParametersNamingThem) {
               ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("mass")));
 }
 
-}  // namespace
+}  // namespace se3_systems_tests
 }  // namespace ddb::test

@@ -12,7 +12,7 @@
 #include <vector>
 
 namespace ddb::test {
-namespace {
+namespace spherical_harmonic_basis_tests {
 
 using Matrix = Eigen::MatrixXcd;
 
@@ -91,5 +91,5 @@ TEST(SphericalHarmonicBasis, CoefficientsMatchEigensEigenvectorsOfEachBlock) {
   }
 }
 
-}  // namespace
+}  // namespace spherical_harmonic_basis_tests
 }  // namespace ddb::test

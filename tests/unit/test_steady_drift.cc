@@ -16,7 +16,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace steady_drift_tests {
 
 constexpr long kSteps = 20000;
 constexpr double kBound = 2e-13;  // √(2·10⁴)·ε ≈ 3e-14; the linear drift was 1.3e-12 and more
@@ -68,5 +68,5 @@ TEST(SteadyDrift, ZeitlinFluidN16StaysAtRandomWalkSize) {
   EXPECT_LT(drift, kBound);
 }
 
-}  // namespace
+}  // namespace steady_drift_tests
 }  // namespace ddb::test

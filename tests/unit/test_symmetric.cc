@@ -11,7 +11,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace symmetric_tests {
 
 const Eigen::Vector3d kInertia = rigidBodyScenario("A").inertia;
 const Eigen::Vector3d kM0 = rigidBodyScenario("A").mu0();
@@ -173,5 +173,5 @@ TEST(PaperSymmetricDdb, NeedsALagrangian) {
               ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("Lagrangian")));
 }
 
-}  // namespace
+}  // namespace symmetric_tests
 }  // namespace ddb::test

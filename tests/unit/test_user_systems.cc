@@ -16,7 +16,7 @@
 #include "test_support.h"
 
 namespace ddb::test {
-namespace {
+namespace user_systems_tests {
 
 using Matrix = Eigen::MatrixXcd;
 using C = std::complex<double>;
@@ -283,5 +283,5 @@ TEST(UserSystems, WeightedBodyOnSO4AgreesWithAnIndependentRk4) {
   EXPECT_LT(energy, so4->energy(M0));
 }
 
-}  // namespace
+}  // namespace user_systems_tests
 }  // namespace ddb::test

@@ -15,7 +15,7 @@
 #include <string>
 
 namespace ddb::test {
-namespace {
+namespace warm_start_tests {
 
 constexpr long kSteps = 6;  // steps before and after the save
 
@@ -165,5 +165,5 @@ TEST(BinaryRecord, RefusesACorruptedOrTruncatedRecord) {
   EXPECT_THROW(fixed.get(wrong_size), CorruptRecord);
 }
 
-}  // namespace
+}  // namespace warm_start_tests
 }  // namespace ddb::test

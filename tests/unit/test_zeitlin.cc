@@ -20,7 +20,7 @@
 #include "zeitlin_step_fraction.h"
 
 namespace ddb::test {
-namespace {
+namespace zeitlin_tests {
 
 using Matrix = Eigen::MatrixXcd;
 
@@ -274,5 +274,5 @@ TEST(ZeitlinFluid, BadStatesAreRejectedWithTheirSizeAndWorstEntry) {
   EXPECT_THROW(makeZeitlinFluid(8, NAN), InvalidArgument);
 }
 
-}  // namespace
+}  // namespace zeitlin_tests
 }  // namespace ddb::test

@@ -23,7 +23,7 @@
 #include "order_fit.h"
 
 namespace ddb::test {
-namespace {
+namespace zeitlin_rotation_tests {
 
 using Matrix = Eigen::MatrixXcd;
 
@@ -233,5 +233,5 @@ TEST(ZeitlinRotation, BadPhysicsIsRefusedNamingTheParameter) {
   }
 }
 
-}  // namespace
+}  // namespace zeitlin_rotation_tests
 }  // namespace ddb::test

@@ -17,7 +17,7 @@
 #include <random>
 
 namespace ddb::test {
-namespace {
+namespace zeitlin_spectra_tests {
 
 using Matrix = Eigen::MatrixXcd;
 
@@ -163,5 +163,5 @@ TEST(SphericalHarmonicGrid, CoefficientsOfAnotherResolutionAreRefused) {
   EXPECT_THROW(SphericalHarmonicGrid(0), InvalidArgument);
 }
 
-}  // namespace
+}  // namespace zeitlin_spectra_tests
 }  // namespace ddb::test

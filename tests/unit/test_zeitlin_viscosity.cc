@@ -21,7 +21,7 @@
 #include "order_fit.h"
 
 namespace ddb::test {
-namespace {
+namespace zeitlin_viscosity_tests {
 
 using Matrix = Eigen::MatrixXcd;
 
@@ -169,5 +169,5 @@ TEST(ZeitlinViscosity, BadParametersAreRefusedNamingThem) {
   refused(v, "drag");
 }
 
-}  // namespace
+}  // namespace zeitlin_viscosity_tests
 }  // namespace ddb::test
