@@ -29,7 +29,7 @@
 #include "mpi_test_support.h"
 
 namespace ddb {
-namespace {
+namespace distributed_ddb_tests {
 
 using test::relativeDistance;
 
@@ -193,5 +193,5 @@ INSTANTIATE_TEST_SUITE_P(SizesBlocksAndAlphas, DistributedDdbTest,
                                                 : "minus05");
                          });
 
-}  // namespace
+}  // namespace distributed_ddb_tests
 }  // namespace ddb

@@ -22,7 +22,7 @@
 #include "mpi_test_support.h"
 
 namespace ddb {
-namespace {
+namespace distributed_eigenbasis_tests {
 
 using test::randomComplexMatrix;
 using test::relativeDistance;
@@ -179,5 +179,5 @@ INSTANTIATE_TEST_SUITE_P(SizesAndBlocks, DistributedEigenbasisTest,
                          testing::Combine(testing::Values(4, 16, 33, 64), testing::Values(5, 7)),
                          test::sizeAndBlockName);
 
-}  // namespace
+}  // namespace distributed_eigenbasis_tests
 }  // namespace ddb

@@ -24,7 +24,7 @@
 #include "mpi_test_support.h"
 
 namespace ddb {
-namespace {
+namespace distributed_matrix_tests {
 
 using test::randomComplexMatrix;
 using test::relativeDistance;
@@ -360,5 +360,5 @@ INSTANTIATE_TEST_SUITE_P(SizesAndBlocks, DistributedMatrixTest,
                          testing::Combine(testing::Values(16, 33, 64), testing::Values(5, 7)),
                          test::sizeAndBlockName);
 
-}  // namespace
+}  // namespace distributed_matrix_tests
 }  // namespace ddb

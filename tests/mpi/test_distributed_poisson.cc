@@ -16,7 +16,7 @@
 #include "mpi_test_support.h"
 
 namespace ddb {
-namespace {
+namespace distributed_poisson_tests {
 
 using test::randomComplexMatrix;
 using test::relativeDistance;
@@ -97,5 +97,5 @@ TEST(DistributedPoissonSolver, SendsTheBytesCountedByHand) {
   EXPECT_EQ(solver.bytesSentPerSolve(), counts->second[static_cast<std::size_t>(grid.rank())]);
 }
 
-}  // namespace
+}  // namespace distributed_poisson_tests
 }  // namespace ddb
