@@ -10,6 +10,10 @@
 // h = min(0.02 ħ/‖P₀‖₂, 4 ħ/(|α| ‖W₀‖₂²)) within it (docs/design/architecture.md, "Large N: the
 // step's stability bound"; fluid-relax's default, systems/zeitlin_step_size.h). The BLAS thread
 // count is the environment's (OPENBLAS_NUM_THREADS).
+// The exact flows a damped or forced step adds, at every N beside the product:
+// zeitlin-viscosity/<N> one ZeitlinViscousFlow::advance (ν = 1e-4, p = 2, γ = 0.01, on a rotating
+// sphere), zeitlin-forcing/<N> one ZeitlinStochasticForcingFlow::advance (band 10:2, or 2:1 at
+// N = 32); a Strang step takes two of each.
 #include "zeitlin_bench.h"
 
 #include <benchmark/benchmark.h>
@@ -17,11 +21,14 @@
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/integrators/methods/symmetric_ddb.h>
 #include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_forcing.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <ddb/systems/zeitlin_step_size.h>
+#include <ddb/systems/zeitlin_viscosity.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -125,6 +132,49 @@ void product(benchmark::State& state, int n) {
   }
 }
 
+/// One advance of `flow` over h = 0.01 per iteration, from the seeded vorticity.
+void exactFlow(benchmark::State& state,
+               const std::function<std::unique_ptr<ExactFlow<SUN>>()>& make, int n) {
+  const auto flow = make();
+  Matrix W = randomVorticity(n, 1);
+  flow->advance(W, 0.01);  // sizes what it sizes once
+  long allocated = 0, steps = 0;
+  for (auto _ : state) {
+    const long mallocs = tools::mallocCount();
+    flow->advance(W, 0.01);
+    allocated += tools::mallocCount() - mallocs;
+    ++steps;
+    benchmark::DoNotOptimize(W.data());
+  }
+  state.counters["allocs_per_step"] = static_cast<double>(allocated) / static_cast<double>(steps);
+}
+
+void registerExactFlows(int n) {
+  const std::string size = "/" + std::to_string(n);
+  const auto viscous = [n] {
+    ZeitlinViscosity viscosity;
+    viscosity.viscosity = 1e-4;
+    viscosity.order = 2;
+    viscosity.drag = 0.01;
+    return std::unique_ptr<ExactFlow<SUN>>(
+        std::make_unique<ZeitlinViscousFlow>(n, viscosity, zeitlinPlanetaryVorticity(n, 2.0)));
+  };
+  const auto forced = [n] {
+    ZeitlinStochasticForcing forcing;
+    forcing.band_centre = n > 32 ? 10 : 2;
+    forcing.band_half_width = n > 32 ? 2 : 1;
+    forcing.rate = 1e-3;
+    return std::unique_ptr<ExactFlow<SUN>>(
+        std::make_unique<ZeitlinStochasticForcingFlow>(n, forcing));
+  };
+  benchmark::RegisterBenchmark(("zeitlin-viscosity" + size).c_str(), exactFlow,
+                               std::function<std::unique_ptr<ExactFlow<SUN>>()>(viscous), n)
+      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark(("zeitlin-forcing" + size).c_str(), exactFlow,
+                               std::function<std::unique_ptr<ExactFlow<SUN>>()>(forced), n)
+      ->Unit(benchmark::kMicrosecond);
+}
+
 }  // namespace
 
 void registerZeitlinBenchmarks() {
@@ -142,6 +192,7 @@ void registerZeitlinBenchmarks() {
     benchmark::RegisterBenchmark(("zeitlin-euler/ddb-cay" + size).c_str(), stepFluid,
                                  std::string("ddb-cay"), 0.0, n, kWindow, false)
         ->Unit(benchmark::kMicrosecond);
+    registerExactFlows(n);
   }
   // One window each: a window outlasts Google Benchmark's minimum time.
   for (int n : kLargeSizes) {
@@ -154,6 +205,7 @@ void registerZeitlinBenchmarks() {
                                    kLargeWindow, resolved)
           ->Unit(benchmark::kMicrosecond);
     }
+    registerExactFlows(n);
   }
 }
 

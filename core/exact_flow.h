@@ -4,6 +4,8 @@
 // the physics the double bracket does not model (docs/guide/matrix-groups-and-the-fluid.md).
 #pragma once
 
+#include <ddb/core/binary_record.h>
+
 #include <string>
 
 namespace ddb {
@@ -18,6 +20,10 @@ class ExactFlow {
   virtual std::string name() const = 0;
   /// μ ← φ_h(μ), this part's flow over a time h.
   virtual void advance(Dual& mu, double h) = 0;
+  /// The flow's own state that a resumed run needs (a random stream's position), into a
+  /// checkpoint and back; none by default.
+  virtual void save(BinaryRecordWriter&) const {}
+  virtual void load(BinaryRecordReader&) {}
 };
 
 }  // namespace ddb

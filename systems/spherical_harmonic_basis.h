@@ -38,6 +38,36 @@ class SphericalHarmonicBasis {
   }
 
   Eigen::Index size() const { return n_; }
+
+  /// The scratch of a transform, sized once for the largest block (m = 0, N rows) and used block
+  /// by block through its top-left corners, so that a transform allocates nothing.
+  class Workspace {
+   public:
+    explicit Workspace(Eigen::Index n)
+        : plus(n, n),
+          minus(n, n),
+          vectors(n, n),
+          smallest(n),
+          twist(n),
+          gamma(n),
+          lambda(n),
+          scale(n),
+          factors(n),
+          parts(n, 2),
+          projected(n, 2) {}
+    Eigen::Index size() const { return vectors.rows(); }
+
+   private:
+    friend class SphericalHarmonicBasis;
+    /// Block m's eigenvectors as the rows of a `length` × `length` matrix V (row l − m: v_{l,m}).
+    auto block(Eigen::Index length) const { return vectors.topLeftCorner(length, length).matrix(); }
+    // eigenvectors()'s pivots D₊, D₋ ((eigenvalue, row)), its vectors, the twist's search, the
+    // eigenvalues and the vectors' scales; applyDegreeFunction's f_l/N of a block.
+    Eigen::ArrayXXd plus, minus, vectors;
+    Eigen::ArrayXd smallest, twist, gamma, lambda, scale, factors;
+    // A diagonal's two real columns (coefficients(), applyDegreeFunction()) and V times them.
+    Eigen::MatrixXd parts, projected;
+  };
   static Eigen::Index index(Eigen::Index l, Eigen::Index m) { return l * l + l + m; }
 
   /// T_lm as an N×N complex matrix.
@@ -46,14 +76,14 @@ class SphericalHarmonicBasis {
       throwInvalid("(l, m)", "(" + std::to_string(l) + ", " + std::to_string(m) + ")",
                    "must have 0 <= l < N and |m| <= l");
     }
-    Workspace w;
+    Workspace w(n_);
     const Eigen::Index a = std::abs(m);
     blockVectors(a, w);
     Eigen::VectorXd coefficients = Eigen::VectorXd::Zero(n_ - a);
     coefficients(l - a) = 1.0;
     Eigen::MatrixXcd T = Eigen::MatrixXcd::Zero(n_, n_);
-    addBlock(a, w.vectors.matrix().transpose() * coefficients, m >= 0 ? 1.0 : 0.0,
-             m >= 0 ? 0.0 : 1.0, T);
+    addBlock(a, w.block(n_ - a).transpose() * coefficients, m >= 0 ? 1.0 : 0.0, m >= 0 ? 0.0 : 1.0,
+             T);
     return T;
   }
 
@@ -61,24 +91,24 @@ class SphericalHarmonicBasis {
   Eigen::VectorXd coefficients(const Eigen::MatrixXcd& W) const {
     requireSize(W);
     Eigen::VectorXd omega = Eigen::VectorXd::Zero(n_ * n_);
-    Workspace w;
+    Workspace w(n_);
     for (Eigen::Index m = 0; m < n_; ++m) {
       const Eigen::Index length = n_ - m;
       blockVectors(m, w);
       // m = 0: Re(conj(i v) w) = v Im w. m > 0: Re(conj(i s v/√2)(W[k,k+m] + W[k+m,k]));
-      // m < 0: s v/√2 (W[k,k+m] − W[k+m,k]), s = (−1)^m.
-      w.plus.resize(length);
-      w.minus.resize(length);
+      // m < 0: s v/√2 (W[k,k+m] − W[k+m,k]), s = (−1)^m. Column 0 of `parts` holds the former,
+      // column 1 the latter.
+      auto parts = w.parts.topRows(length);
+      auto projected = w.projected.topRows(length);
       for (Eigen::Index k = 0; k < length; ++k) {
-        w.plus(k) = m == 0 ? W(k, k).imag() : (W(k, k + m) + W(k + m, k)).imag();
-        w.minus(k) = m == 0 ? 0.0 : (W(k, k + m) - W(k + m, k)).real();
+        parts(k, 0) = m == 0 ? W(k, k).imag() : (W(k, k + m) + W(k + m, k)).imag();
+        parts(k, 1) = m == 0 ? 0.0 : (W(k, k + m) - W(k + m, k)).real();
       }
       const double scale = m == 0 ? 1.0 / double(n_) : sign(m) / (std::sqrt(2.0) * double(n_));
-      w.projected.noalias() = w.vectors.matrix() * w.plus;
-      for (Eigen::Index l = m; l < n_; ++l) omega(index(l, m)) = scale * w.projected(l - m);
+      projected.noalias() = w.block(length) * parts;
+      for (Eigen::Index l = m; l < n_; ++l) omega(index(l, m)) = scale * projected(l - m, 0);
       if (m == 0) continue;
-      w.projected.noalias() = w.vectors.matrix() * w.minus;
-      for (Eigen::Index l = m; l < n_; ++l) omega(index(l, -m)) = scale * w.projected(l - m);
+      for (Eigen::Index l = m; l < n_; ++l) omega(index(l, -m)) = scale * projected(l - m, 1);
     }
     return omega;
   }
@@ -86,32 +116,51 @@ class SphericalHarmonicBasis {
   /// W ← f(−Δ) W = Σ f_l ω_lm T_lm, f_l = factors(l), l = 0..N−1 (a function of the degree: the
   /// exact flow of a viscosity or a drag, a spectral filter). Each diagonal m of W (and −m) is
   /// taken to block m's eigenvector coordinates, scaled and taken back: (1/N) Vᵀ diag(f) V, with
-  /// V's rows v_{l,m} of norm √N; O(N³) in all, the cost of coefficients() and matrix().
+  /// V's rows v_{l,m} of norm √N; O(N³) in all, the cost of coefficients() and matrix(). With a
+  /// workspace of this N (Workspace(size())) it allocates nothing: a step's viscous flow.
   void applyDegreeFunction(const Eigen::VectorXd& factors, Eigen::MatrixXcd& W) const {
+    Workspace w(n_);
+    applyDegreeFunction(factors, W, w);
+  }
+  void applyDegreeFunction(const Eigen::VectorXd& factors, Eigen::MatrixXcd& W,
+                           Workspace& w) const {
     requireSize(W);
     if (factors.size() != n_) {
       throwInvalid("factors", std::to_string(factors.size()) + " values",
                    "must be N = " + std::to_string(n_) + ", one per degree l");
     }
-    Workspace w;
-    // The real and imaginary parts of a diagonal's entries, in V's real arithmetic.
-    Eigen::MatrixXd parts, projected;
+    if (w.size() != n_) {
+      throwInvalid("workspace", "of N = " + std::to_string(w.size()),
+                   "must be of this basis's N = " + std::to_string(n_));
+    }
     for (Eigen::Index m = 0; m < n_; ++m) {
       const Eigen::Index length = n_ - m;
       blockVectors(m, w);
-      const auto V = w.vectors.matrix();
-      const auto f = factors.tail(length).array() / double(n_);
+      const auto V = w.block(length);
+      // f_l/N in a vector of the workspace: an expression there would be evaluated into a
+      // temporary by colwise() (Eigen's Replicate), an allocation per diagonal.
+      auto f = w.factors.head(length);
+      f = factors.tail(length).array() / double(n_);
+      // The real and imaginary parts of a diagonal's entries, in V's real arithmetic.
+      auto parts = w.parts.topRows(length);
+      auto projected = w.projected.topRows(length);
       // Diagonal m, then −m (the main diagonal once).
       for (Eigen::Index side = 0; side < (m == 0 ? 1 : 2); ++side) {
         const Eigen::Index d = side == 0 ? m : -m;
         const auto entry = [&](Eigen::Index k) -> std::complex<double>& {
           return d >= 0 ? W(k, k + d) : W(k - d, k);
         };
-        parts.resize(length, 2);
-        for (Eigen::Index k = 0; k < length; ++k) parts.row(k) << entry(k).real(), entry(k).imag();
-        projected.noalias() = V * parts;
+        for (Eigen::Index k = 0; k < length; ++k) {
+          parts(k, 0) = entry(k).real();
+          parts(k, 1) = entry(k).imag();
+        }
+        // Not through BLAS: OpenBLAS's dgemm allocates on some of these shapes (an n × n block
+        // times n × 2; measured, bench/zeitlin_bench.cc). V's columns are contiguous, so V·parts
+        // is a sum of outer products and Vᵀ·projected a dot product per entry.
+        projected.setZero();
+        for (Eigen::Index k = 0; k < length; ++k) projected.noalias() += V.col(k) * parts.row(k);
         projected.array().colwise() *= f;
-        parts.noalias() = V.transpose() * projected;
+        parts.noalias() = V.transpose().lazyProduct(projected);
         for (Eigen::Index k = 0; k < length; ++k) entry(k) = {parts(k, 0), parts(k, 1)};
       }
     }
@@ -124,29 +173,23 @@ class SphericalHarmonicBasis {
                    "must be N^2 = " + std::to_string(n_ * n_));
     }
     Eigen::MatrixXcd W = Eigen::MatrixXcd::Zero(n_, n_);
-    Workspace w;
+    Workspace w(n_);
     Eigen::VectorXd block;
     for (Eigen::Index m = 0; m < n_; ++m) {
       blockVectors(m, w);
       block.resize(n_ - m);
       for (Eigen::Index l = m; l < n_; ++l) block(l - m) = omega(index(l, m));
-      addBlock(m, w.vectors.matrix().transpose() * block, 1.0, 0.0, W);
+      addBlock(m, w.block(n_ - m).transpose() * block, 1.0, 0.0, W);
       if (m == 0) continue;
       for (Eigen::Index l = m; l < n_; ++l) block(l - m) = omega(index(l, -m));
-      addBlock(m, w.vectors.matrix().transpose() * block, 0.0, 1.0, W);
+      addBlock(m, w.block(n_ - m).transpose() * block, 0.0, 1.0, W);
     }
     return W;
   }
 
  private:
-  /// Workspaces of eigenvectors(), reused from block to block.
-  struct TwistedFactors {
-    Eigen::ArrayXXd plus, minus;  // (eigenvalue, row): the pivots D₊, D₋
-    Eigen::ArrayXd smallest, twist, gamma;
-  };
-
-  /// The eigenvectors (unnormalised rows of `z`) of the symmetric tridiagonal
-  /// matrix of `diagonal` (n) and `subdiagonal` (n − 1) for its eigenvalues `lambda`, in
+  /// The eigenvectors (unnormalised rows of w.vectors' n × n corner) of the symmetric tridiagonal
+  /// matrix of `diagonal` (n) and `subdiagonal` (n − 1) for its eigenvalues w.lambda, in
   /// O(n) each: the twisted factorisation (Parlett and Dhillon, "Fernando's solution to
   /// Wilkinson's problem", Linear Algebra Appl. 1997). T − λI = L₊D₊L₊ᵀ from the top and
   /// U₋D₋U₋ᵀ from the bottom; at the twist r where γ_r = D₊(r) + D₋(r) − (d_r − λ) is
@@ -157,33 +200,37 @@ class SphericalHarmonicBasis {
   /// Eigen's QR iteration took O(n³) per block and made the basis O(N⁴)
   /// (docs/design/architecture.md, "The spherical-harmonic basis").
   static void eigenvectors(const Eigen::VectorXd& diagonal, const Eigen::VectorXd& subdiagonal,
-                           const Eigen::ArrayXd& lambda, TwistedFactors& f, Eigen::ArrayXXd& z) {
-    const Eigen::Index n = diagonal.size(), count = lambda.size();
+                           Workspace& w) {
+    // One eigenvalue per row of the block: the eigenvalues w.lambda's first n, the pivots and the
+    // vectors the top-left n × n corners of w's arrays.
+    const Eigen::Index n = diagonal.size();
+    const auto lambda = w.lambda.head(n);
+    auto plus = w.plus.topLeftCorner(n, n), minus = w.minus.topLeftCorner(n, n);
+    auto twist = w.twist.head(n), smallest = w.smallest.head(n), gamma = w.gamma.head(n);
+    auto z = w.vectors.topLeftCorner(n, n);
     // A zero pivot is replaced by a tiny one: its ratio is then huge, as the exact
     // eigenvector's is (the standard treatment, same paper).
     const double tiny = std::numeric_limits<double>::min() / std::numeric_limits<double>::epsilon();
     const auto pivot = [tiny](auto&& values) { return (values == 0.0).select(tiny, values); };
-    f.plus.resize(count, n);
-    f.minus.resize(count, n);
-    f.plus.col(0) = pivot(diagonal(0) - lambda);
+    plus.col(0) = pivot(diagonal(0) - lambda);
     for (Eigen::Index i = 1; i < n; ++i) {
       const double e2 = subdiagonal(i - 1) * subdiagonal(i - 1);
-      f.plus.col(i) = pivot((diagonal(i) - lambda) - e2 / f.plus.col(i - 1));
+      plus.col(i) = pivot((diagonal(i) - lambda) - e2 / plus.col(i - 1));
     }
-    f.minus.col(n - 1) = pivot(diagonal(n - 1) - lambda);
+    minus.col(n - 1) = pivot(diagonal(n - 1) - lambda);
     for (Eigen::Index i = n - 2; i >= 0; --i) {
       const double e2 = subdiagonal(i) * subdiagonal(i);
-      f.minus.col(i) = pivot((diagonal(i) - lambda) - e2 / f.minus.col(i + 1));
+      minus.col(i) = pivot((diagonal(i) - lambda) - e2 / minus.col(i + 1));
     }
     // The twist of each eigenvalue, as a double for the masks below.
-    f.twist.setZero(count);
-    f.smallest.setConstant(count, INFINITY);
+    twist.setZero();
+    smallest.setConstant(INFINITY);
     for (Eigen::Index k = 0; k < n; ++k) {
-      f.gamma = (f.plus.col(k) + f.minus.col(k) - (diagonal(k) - lambda)).abs();
-      for (Eigen::Index j = 0; j < count; ++j) {
-        if (f.gamma(j) < f.smallest(j)) {
-          f.smallest(j) = f.gamma(j);
-          f.twist(j) = double(k);
+      gamma = (plus.col(k) + minus.col(k) - (diagonal(k) - lambda)).abs();
+      for (Eigen::Index j = 0; j < n; ++j) {
+        if (gamma(j) < smallest(j)) {
+          smallest(j) = gamma(j);
+          twist(j) = double(k);
         }
       }
     }
@@ -192,27 +239,18 @@ class SphericalHarmonicBasis {
     // eigenvalue, with masks in place of branches: (r − i) clamped to [0, 1] is 1 above the
     // twist, 1 − |r − i| clamped at 0 is 1 at it. Masked ratios meet zeros of z, and the
     // ratios are finite (the pivots are not 0), so no 0·inf arises.
-    z.resize(count, n);
     const auto ratio = [&](double e, const auto& pivots) { return -e / pivots; };
-    z.col(n - 1) = (1.0 - (f.twist - double(n - 1)).abs()).max(0.0);
+    z.col(n - 1) = (1.0 - (twist - double(n - 1)).abs()).max(0.0);
     for (Eigen::Index i = n - 2; i >= 0; --i) {
-      z.col(i) = (f.twist - double(i)).max(0.0).min(1.0) * ratio(subdiagonal(i), f.plus.col(i)) *
+      z.col(i) = (twist - double(i)).max(0.0).min(1.0) * ratio(subdiagonal(i), plus.col(i)) *
                      z.col(i + 1) +
-                 (1.0 - (f.twist - double(i)).abs()).max(0.0);
+                 (1.0 - (twist - double(i)).abs()).max(0.0);
     }
     for (Eigen::Index i = 1; i < n; ++i) {
-      z.col(i) += (double(i) - f.twist).max(0.0).min(1.0) *
-                  ratio(subdiagonal(i - 1), f.minus.col(i)) * z.col(i - 1);
+      z.col(i) += (double(i) - twist).max(0.0).min(1.0) * ratio(subdiagonal(i - 1), minus.col(i)) *
+                  z.col(i - 1);
     }
   }
-
-  struct Workspace {
-    TwistedFactors factors;
-    Eigen::ArrayXd lambda;
-    Eigen::ArrayXXd vectors;  // row l − m: v_{l,m}
-    Eigen::ArrayXd scale;
-    Eigen::VectorXd plus, minus, projected;
-  };
 
   static double sign(Eigen::Index m) { return m % 2 == 0 ? 1.0 : -1.0; }
 
@@ -223,20 +261,19 @@ class SphericalHarmonicBasis {
     }
   }
 
-  /// w.vectors = v_{l,m}, l = m..N−1: block m's eigenvectors for −l(l+1)
+  /// w.block(N − m) = v_{l,m}, l = m..N−1: block m's eigenvectors for −l(l+1)
   /// (docs/reference/conventions.md §2), scaled to ‖v‖ = √N with the sign of their last component
   /// (−1)^m.
   void blockVectors(Eigen::Index m, Workspace& w) const {
     const Eigen::Index length = n_ - m;
-    w.lambda.resize(length);
     for (Eigen::Index l = m; l < n_; ++l) w.lambda(l - m) = -double(l) * double(l + 1);
-    eigenvectors(diagonals_[std::size_t(m)], subdiagonals_[std::size_t(m)], w.lambda, w.factors,
-                 w.vectors);
+    eigenvectors(diagonals_[std::size_t(m)], subdiagonals_[std::size_t(m)], w);
     // ‖v‖ = √N, last component of sign (−1)^m.
-    w.scale = std::sqrt(double(n_)) / w.vectors.matrix().rowwise().norm().array();
-    w.scale *=
-        (w.vectors.col(length - 1) * sign(m) < 0.0).select(-1.0, Eigen::ArrayXd::Ones(length));
-    w.vectors.colwise() *= w.scale;
+    auto vectors = w.vectors.topLeftCorner(length, length);
+    auto scale = w.scale.head(length);
+    scale = std::sqrt(double(n_)) / vectors.matrix().rowwise().norm().array();
+    scale *= (vectors.col(length - 1) * sign(m) < 0.0).select(-1.0, Eigen::ArrayXd::Ones(length));
+    vectors.colwise() *= scale;
   }
 
   /// W += Σ_l (c_plus T_{l,m} + c_minus T_{l,−m}) weighted by the block combination

@@ -22,6 +22,16 @@ SphericalHarmonicGrid::SphericalHarmonicGrid(Eigen::Index n) : n_(n) {
   for (Eigen::Index j = 0; j < n; ++j) theta_(j) = kPi * double(2 * j + 1) / columns;
   phi_.resize(2 * n - 1);
   for (Eigen::Index k = 0; k < 2 * n - 1; ++k) phi_(k) = 2.0 * kPi * double(k) / columns;
+  // C(m, k) = w_m cos mφ_k, S(m, k) = w_m sin mφ_k with w_0 = 1, w_m = √2.
+  cos_table_.resize(n, phi_.size());
+  sin_table_.resize(n, phi_.size());
+  for (Eigen::Index m = 0; m < n; ++m) {
+    const double weight = m == 0 ? 1.0 : std::sqrt(2.0);
+    for (Eigen::Index k = 0; k < phi_.size(); ++k) {
+      cos_table_(m, k) = weight * std::cos(double(m) * phi_(k));
+      sin_table_(m, k) = weight * std::sin(double(m) * phi_(k));
+    }
+  }
 }
 
 Eigen::MatrixXd SphericalHarmonicGrid::evaluate(const Eigen::VectorXd& omega) const {
@@ -59,18 +69,9 @@ Eigen::MatrixXd SphericalHarmonicGrid::evaluate(const Eigen::VectorXd& omega) co
       }
     }
   }
-  // f = √(4π) (cosines · C + sines · S), C(m, k) = w_m cos mφ_k, S(m, k) = w_m sin mφ_k with
-  // w_0 = 1, w_m = √2.
-  Eigen::MatrixXd C(n, phi_.size()), S(n, phi_.size());
-  for (Eigen::Index m = 0; m < n; ++m) {
-    const double weight = m == 0 ? 1.0 : std::sqrt(2.0);
-    for (Eigen::Index k = 0; k < phi_.size(); ++k) {
-      C(m, k) = weight * std::cos(double(m) * phi_(k));
-      S(m, k) = weight * std::sin(double(m) * phi_(k));
-    }
-  }
-  Eigen::MatrixXd f = cosines * C;
-  f.noalias() += sines * S;
+  // f = √(4π) (cosines · C + sines · S), the longitudes' tables C and S built once.
+  Eigen::MatrixXd f = cosines * cos_table_;
+  f.noalias() += sines * sin_table_;
   return std::sqrt(4.0 * kPi) * f;
 }
 

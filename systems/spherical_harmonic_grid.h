@@ -33,6 +33,9 @@ class SphericalHarmonicGrid {
  private:
   Eigen::Index n_;
   Eigen::VectorXd theta_, phi_;
+  // The sums over m at the longitudes, w_m cos mφ_k and w_m sin mφ_k (w_0 = 1, w_m = √2): built
+  // once, as evaluate() runs once per saved frame.
+  Eigen::MatrixXd cos_table_, sin_table_;
 };
 
 }  // namespace ddb

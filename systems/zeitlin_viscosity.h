@@ -54,6 +54,7 @@ class ZeitlinViscousFlow final : public ExactFlow<SUN> {
   ZeitlinViscousFlow(Eigen::Index n, const ZeitlinViscosity& viscosity,
                      Eigen::MatrixXcd planetary = Eigen::MatrixXcd())
       : basis_(HoppeYauLaplacian(n)),
+        workspace_(n),
         rates_(n),
         factors_(n),
         planetary_(std::move(planetary)),
@@ -71,12 +72,13 @@ class ZeitlinViscousFlow final : public ExactFlow<SUN> {
       h_ = h;
     }
     if (rotating_) Q -= planetary_;
-    basis_.applyDegreeFunction(factors_, Q);
+    basis_.applyDegreeFunction(factors_, Q, workspace_);
     if (rotating_) Q += planetary_;
   }
 
  private:
   SphericalHarmonicBasis basis_;
+  SphericalHarmonicBasis::Workspace workspace_;  // the flow allocates nothing once built
   Eigen::VectorXd rates_, factors_;  // per degree l: the decay rate, exp(−rate h) for h_
   double h_ = std::nan("");
   Eigen::MatrixXcd planetary_;

@@ -20,10 +20,13 @@ namespace {
 // The layout's version: a checkpoint of another layout is refused, not misread. Layout 3
 // added history.csv's hash, layout 4 the fluid's physics (--rotation, --deformation-radius),
 // layout 5 its damping (--viscosity, --hyperviscosity-order, --drag) and the field diagnostics of
-// the files (history.csv's gamma, fluid.hdf5's spectra, scale decomposition and grid); a
-// checkpoint of layout 2, 3 or 4 is still read (without the hash, on a resting sphere, undamped,
-// files without the diagnostics), so that a run begun by an earlier build resumes.
-constexpr std::int32_t kLayout = 5;
+// the files (history.csv's gamma, fluid.hdf5's spectra, scale decomposition and grid), layout 6
+// its forcing (--forcing-band, --forcing-rate, --forcing-seed; the random stream's position is in
+// the method's record, ExactFlow::save); a checkpoint of layout 2, 3, 4 or 5 is still read
+// (without the hash, on a resting sphere, undamped, unforced, files without the diagnostics), so
+// that a run begun by an earlier build resumes.
+constexpr std::int32_t kLayout = 6;
+constexpr std::int32_t kLayoutWithoutForcing = 5;
 constexpr std::int32_t kLayoutWithoutDamping = 4;
 constexpr std::int32_t kLayoutWithoutPhysics = 3;
 constexpr std::int32_t kLayoutWithoutDigest = 2;
@@ -48,15 +51,25 @@ void putOptions(BinaryRecordWriter& out, const Options& o) {
   out.put(o.viscosity);
   out.put(o.hyperviscosity_order);
   out.put(o.drag);
+  out.put(o.forcing_band);
+  out.put(o.forcing_rate);
+  out.put(o.forcing_seed);
 }
 
 /// Which of the physics' entries a record holds: none (layouts 2, 3), the rotation and the
-/// deformation radius (layout 4), or those and the damping (layout 5, the run definition).
-enum class PhysicsRecord { kNone, kWithoutDamping, kAll };
+/// deformation radius (layout 4), those and the damping (layout 5), or those and the forcing
+/// (layout 6, the run definition).
+enum class PhysicsRecord { kNone, kWithoutDamping, kWithoutForcing, kAll };
 
 PhysicsRecord physicsRecordOf(std::int32_t layout) {
   if (layout == kLayoutWithoutDamping) return PhysicsRecord::kWithoutDamping;
+  if (layout == kLayoutWithoutForcing) return PhysicsRecord::kWithoutForcing;
   return layout == kLayout ? PhysicsRecord::kAll : PhysicsRecord::kNone;
+}
+
+/// Whether a record of `physics` holds the damping.
+bool holdsDamping(PhysicsRecord physics) {
+  return physics == PhysicsRecord::kWithoutForcing || physics == PhysicsRecord::kAll;
 }
 
 void getOptions(BinaryRecordReader& in, Options& o, PhysicsRecord physics) {
@@ -77,10 +90,15 @@ void getOptions(BinaryRecordReader& in, Options& o, PhysicsRecord physics) {
     in.get(o.rotation);
     in.get(o.deformation_radius);
   }
-  if (physics == PhysicsRecord::kAll) {
+  if (holdsDamping(physics)) {
     in.get(o.viscosity);
     in.get(o.hyperviscosity_order);
     in.get(o.drag);
+  }
+  if (physics == PhysicsRecord::kAll) {
+    in.get(o.forcing_band);
+    in.get(o.forcing_rate);
+    in.get(o.forcing_seed);
   }
   // What a command line could not have given (a record altered and its checksum made anew).
   if (o.every < 1 || o.steps < 0 || o.steps > kMaxSteps) {
@@ -124,6 +142,10 @@ void putSettingsBesidesW0(BinaryRecordWriter& out, const Settings& s) {
   out.put(s.viscosity.viscosity);
   out.put(static_cast<std::int32_t>(s.viscosity.order));
   out.put(s.viscosity.drag);
+  out.put(static_cast<std::int32_t>(s.forcing.band_centre));
+  out.put(static_cast<std::int32_t>(s.forcing.band_half_width));
+  out.put(s.forcing.rate);
+  out.put(s.forcing.seed);
 }
 
 void getSettingsBesidesW0(BinaryRecordReader& in, Settings& s, PhysicsRecord physics) {
@@ -142,20 +164,28 @@ void getSettingsBesidesW0(BinaryRecordReader& in, Settings& s, PhysicsRecord phy
     in.get(s.physics.rotation);
     in.get(s.physics.deformation_radius);
   }
-  if (physics == PhysicsRecord::kAll) {
+  if (holdsDamping(physics)) {
     in.get(s.viscosity.viscosity);
     s.viscosity.order = in.get<std::int32_t>();
     in.get(s.viscosity.drag);
   }
+  if (physics == PhysicsRecord::kAll) {
+    s.forcing.band_centre = in.get<std::int32_t>();
+    s.forcing.band_half_width = in.get<std::int32_t>();
+    in.get(s.forcing.rate);
+    in.get(s.forcing.seed);
+  }
   const ZeitlinViscosity& v = s.viscosity;
-  const bool in_domain = std::isfinite(s.alpha) && s.h > 0 && std::isfinite(s.h) && s.steps >= 1 &&
-                         s.steps <= kMaxSteps && s.relax.max_steps >= 1 &&
-                         s.relax.max_steps <= kMaxSteps && s.relax.tolerance >= 0 &&
-                         s.relax.tolerance < 1 && !(s.relax.t_end <= 0) &&
-                         s.relax.control.tolerance > 0 && s.relax.control.tolerance < 1 &&
-                         std::isfinite(s.physics.rotation) && s.physics.deformation_radius > 0 &&
-                         v.viscosity >= 0 && std::isfinite(v.viscosity) && v.order >= 1 &&
-                         v.order <= kMaxHyperviscosityOrder && v.drag >= 0 && std::isfinite(v.drag);
+  const ZeitlinStochasticForcing& f = s.forcing;
+  const bool in_domain =
+      std::isfinite(s.alpha) && s.h > 0 && std::isfinite(s.h) && s.steps >= 1 &&
+      s.steps <= kMaxSteps && s.relax.max_steps >= 1 && s.relax.max_steps <= kMaxSteps &&
+      s.relax.tolerance >= 0 && s.relax.tolerance < 1 && !(s.relax.t_end <= 0) &&
+      s.relax.control.tolerance > 0 && s.relax.control.tolerance < 1 &&
+      std::isfinite(s.physics.rotation) && s.physics.deformation_radius > 0 && v.viscosity >= 0 &&
+      std::isfinite(v.viscosity) && v.order >= 1 && v.order <= kMaxHyperviscosityOrder &&
+      v.drag >= 0 && std::isfinite(v.drag) && f.rate >= 0 && std::isfinite(f.rate) &&
+      f.band_half_width >= 0 && (!f.forces() || long(f.band_centre) - f.band_half_width >= 1);
   if (!in_domain) throw CorruptRecord("settings out of their domain");
 }
 
@@ -169,7 +199,9 @@ void getSettings(BinaryRecordReader& in, Settings& s, PhysicsRecord physics) {
   in.expectTag("settings");
   in.get(s.W0);
   getSettingsBesidesW0(in, s, physics);
-  if (s.W0.rows() < 2 || s.W0.rows() > SUN::kMaxN || s.W0.rows() != s.W0.cols()) {
+  if (s.W0.rows() < 2 || s.W0.rows() > SUN::kMaxN || s.W0.rows() != s.W0.cols() ||
+      (s.forcing.forces() &&
+       long(s.forcing.band_centre) + s.forcing.band_half_width > s.W0.rows() - 1)) {
     throw CorruptRecord("settings out of their domain");
   }
 }
@@ -197,8 +229,8 @@ Checkpoint parseCheckpoint(const std::string& dir, std::string bytes) {
     BinaryRecordReader in = BinaryRecordReader::unseal(std::move(bytes));
     in.expectTag(kTag);
     const auto layout = in.get<std::int32_t>();
-    if (layout != kLayout && layout != kLayoutWithoutDamping && layout != kLayoutWithoutPhysics &&
-        layout != kLayoutWithoutDigest) {
+    if (layout != kLayout && layout != kLayoutWithoutForcing && layout != kLayoutWithoutDamping &&
+        layout != kLayoutWithoutPhysics && layout != kLayoutWithoutDigest) {
       throw CorruptRecord("layout " + std::to_string(layout) + ", this build reads " +
                           std::to_string(kLayout));
     }
@@ -216,7 +248,7 @@ Checkpoint parseCheckpoint(const std::string& dir, std::string bytes) {
     in.get(c.files.history_bytes);
     in.get(c.files.h5_frames);
     if (layout != kLayoutWithoutDigest) c.files.history_digest = in.get<std::uint64_t>();
-    const auto diagnostics = layout == kLayout ? in.get<std::uint8_t>() : std::uint8_t{0};
+    const auto diagnostics = holdsDamping(physics) ? in.get<std::uint8_t>() : std::uint8_t{0};
     if (diagnostics > 1) throw CorruptRecord("files out of their domain");
     c.files.field_diagnostics = diagnostics == 1;
     if (c.files.h5_frames < 0 || (c.files.h5_frames > 0 && !(c.options.h5 || c.options.animate))) {

@@ -18,7 +18,8 @@ class CudaPlacement : public OneProcess {
   using Group = CudaSUN;
   using State = CudaMatrix;
   static constexpr bool kSpectrumEveryState = false;
-  static constexpr bool kDamping = false;  // the viscous flow is dense (ZeitlinViscousFlow)
+  // The viscous flow and the forcing are dense (ZeitlinViscousFlow, ZeitlinStochasticForcingFlow).
+  static constexpr bool kExactFlows = false;
 
   CudaPlacement(Eigen::Index n, double alpha, const ZeitlinPhysics& physics)
       : OneProcess(n),

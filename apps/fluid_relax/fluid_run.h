@@ -11,9 +11,11 @@
 //   n()                             N, on every process
 //   kSpectrumEveryState             whether every state's spectrum drift is measured (the CPU),
 //                                   or only the history rows' (no step waits for an eigensolver)
-//   kDamping                        whether damped(method, viscosity) exists: the viscous flow
-//                                   (ZeitlinViscousFlow) runs on this placement's states
+//   kExactFlows                     whether damped() and forced() exist: the viscous flow and
+//                                   the forcing (ZeitlinViscousFlow, ZeitlinStochasticForcingFlow)
+//                                   run on this placement's states
 //   damped(method, viscosity)       the method Strang-split with the exact viscous flow
+//   forced(method, forcing, κ²)     the method Strang-split with the stochastic forcing
 //   system()                        the fluid whose states are State
 //   hostFluid()                     the same fluid on this process's memory (the writer's)
 //   initialState(W0)                W₀ where the states live (collective)
@@ -73,17 +75,24 @@
 
 namespace ddb::fluid {
 
-/// `method` Strang-split with the viscous flow of s.viscosity where the placement has it; else
-/// a UsageError naming the damping's flag.
+/// `method` Strang-split with the viscous flow of s.viscosity, then with the forcing of s.forcing
+/// (those the run has), where the placement has them; else a UsageError naming the first one's
+/// flag.
 template <class Placement, class G = typename Placement::Group>
-std::unique_ptr<OneStepMethod<G>> damped(Placement& where, std::unique_ptr<OneStepMethod<G>> method,
-                                         const Options& o, const Settings& s) {
-  if constexpr (Placement::kDamping) {
-    return where.damped(std::move(method), s.viscosity);
+std::unique_ptr<OneStepMethod<G>> withExactFlows(Placement& where,
+                                                 std::unique_ptr<OneStepMethod<G>> method,
+                                                 const Options& o, const Settings& s) {
+  if constexpr (Placement::kExactFlows) {
+    if (s.viscosity.damps()) method = where.damped(std::move(method), s.viscosity);
+    if (s.forcing.forces()) {
+      method = where.forced(std::move(method), s.forcing, s.physics.kappaSquared());
+    }
+    return method;
   } else {
-    const bool viscous = s.viscosity.viscosity > 0;
-    app::usageError(viscous ? "--viscosity" : "--drag", viscous ? o.viscosity : o.drag,
-                    "viscosity and drag run on the CPU only so far (fluid-relax --device cpu)");
+    const auto [flag, text] = exactFlowFlag(o, s);
+    app::usageError(flag, text,
+                    "viscosity, drag and forcing run on the CPU only so far (fluid-relax --device "
+                    "cpu)");
   }
 }
 
@@ -112,7 +121,9 @@ int runFluidRelaxation(Placement& where, const Options& o, const Settings& s,
         relaxing.emplace(*system, W0, s.relax);
       } else {
         method = makeMethod<G>(o.method, system);
-        if (s.viscosity.damps()) method = damped(where, std::move(method), o, s);
+        if (!exactFlowFlag(o, s).first.empty()) {
+          method = withExactFlows(where, std::move(method), o, s);
+        }
         relaxing.emplace(*method, *system, W0, s.h, s.relax);
       }
     } catch (const InvalidArgument& e) {
@@ -163,10 +174,18 @@ int runFluidRelaxation(Placement& where, const Options& o, const Settings& s,
             : fmt::format("{} steps of h = {}{} to t = {}", s.steps, s.h,
                           s.default_h ? " (default)" : "", static_cast<double>(s.steps) * s.h);
     const ZeitlinViscosity& damping = s.viscosity;
-    const std::string stepping =
-        damping.damps() ? fmt::format("{} with viscosity {} (order {}) and drag {}", o.method,
-                                      damping.viscosity, damping.order, damping.drag)
-                        : o.method;
+    const ZeitlinStochasticForcing& forcing = s.forcing;
+    std::string stepping = o.method;
+    if (damping.damps()) {
+      stepping += fmt::format(" with viscosity {} (order {}) and drag {}", damping.viscosity,
+                              damping.order, damping.drag);
+    }
+    if (forcing.forces()) {
+      stepping += fmt::format(
+          "{} forcing of l = {}..{} at rate {} (seed {})", damping.damps() ? ", and" : " with",
+          forcing.band_centre - forcing.band_half_width,
+          forcing.band_centre + forcing.band_half_width, forcing.rate, forcing.seed);
+    }
     spdlog::info("N = {}, alpha = {}, {}, {}{}: {}", n, s.alpha, init_text, stepping,
                  where.describe(), steps_text);
   }
@@ -188,8 +207,10 @@ int runFluidRelaxation(Placement& where, const Options& o, const Settings& s,
   };
   EveryKth<bool, decltype(historyRow)> history(o.every, historyRow);
 
+  // A forced run's energy rises by design (the forcing injects it): no rise is a sign of h.
   const bool watch_energy =
-      app::EnergyRises::applies(newton || findMethod(o.method)->keeps_casimirs, s.alpha);
+      app::EnergyRises::applies(newton || findMethod(o.method)->keeps_casimirs, s.alpha) &&
+      !s.forcing.forces();
   // What the summary accumulates over every accepted state.
   const auto observe = [&] {
     if (at.k > 0 && counts_iterations) {

@@ -91,11 +91,11 @@ void readRelaxOptions(const CLI::App& cli, const Options& o, Settings& s) {
   if (o.newton) readNewton(cli, o, s);
   // A Newton search looks for a steady state of the Lie–Poisson flow, and the step control's
   // model is the double bracket's energy rate: neither knows the damping.
-  if (s.viscosity.damps() && (o.newton || o.relax.adaptive)) {
-    const bool viscous = s.viscosity.viscosity > 0;
-    app::usageError(viscous ? "--viscosity" : "--drag", viscous ? o.viscosity : o.drag,
+  if (const auto [flag, text] = exactFlowFlag(o, s);
+      !flag.empty() && (o.newton || o.relax.adaptive)) {
+    app::usageError(flag, text,
                     std::string(o.newton ? "--newton" : "--adaptive") +
-                        " does not take viscosity or drag (time steps of fixed h do)");
+                        " does not take viscosity, drag or forcing (time steps of fixed h do)");
   }
   if (o.relax.adaptive && !findMethod(o.method)->keeps_casimirs) {
     app::usageError("--adaptive", o.method,
@@ -103,6 +103,51 @@ void readRelaxOptions(const CLI::App& cli, const Options& o, Settings& s) {
   }
   if (o.relax.adaptive && s.alpha == 0) {
     app::usageError("--adaptive", o.alpha, "needs --alpha != 0 (the energy must move)");
+  }
+}
+
+/// --forcing-band L:D, --forcing-rate (finite, >= 0) and --forcing-seed into s.forcing: both or
+/// neither of the band and a rate > 0. The band's degrees are checked against N with W0
+/// (requireForcingBand).
+void readForcing(const Options& o, Settings& s) {
+  s.forcing.rate = app::parseNumber("--forcing-rate", o.forcing_rate, o.forcing_rate);
+  if (!(s.forcing.rate >= 0 && std::isfinite(s.forcing.rate))) {
+    app::usageError("--forcing-rate", o.forcing_rate, "must be finite and >= 0");
+  }
+  s.forcing.seed = o.forcing_seed;
+  if (o.forcing_band.empty()) {
+    if (s.forcing.rate > 0) {
+      app::usageError("--forcing-rate", o.forcing_rate,
+                      "needs --forcing-band L:D, the forced degrees L-D..L+D");
+    }
+    return;
+  }
+  // L or L:D, each a whole number (std::stoi would take "3x" as 3).
+  const auto whole = [&](const std::string& text) {
+    if (text.empty() || text.size() > 6 ||
+        text.find_first_not_of("0123456789") != std::string::npos) {
+      app::usageError("--forcing-band", o.forcing_band,
+                      "must be L:D (or L), whole numbers with 1 <= L-D and L+D <= N-1");
+    }
+    return std::stoi(text);
+  };
+  const std::size_t colon = o.forcing_band.find(':');
+  s.forcing.band_centre = whole(o.forcing_band.substr(0, colon));
+  s.forcing.band_half_width =
+      colon == std::string::npos ? 0 : whole(o.forcing_band.substr(colon + 1));
+  if (!(s.forcing.rate > 0)) {
+    app::usageError("--forcing-band", o.forcing_band, "needs --forcing-rate > 0");
+  }
+}
+
+/// The band's degrees within 1..N-1 for W0's N.
+void requireForcingBand(const Options& o, const Settings& s) {
+  const ZeitlinStochasticForcing& f = s.forcing;
+  const long n = static_cast<long>(s.W0.rows());
+  if (f.forces() &&
+      !(f.band_centre - f.band_half_width >= 1 && f.band_centre + f.band_half_width <= n - 1)) {
+    app::usageError("--forcing-band", o.forcing_band,
+                    "its degrees L-D..L+D must lie in [1, N-1], N = " + std::to_string(n));
   }
 }
 
@@ -132,6 +177,7 @@ void readPhysics(const Options& o, Settings& s) {
                     "must be in [1, " + std::to_string(kMaxHyperviscosityOrder) + "]");
   }
   s.viscosity.order = static_cast<int>(o.hyperviscosity_order);
+  readForcing(o, s);
 }
 
 /// The text of a run-defining flag that the run took by default ("" if it has none).
@@ -143,6 +189,8 @@ std::string defaultText(const Checkpoint& c, const std::string& flag) {
   if (flag == "--viscosity") return o.viscosity;
   if (flag == "--drag") return o.drag;
   if (flag == "--hyperviscosity-order") return std::to_string(o.hyperviscosity_order);
+  if (flag == "--forcing-rate") return o.forcing_rate;
+  if (flag == "--forcing-seed") return std::to_string(o.forcing_seed);
   if (flag == "--method") return o.method;
   if (flag == "--init") return o.init;
   if (flag == "--every") return std::to_string(o.every);
@@ -174,6 +222,7 @@ Settings settings(const CLI::App& cli, const Options& o, Eigen::Index max_n) {
       app::initialVorticity(cli, {o.n, o.seed, o.init, o.init_file}, {max_n, ""});
   s.W0 = std::move(initial.W);
   s.init = initial.init;
+  requireForcingBand(o, s);
 
   double t_end = 0.0;
   if (by_time) {
@@ -218,6 +267,13 @@ Settings settings(const CLI::App& cli, const Options& o, Eigen::Index max_n) {
   }
   s.out = o.out;
   return s;
+}
+
+std::pair<std::string, std::string> exactFlowFlag(const Options& o, const Settings& s) {
+  if (s.viscosity.viscosity > 0) return {"--viscosity", o.viscosity};
+  if (s.viscosity.drag > 0) return {"--drag", o.drag};
+  if (s.forcing.forces()) return {"--forcing-rate", o.forcing_rate};
+  return {};
 }
 
 void resumeSettings(const CLI::App& cli, const Options& given, Checkpoint& c) {

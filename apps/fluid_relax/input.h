@@ -4,6 +4,7 @@
 #pragma once
 
 #include <ddb/integrators/drivers/relax.h>
+#include <ddb/systems/zeitlin_forcing.h>
 #include <ddb/systems/zeitlin_hamiltonian.h>
 #include <ddb/systems/zeitlin_viscosity.h>
 
@@ -11,6 +12,7 @@
 #include <Eigen/Core>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 #include "fluid_relax/options.h"
 
@@ -22,8 +24,9 @@ using Matrix = Eigen::MatrixXcd;
 struct Settings {
   Matrix W0;  // the relative vorticity
   double alpha = 0.0, h = 0.0;
-  ZeitlinPhysics physics;      // --rotation, --deformation-radius
-  ZeitlinViscosity viscosity;  // --viscosity, --hyperviscosity-order, --drag
+  ZeitlinPhysics physics;            // --rotation, --deformation-radius
+  ZeitlinViscosity viscosity;        // --viscosity, --hyperviscosity-order, --drag
+  ZeitlinStochasticForcing forcing;  // --forcing-band, --forcing-rate, --forcing-seed
   bool default_h = false;
   long steps = 0;
   /// When relax() stops: --until-steady, the cap (--steps, or --t-end's time with
@@ -46,6 +49,10 @@ struct Settings {
 /// (--init-file read and checked, or generated), h (given or the default) and a first step that
 /// does not overflow.
 Settings settings(const CLI::App& cli, const Options& o, Eigen::Index max_n);
+
+/// The flag and text that name the run's exact flows (the damping's, then the forcing's: the first
+/// given), for a message that refuses them; empty if the run has none.
+std::pair<std::string, std::string> exactFlowFlag(const Options& o, const Settings& s);
 
 struct Checkpoint;
 

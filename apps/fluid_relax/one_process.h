@@ -5,6 +5,7 @@
 
 #include <ddb/integrators/methods/strang_splitting.h>
 #include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_forcing.h>
 #include <ddb/systems/zeitlin_viscosity.h>
 #include <spdlog/fmt/fmt.h>
 
@@ -63,7 +64,7 @@ class CpuPlacement : public OneProcess {
   using Group = SUN;
   using State = Matrix;
   static constexpr bool kSpectrumEveryState = true;
-  static constexpr bool kDamping = true;
+  static constexpr bool kExactFlows = true;
 
   CpuPlacement(Eigen::Index n, double alpha, const ZeitlinPhysics& physics)
       : OneProcess(n),
@@ -84,6 +85,13 @@ class CpuPlacement : public OneProcess {
     return std::make_unique<StrangSplitting<SUN>>(
         std::move(method),
         std::make_unique<ZeitlinViscousFlow>(n(), viscosity, hamiltonian_.planetaryVorticity()));
+  }
+  std::unique_ptr<OneStepMethod<SUN>> forced(std::unique_ptr<OneStepMethod<SUN>> method,
+                                             const ZeitlinStochasticForcing& forcing,
+                                             double kappa_squared) const {
+    return std::make_unique<StrangSplitting<SUN>>(
+        std::move(method),
+        std::make_unique<ZeitlinStochasticForcingFlow>(n(), forcing, kappa_squared));
   }
 
  private:

@@ -47,6 +47,15 @@ void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n) {
       ->check(app::fitsIn<long>());
   cli.add_option("--drag", o.drag, "linear drag gamma >= 0: dW/dt gains -gamma W, as --viscosity")
       ->capture_default_str();
+  cli.add_option("--forcing-band", o.forcing_band,
+                 "L:D, stochastic forcing of the degrees L-D..L+D (within 1..N-1; L alone: D = 0), "
+                 "white in time, Strang-split as --viscosity (CPU only; needs --forcing-rate)");
+  cli.add_option("--forcing-rate", o.forcing_rate,
+                 "the forcing's mean energy injection rate epsilon >= 0 (energy per unit time)")
+      ->capture_default_str();
+  cli.add_option("--forcing-seed", o.forcing_seed,
+                 "seed of the forcing's random stream (a checkpoint keeps its position)")
+      ->capture_default_str();
   cli.add_option("--h", o.h,
                  "step size (default min(" + app::number(kZeitlinContractionRate) +
                      " hbar/||P0||_2, " + app::number(kZeitlinStiffness) +

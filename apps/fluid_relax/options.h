@@ -44,6 +44,11 @@ struct Options {
   /// (ZeitlinViscosity), by Strang splitting around --method.
   std::string viscosity = "0", drag = "0";
   long hyperviscosity_order = 1;
+  /// Band-limited white-in-time forcing (ZeitlinStochasticForcing), Strang-split as the damping:
+  /// the degrees L - D .. L + D of --forcing-band L:D (empty: none), the mean energy injection rate
+  /// and the random stream's seed.
+  std::string forcing_band, forcing_rate = "0";
+  std::uint64_t forcing_seed = 1;
   std::string out = "results-fluid";
   app::RelaxFlags relax;      // --until-steady, --adaptive, --adaptive-tol
   bool newton = false;        // --newton: OrbitNewton's search instead of steps

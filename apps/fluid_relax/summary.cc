@@ -49,6 +49,13 @@ app::Json runSummary(const Options& o, const Settings& s, const LiePoissonSystem
   summary["viscosity"] = s.viscosity.viscosity;
   summary["hyperviscosity_order"] = s.viscosity.order;
   summary["drag"] = s.viscosity.drag;
+  const ZeitlinStochasticForcing& f = s.forcing;
+  summary["forcing_band"] =
+      f.forces()
+          ? app::Json(std::to_string(f.band_centre) + ":" + std::to_string(f.band_half_width))
+          : app::Json();
+  summary["forcing_rate"] = f.rate;
+  summary["forcing_seed"] = f.forces() ? app::Json(f.seed) : app::Json();
   const Eigen::MatrixXcd Q0 = s.initialState();
   summary["energy_initial"] = diagnostics.energy(Q0);
   summary["energy_final"] = diagnostics.energy(result.final);

@@ -31,7 +31,8 @@ class DistributedPlacement {
   using State = DistributedMatrix;
   /// Only the rows' states are gathered: every state's spectrum would gather every state.
   static constexpr bool kSpectrumEveryState = false;
-  static constexpr bool kDamping = false;  // the viscous flow is dense (ZeitlinViscousFlow)
+  // The viscous flow and the forcing are dense (ZeitlinViscousFlow, ZeitlinStochasticForcingFlow).
+  static constexpr bool kExactFlows = false;
 
   /// The fluid of `run` on `grid` with blocks of run.block; rank 0's fluid for the files.
   DistributedPlacement(const MpiRun& run, const ProcessGrid& grid)

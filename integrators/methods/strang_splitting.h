@@ -26,9 +26,15 @@ class StrangSplitting final : public OneStepMethod<G> {
   /// The Lie–Poisson part's method, then the flow's name: "ddb-cay+viscosity".
   std::string name() const override { return method_->name() + "+" + flow_->name(); }
   void reset() override { method_->reset(); }
-  void saveWarmStart(BinaryRecordWriter& out) const override { method_->saveWarmStart(out); }
+  /// The method's warm start, then the flow's state (ExactFlow::save; nothing for a viscosity, so
+  /// that a damped run's record is what it was before flows had state).
+  void saveWarmStart(BinaryRecordWriter& out) const override {
+    method_->saveWarmStart(out);
+    flow_->save(out);
+  }
   void loadWarmStart(BinaryRecordReader& in, const Dual& state) override {
     method_->loadWarmStart(in, state);
+    flow_->load(in);
   }
 
   Dual step(const Dual& mu, double t, double h) override { return this->stepInPlace(mu, t, h); }

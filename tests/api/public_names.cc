@@ -46,6 +46,7 @@
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/spherical_harmonic_grid.h>
 #include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_forcing.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <ddb/systems/zeitlin_spectra.h>
 #include <ddb/systems/zeitlin_step_size.h>
@@ -534,6 +535,21 @@ static_assert(
   Eigen::MatrixXcd state = Q;
   method.advance(state, 0.0, 0.01);
   static_assert(std::is_base_of_v<ddb::ExactFlow<SUN>, ddb::ZeitlinViscousFlow>);
+  // Forcing (docs/guide/matrix-groups-and-the-fluid.md, "Forcing").
+  ddb::ZeitlinStochasticForcing forcing;
+  forcing.band_centre = 2;      // L
+  forcing.band_half_width = 1;  // D
+  forcing.rate = 1e-3;          // ε
+  forcing.seed = 7;
+  ddb::StrangSplitting<ddb::SUN> forced(
+      ddb::makeMethod<ddb::SUN>("sddb-cay", fluid),
+      std::make_unique<ddb::ZeitlinStochasticForcingFlow>(n, forcing, physics.kappaSquared()));
+  forced.advance(state, 0.01, 0.01);
+  ddb::BinaryRecordWriter record;
+  forced.saveWarmStart(record);
+  use(ddb::counterNormal(forcing.seed, 0, 0));
+  ddb::ZeitlinFixedForcingFlow fixed(n, W);
+  fixed.advance(state, 0.01);
   // The field's diagnostics.
   const ddb::SphericalHarmonicBasis basis(hamiltonian.laplacian());
   const Eigen::VectorXd omega = basis.coefficients(W);

@@ -141,6 +141,21 @@ TEST_F(Checkpoint, ADampedRunKilledAndResumedIsTheUninterruptedOne) {
   expectSameOutputs(whole, out);
 }
 
+// A forced run (--forcing-band, --forcing-rate, --forcing-seed, with viscosity on a rotating
+// sphere) killed and resumed writes the uninterrupted run's files: the checkpoint keeps the
+// forcing (layout 6) and the random stream's position (the method's record, ExactFlow::save).
+TEST_F(Checkpoint, AForcedRunKilledAndResumedIsTheUninterruptedOne) {
+  const std::string forced = kRun +
+                             " --steps 4000 --rotation 0.7 --viscosity 1e-3 --forcing-band 4:1 "
+                             "--forcing-rate 1e-3 --forcing-seed 9";
+  const fs::path whole = freshFolder("forced_whole"), out = freshFolder("forced_killed");
+  ASSERT_EQ(run(forced + " --out " + whole.string()).status, 0);
+  ASSERT_EQ(startAndSignal(forced, out, SIGKILL), -SIGKILL);
+  ASSERT_FALSE(fs::exists(out / "summary.json")) << "the run finished before the kill";
+  ASSERT_EQ(run("--quiet --resume " + out.string()).status, 0);
+  expectSameOutputs(whole, out);
+}
+
 /// The folder's files and their bytes.
 std::map<std::string, std::string> contentsOf(const fs::path& dir) {
   std::map<std::string, std::string> files;
@@ -168,6 +183,8 @@ TEST_F(Checkpoint, RefusesACorruptCheckpointAFlagThatChangesTheRunAndAReachedCap
   refused("--steps 200 --viscosity 1e-4", "--viscosity = 1e-4: a resumed run keeps its settings");
   refused("--steps 200 --hyperviscosity-order 2", "--hyperviscosity-order = 2");
   refused("--steps 200 --drag 0.1", "--drag = 0.1");
+  refused("--steps 200 --forcing-band 3:1 --forcing-rate 1e-3", "--forcing-band = 3:1");
+  refused("--steps 200 --forcing-seed 5", "--forcing-seed = 5");
   refused("", "the run has taken 120 steps, its cap 120");
   refused("--steps 100", "the run has taken 120 steps");
   refused("--steps 200 --t-end 9", "--steps, --t-end");

@@ -371,6 +371,9 @@ TEST(FluidRelax, RotationAndDeformationRadiusCarryARossbyHaurwitzWave) {
   EXPECT_TRUE(plain["deformation_radius"].is_null());
   EXPECT_EQ(jsonNumber(plain, "viscosity"), 0.0);
   EXPECT_EQ(jsonNumber(plain, "drag"), 0.0);
+  EXPECT_TRUE(plain["forcing_band"].is_null());
+  EXPECT_EQ(jsonNumber(plain, "forcing_rate"), 0.0);
+  EXPECT_TRUE(plain["forcing_seed"].is_null());
 }
 
 // --viscosity, --hyperviscosity-order and --drag: a field of one degree l is steady for the Euler
@@ -414,6 +417,27 @@ TEST(FluidRelax, ViscosityAndDragDampAFieldOfOneDegreeByTheClosedForm) {
   const Matrix expected =
       std::exp(-0.02 * 12.0 * t) * u.asDiagonal() * wave * u.adjoint().asDiagonal();
   EXPECT_LT((readMatrix(rotating / "W_final.csv") - expected).norm(), 1e-9 * wave.norm());
+}
+
+// --forcing-band, --forcing-rate and --forcing-seed (systems/zeitlin_forcing.h, whose mean
+// injection rate the unit tests hold to ε): summary.json records them, the same seed gives the
+// same bits, another seed another flow, and energy rises are not counted (a forced run's energy
+// rises by design).
+TEST(FluidRelax, AForcedRunIsItsSeedsAndRecordsItsForcing) {
+  const std::string forced =
+      "--quiet --n 12 --alpha 0.5 --steps 60 --forcing-band 5:2 --forcing-rate 0.01 ";
+  const fs::path a = freshFolder("forced_a"), b = freshFolder("forced_b"),
+                 c = freshFolder("forced_c");
+  ASSERT_EQ(run(forced + "--forcing-seed 3 --out " + a.string()).status, 0);
+  ASSERT_EQ(run(forced + "--forcing-seed 3 --out " + b.string()).status, 0);
+  ASSERT_EQ(run(forced + "--forcing-seed 4 --out " + c.string()).status, 0);
+  EXPECT_EQ(readFile(a / "W_final.csv"), readFile(b / "W_final.csv"));
+  EXPECT_GT((readMatrix(a / "W_final.csv") - readMatrix(c / "W_final.csv")).norm(), 1e-6);
+  const auto summary = readJson(a / "summary.json");
+  EXPECT_EQ(summary["forcing_band"].get<std::string>(), "5:2");
+  EXPECT_EQ(jsonNumber(summary, "forcing_rate"), 0.01);
+  EXPECT_EQ(jsonNumber(summary, "forcing_seed"), 3);
+  EXPECT_FALSE(summary.contains("energy_rises")) << "not counted";
 }
 
 TEST(FluidRelax, FailedSolveKeepsTheHistoryPrefixAndExitsOne) {

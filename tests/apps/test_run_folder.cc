@@ -204,7 +204,11 @@ TEST_F(RunFolder, ACheckpointThatIsNoRegularFileOrHoldsSizesBeyondItIsRefused) {
   // Fields altered with the checksum recomputed: each is refused before it is used.
   const std::size_t settings = afterTag(bytes, "settings"), options = afterTag(bytes, "options");
   const std::size_t files = afterTag(bytes, "files");
+  // The settings end with the forcing's L, D (32-bit), ε and seed, before the tag "tally".
+  const std::size_t tally = afterTag(bytes, "tally") - sizeof(std::uint64_t) - 5;
   const std::vector<std::pair<std::string, std::string>> edits{
+      {"--forcing-band's D -1", withField<std::int32_t>(bytes, tally - 20, -1)},
+      {"--forcing-rate -1", withField<double>(bytes, tally - 16, -1.0)},
       {"W0 of 2^61 rows", withField<std::int64_t>(bytes, settings, std::int64_t{1} << 61)},
       {"W0 of 2^61 columns", withField<std::int64_t>(bytes, settings + 8, std::int64_t{1} << 61)},
       {"--every -3", withField<long>(bytes, options + 16, -3)},
@@ -223,6 +227,15 @@ TEST_F(RunFolder, ACheckpointThatIsNoRegularFileOrHoldsSizesBeyondItIsRefused) {
   expectSameOutputs(*reference_, out);
 }
 
+/// Writes `bytes` (a record without its checksum) as a checkpoint of `layout`: the layout number
+/// after the record's tag, then the checksum.
+void resealAs(std::string bytes, std::int32_t layout, const fs::path& checkpoint) {
+  std::memcpy(bytes.data() + afterTag(bytes, "fluid-relax checkpoint"), &layout, sizeof layout);
+  const std::uint64_t sum = ddb::fnv1a64(bytes);
+  bytes.append(reinterpret_cast<const char*>(&sum), sizeof sum);
+  std::ofstream(checkpoint, std::ios::binary) << bytes;
+}
+
 /// Each line of `csv` without its last column (history.csv as a build before 0.3.0 wrote it).
 std::string withoutLastColumn(const std::string& csv) {
   std::string out;
@@ -231,14 +244,18 @@ std::string withoutLastColumn(const std::string& csv) {
   return out;
 }
 
-TEST_F(RunFolder, CheckpointsOfLayoutsTwoThreeAndFourResume) {
-  // Layout 4 (before the fluid's damping and the files' field diagnostics): the same record
-  // without the byte after the "files" part's hash that says the files have the diagnostics,
-  // the options' three entries (--viscosity "0", --hyperviscosity-order 1 and --drag "0", the
-  // last before "given flags") and the settings' three numbers (ν, p as a 32-bit integer and γ,
-  // the last before "tally"); its history.csv has no gamma column, so the column goes from the
-  // file and the recorded length and hash are those of the shorter rows. Layout 3 (before the
-  // fluid's physics) also without the options' two texts (--rotation "0" and
+TEST_F(RunFolder, CheckpointsOfLayoutsTwoToFiveResume) {
+  // Layout 5 (before the forcing): the record without the options' three entries
+  // (--forcing-band "", --forcing-rate "0" and --forcing-seed, the last before "given flags") and
+  // the settings' four numbers (L and D as 32-bit integers, ε and the seed, the last before
+  // "tally"); its files are those of today's layout. Layout 4 (before the fluid's damping and the
+  // files' field diagnostics): the same record without the byte after the "files" part's hash that
+  // says the files have the diagnostics, the options' three entries (--viscosity "0",
+  // --hyperviscosity-order 1 and --drag "0", the last before "given flags") and the settings' three
+  // numbers (ν, p as a 32-bit integer and γ, the last before "tally"); its history.csv has no gamma
+  // column, so the column goes from the file and the recorded length and hash are those of the
+  // shorter rows. Layout 3 (before the fluid's physics) also without the options' two texts
+  // (--rotation "0" and
   // --deformation-radius "") and the settings' two numbers before those. Layout 2 (before
   // history.csv's hash) also without the hash after the "files" part's two lengths. The layout
   // number follows the record's tag. The resumed run goes on without gamma: its history is the
@@ -247,11 +264,22 @@ TEST_F(RunFolder, CheckpointsOfLayoutsTwoThreeAndFourResume) {
     return afterTag(bytes, name) - sizeof(std::uint64_t) - name.size();
   };
   const std::string reference_history = withoutLastColumn(readFile(*reference_ / "history.csv"));
-  for (const std::int32_t layout : {4, 3, 2}) {
+  for (const std::int32_t layout : {5, 4, 3, 2}) {
     const fs::path out = finished("layout" + std::to_string(layout), /*h5=*/false);
     const fs::path checkpoint = out / "checkpoint.ddb";
     const std::string sealed = readFile(checkpoint);
     std::string bytes = sealed.substr(0, sealed.size() - 8);
+    bytes.erase(beforeTag(bytes, "tally") - 24, 24);
+    bytes.erase(beforeTag(bytes, "given flags") - 25, 25);
+    if (layout == 5) {
+      resealAs(bytes, layout, checkpoint);
+      const AppResult resumed = run("--quiet --resume " + out.string() + " --steps 40");
+      ASSERT_EQ(resumed.status, 0) << "layout 5\n" << resumed.output;
+      for (const std::string name : {"history.csv", "W_final.csv", "omega_final.csv"}) {
+        EXPECT_EQ(readFile(out / name), readFile(*reference_ / name)) << "layout 5: " << name;
+      }
+      continue;
+    }
     const std::size_t files = afterTag(bytes, "files");
     std::uint64_t length = 0;
     std::memcpy(&length, bytes.data() + files, sizeof length);
@@ -270,10 +298,7 @@ TEST_F(RunFolder, CheckpointsOfLayoutsTwoThreeAndFourResume) {
       bytes.erase(beforeTag(bytes, "tally") - 16, 16);
       bytes.erase(beforeTag(bytes, "given flags") - 17, 17);
     }
-    std::memcpy(bytes.data() + afterTag(bytes, "fluid-relax checkpoint"), &layout, sizeof layout);
-    const std::uint64_t sum = ddb::fnv1a64(bytes);
-    bytes.append(reinterpret_cast<const char*>(&sum), sizeof sum);
-    std::ofstream(checkpoint, std::ios::binary) << bytes;
+    resealAs(bytes, layout, checkpoint);
     const AppResult resumed = run("--quiet --resume " + out.string() + " --steps 40");
     ASSERT_EQ(resumed.status, 0) << "layout " << layout << "\n" << resumed.output;
     EXPECT_EQ(readFile(out / "history.csv"), reference_history) << "layout " << layout;

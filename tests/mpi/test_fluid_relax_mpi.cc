@@ -387,9 +387,12 @@ TEST(FluidRelaxMpi, RefusesBadInputOnEveryRankOnce) {
       {"--steps 10 --method reference", "--method"},
       {"--steps 10 --adaptive --alpha 0", "--adaptive"},
       {"--steps 10 --resume somewhere", "--resume"},
-      // Viscosity and drag run on the CPU only so far (fluid_relax/fluid_run.h, damped()).
-      {"--steps 10 --viscosity 1e-3", "--viscosity = 1e-3: viscosity and drag run on the CPU"},
+      // Viscosity, drag and forcing run on the CPU only so far (fluid_relax/fluid_run.h,
+      // withExactFlows()).
+      {"--steps 10 --viscosity 1e-3",
+       "--viscosity = 1e-3: viscosity, drag and forcing run on the CPU"},
       {"--steps 10 --drag 0.1", "--drag = 0.1"},
+      {"--steps 10 --forcing-band 3:1 --forcing-rate 1e-3", "--forcing-rate = 1e-3"},
   };
   for (const auto& [arguments, flag] : cases) {
     const AppResult r = runMpi(2, arguments + " --out " + out.string());

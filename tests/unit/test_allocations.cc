@@ -2,9 +2,12 @@
 // (docs/reference/conventions.md §4): every malloc of this binary is counted
 // (tools/malloc_counter.h).
 #include <ddb/integrators/methods/method_table.h>
+#include <ddb/integrators/methods/strang_splitting.h>
 #include <ddb/systems/manakov_body.h>
 #include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_forcing.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
+#include <ddb/systems/zeitlin_viscosity.h>
 #include <gtest/gtest.h>
 
 #include <string>
@@ -86,6 +89,35 @@ TEST(Allocations, EveryMatrixGroupMethodStepsWithoutAllocating) {
         << name;
     EXPECT_EQ(allocationsPerStep<SON>(makeManakovBody(J, 0.5), M, 0.05, name), 0) << name;
   }
+}
+
+// A damped and forced step on a rotating sphere: ddb-cay Strang-split with the viscous flow (its
+// transform's workspace sized once, SphericalHarmonicBasis::Workspace) and then with the
+// stochastic forcing (its band's harmonics kept, its normals a function of the count).
+TEST(Allocations, AViscousAndForcedStepAllocatesNothing) {
+  ZeitlinPhysics physics;
+  physics.rotation = 1.3;
+  const auto fluid = makeZeitlinFluid(16, 0.5, physics);
+  const auto& hamiltonian = dynamic_cast<const ZeitlinHamiltonian&>(fluid->hamiltonian());
+  ZeitlinViscosity viscosity;
+  viscosity.viscosity = 1e-3;
+  viscosity.order = 2;
+  viscosity.drag = 0.01;
+  ZeitlinStochasticForcing forcing;
+  forcing.band_centre = 5;
+  forcing.band_half_width = 2;
+  forcing.rate = 0.1;
+  auto damped = std::make_unique<StrangSplitting<SUN>>(
+      makeMethod<SUN>("ddb-cay", fluid),
+      std::make_unique<ZeitlinViscousFlow>(16, viscosity, hamiltonian.planetaryVorticity()));
+  StrangSplitting<SUN> method(std::move(damped),
+                              std::make_unique<ZeitlinStochasticForcingFlow>(16, forcing));
+  Eigen::MatrixXcd Q = randomVorticity(16, 1) + hamiltonian.planetaryVorticity();
+  method.advance(Q, 0.0, 0.01);
+  method.advance(Q, 0.01, 0.01);
+  const long before = tools::mallocCount();
+  for (int k = 2; k < 22; ++k) method.advance(Q, k * 0.01, 0.01);
+  EXPECT_EQ(tools::mallocCount() - before, 0);
 }
 
 TEST(Allocations, TheCounterSeesAnAllocation) {
