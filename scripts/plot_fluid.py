@@ -33,8 +33,9 @@ import numpy as np  # noqa: E402
 from scipy.special import sph_harm  # noqa: E402
 
 # Harmonics above this degree are left out of the sphere figure (and the title says so):
-# the grid below resolves about this many wavelengths around the equator.
-L_MAX_PLOTTED = 128
+# scipy's sph_harm (Debian 12's scipy 1.10) returns NaN for orders m >= 86, its normalisation
+# overflowing, which drew an N = 128 run's figure blank.
+L_MAX_PLOTTED = 85
 
 
 def read_columns(path):
