@@ -44,13 +44,18 @@ struct ZeitlinStochasticForcing {
 
   /// Whether anything is forced (ε > 0).
   bool forces() const { return rate > 0; }
+  /// Whether the band's degrees l_f − δ .. l_f + δ lie in 1 .. N − 1 (l = 0 is the trace).
+  bool bandFits(Eigen::Index n) const {
+    return band_half_width >= 0 && long(band_centre) - band_half_width >= 1 &&
+           long(band_centre) + band_half_width <= long(n) - 1;
+  }
   /// Throws InvalidArgument naming the parameter unless 1 <= l_f − δ, l_f + δ <= N − 1 and ε is
   /// finite and >= 0.
   void validate(Eigen::Index n) const {
     if (band_half_width < 0) {
       throwInvalid("band_half_width", std::to_string(band_half_width), "must be >= 0");
     }
-    if (!(band_centre - band_half_width >= 1 && band_centre + band_half_width <= n - 1)) {
+    if (!bandFits(n)) {
       throwInvalid("band_centre",
                    std::to_string(band_centre) + " +- " + std::to_string(band_half_width),
                    "must have its degrees in [1, N - 1], N = " + std::to_string(n));

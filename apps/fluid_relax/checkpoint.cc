@@ -200,8 +200,7 @@ void getSettings(BinaryRecordReader& in, Settings& s, PhysicsRecord physics) {
   in.get(s.W0);
   getSettingsBesidesW0(in, s, physics);
   if (s.W0.rows() < 2 || s.W0.rows() > SUN::kMaxN || s.W0.rows() != s.W0.cols() ||
-      (s.forcing.forces() &&
-       long(s.forcing.band_centre) + s.forcing.band_half_width > s.W0.rows() - 1)) {
+      (s.forcing.forces() && !s.forcing.bandFits(s.W0.rows()))) {
     throw CorruptRecord("settings out of their domain");
   }
 }

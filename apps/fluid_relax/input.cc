@@ -144,8 +144,7 @@ void readForcing(const Options& o, Settings& s) {
 void requireForcingBand(const Options& o, const Settings& s) {
   const ZeitlinStochasticForcing& f = s.forcing;
   const long n = static_cast<long>(s.W0.rows());
-  if (f.forces() &&
-      !(f.band_centre - f.band_half_width >= 1 && f.band_centre + f.band_half_width <= n - 1)) {
+  if (f.forces() && !f.bandFits(n)) {
     app::usageError("--forcing-band", o.forcing_band,
                     "its degrees L-D..L+D must lie in [1, N-1], N = " + std::to_string(n));
   }

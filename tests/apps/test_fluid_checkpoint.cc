@@ -128,32 +128,33 @@ TEST_F(Checkpoint, AnAdaptiveRunKilledAndResumedIsTheUninterruptedOne) {
   expectSameOutputs(whole, out);
 }
 
-// A damped run (--viscosity, --drag, on a rotating sphere) killed and resumed writes the
-// uninterrupted run's files: the checkpoint keeps the damping (layout 5).
-TEST_F(Checkpoint, ADampedRunKilledAndResumedIsTheUninterruptedOne) {
-  const std::string damped =
-      kRun + " --steps 4000 --rotation 0.7 --viscosity 1e-3 --hyperviscosity-order 2 --drag 0.01";
-  const fs::path whole = freshFolder("damped_whole"), out = freshFolder("damped_killed");
-  ASSERT_EQ(run(damped + " --out " + whole.string()).status, 0);
-  ASSERT_EQ(startAndSignal(damped, out, SIGKILL), -SIGKILL);
+/// Runs `arguments` whole into NAME_whole and again into NAME_killed, killed by SIGKILL before it
+/// ends and resumed there: the two folders must hold the same files.
+void expectKilledAndResumedIsTheWhole(const std::string& arguments, const std::string& name) {
+  const fs::path whole = freshFolder(name + "_whole"), out = freshFolder(name + "_killed");
+  ASSERT_EQ(run(arguments + " --out " + whole.string()).status, 0);
+  ASSERT_EQ(startAndSignal(arguments, out, SIGKILL), -SIGKILL);
   ASSERT_FALSE(fs::exists(out / "summary.json")) << "the run finished before the kill";
   ASSERT_EQ(run("--quiet --resume " + out.string()).status, 0);
   expectSameOutputs(whole, out);
+}
+
+// A damped run (--viscosity, --drag, on a rotating sphere) killed and resumed writes the
+// uninterrupted run's files: the checkpoint keeps the damping (layout 5).
+TEST_F(Checkpoint, ADampedRunKilledAndResumedIsTheUninterruptedOne) {
+  expectKilledAndResumedIsTheWhole(
+      kRun + " --steps 4000 --rotation 0.7 --viscosity 1e-3 --hyperviscosity-order 2 --drag 0.01",
+      "damped");
 }
 
 // A forced run (--forcing-band, --forcing-rate, --forcing-seed, with viscosity on a rotating
 // sphere) killed and resumed writes the uninterrupted run's files: the checkpoint keeps the
 // forcing (layout 6) and the random stream's position (the method's record, ExactFlow::save).
 TEST_F(Checkpoint, AForcedRunKilledAndResumedIsTheUninterruptedOne) {
-  const std::string forced = kRun +
-                             " --steps 4000 --rotation 0.7 --viscosity 1e-3 --forcing-band 4:1 "
-                             "--forcing-rate 1e-3 --forcing-seed 9";
-  const fs::path whole = freshFolder("forced_whole"), out = freshFolder("forced_killed");
-  ASSERT_EQ(run(forced + " --out " + whole.string()).status, 0);
-  ASSERT_EQ(startAndSignal(forced, out, SIGKILL), -SIGKILL);
-  ASSERT_FALSE(fs::exists(out / "summary.json")) << "the run finished before the kill";
-  ASSERT_EQ(run("--quiet --resume " + out.string()).status, 0);
-  expectSameOutputs(whole, out);
+  expectKilledAndResumedIsTheWhole(kRun +
+                                       " --steps 4000 --rotation 0.7 --viscosity 1e-3 "
+                                       "--forcing-band 4:1 --forcing-rate 1e-3 --forcing-seed 9",
+                                   "forced");
 }
 
 /// The folder's files and their bytes.
