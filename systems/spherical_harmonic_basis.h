@@ -11,7 +11,8 @@
 // Coefficients are stored at index l² + l + m (l = 0..N−1, |m| <= l): N² of them.
 // The eigenvectors are not stored (all blocks hold N³/3 numbers: 2.9 GB at N = 1024): each
 // transform computes each block's in O((N − m)²) (twisted factorisations, eigenvectors())
-// and applies them at once, so that a transform costs O(N³) and holds O(N²).
+// and applies them at once, so that a transform costs O(N³) and holds O(N²). A degree function
+// applied at every step is kept instead (systems/spherical_harmonic_degree_operator.h).
 #pragma once
 
 #include <ddb/core/errors.h>
@@ -39,8 +40,9 @@ class SphericalHarmonicBasis {
 
   Eigen::Index size() const { return n_; }
 
-  /// The scratch of a transform, sized once for the largest block (m = 0, N rows) and used block
-  /// by block through its top-left corners, so that a transform allocates nothing.
+  /// A block's eigenvectors in a workspace (blockVectors()).
+  using BlockView = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
+
   class Workspace {
    public:
     explicit Workspace(Eigen::Index n)
@@ -53,19 +55,22 @@ class SphericalHarmonicBasis {
           lambda(n),
           scale(n),
           factors(n),
-          parts(n, 2),
-          projected(n, 2) {}
+          parts(n, 4),
+          projected(n, 4) {}
     Eigen::Index size() const { return vectors.rows(); }
 
    private:
     friend class SphericalHarmonicBasis;
     /// Block m's eigenvectors as the rows of a `length` × `length` matrix V (row l − m: v_{l,m}).
-    auto block(Eigen::Index length) const { return vectors.topLeftCorner(length, length).matrix(); }
+    BlockView block(Eigen::Index length) const {
+      return BlockView(vectors.data(), length, length, Eigen::OuterStride<>(vectors.rows()));
+    }
     // eigenvectors()'s pivots D₊, D₋ ((eigenvalue, row)), its vectors, the twist's search, the
     // eigenvalues and the vectors' scales; applyDegreeFunction's f_l/N of a block.
     Eigen::ArrayXXd plus, minus, vectors;
     Eigen::ArrayXd smallest, twist, gamma, lambda, scale, factors;
-    // A diagonal's two real columns (coefficients(), applyDegreeFunction()) and V times them.
+    // A diagonal's real columns (coefficients(): two; applyDegreeFunction(): the real and
+    // imaginary parts of diagonals m and −m) and V times them.
     Eigen::MatrixXd parts, projected;
   };
   static Eigen::Index index(Eigen::Index l, Eigen::Index m) { return l * l + l + m; }
@@ -78,13 +83,26 @@ class SphericalHarmonicBasis {
     }
     Workspace w(n_);
     const Eigen::Index a = std::abs(m);
-    blockVectors(a, w);
     Eigen::VectorXd coefficients = Eigen::VectorXd::Zero(n_ - a);
     coefficients(l - a) = 1.0;
     Eigen::MatrixXcd T = Eigen::MatrixXcd::Zero(n_, n_);
-    addBlock(a, w.block(n_ - a).transpose() * coefficients, m >= 0 ? 1.0 : 0.0, m >= 0 ? 0.0 : 1.0,
-             T);
+    addBlock(a, blockVectors(a, w).transpose() * coefficients, m >= 0 ? 1.0 : 0.0,
+             m >= 0 ? 0.0 : 1.0, T);
     return T;
+  }
+
+  /// Block m's eigenvectors v_{l,m}, l = m..N−1 (m = 0..N−1), as the rows of an (N − m) ×
+  /// (N − m) matrix, row l − m of norm √N: computed into w, valid until w's next use.
+  BlockView blockVectors(Eigen::Index m, Workspace& w) const {
+    if (!(m >= 0 && m < n_)) {
+      throwInvalid("m", std::to_string(m), "must be 0 <= m < N = " + std::to_string(n_));
+    }
+    if (w.size() != n_) {
+      throwInvalid("workspace", "of N = " + std::to_string(w.size()),
+                   "must be of this basis's N = " + std::to_string(n_));
+    }
+    computeBlockVectors(m, w);
+    return w.block(n_ - m);
   }
 
   /// ω_lm = Re tr(T_lmᴴ W)/N for every (l, m), at index(l, m).
@@ -94,18 +112,18 @@ class SphericalHarmonicBasis {
     Workspace w(n_);
     for (Eigen::Index m = 0; m < n_; ++m) {
       const Eigen::Index length = n_ - m;
-      blockVectors(m, w);
+      const BlockView V = blockVectors(m, w);
       // m = 0: Re(conj(i v) w) = v Im w. m > 0: Re(conj(i s v/√2)(W[k,k+m] + W[k+m,k]));
       // m < 0: s v/√2 (W[k,k+m] − W[k+m,k]), s = (−1)^m. Column 0 of `parts` holds the former,
       // column 1 the latter.
-      auto parts = w.parts.topRows(length);
-      auto projected = w.projected.topRows(length);
+      auto parts = w.parts.topLeftCorner(length, 2);
+      auto projected = w.projected.topLeftCorner(length, 2);
       for (Eigen::Index k = 0; k < length; ++k) {
         parts(k, 0) = m == 0 ? W(k, k).imag() : (W(k, k + m) + W(k + m, k)).imag();
         parts(k, 1) = m == 0 ? 0.0 : (W(k, k + m) - W(k + m, k)).real();
       }
       const double scale = m == 0 ? 1.0 / double(n_) : sign(m) / (std::sqrt(2.0) * double(n_));
-      projected.noalias() = w.block(length) * parts;
+      projected.noalias() = V * parts;
       for (Eigen::Index l = m; l < n_; ++l) omega(index(l, m)) = scale * projected(l - m, 0);
       if (m == 0) continue;
       for (Eigen::Index l = m; l < n_; ++l) omega(index(l, -m)) = scale * projected(l - m, 1);
@@ -135,33 +153,36 @@ class SphericalHarmonicBasis {
     }
     for (Eigen::Index m = 0; m < n_; ++m) {
       const Eigen::Index length = n_ - m;
-      blockVectors(m, w);
-      const auto V = w.block(length);
+      const BlockView V = blockVectors(m, w);
       // f_l/N in a vector of the workspace: an expression there would be evaluated into a
       // temporary by colwise() (Eigen's Replicate), an allocation per diagonal.
       auto f = w.factors.head(length);
       f = factors.tail(length).array() / double(n_);
-      // The real and imaginary parts of a diagonal's entries, in V's real arithmetic.
-      auto parts = w.parts.topRows(length);
-      auto projected = w.projected.topRows(length);
-      // Diagonal m, then −m (the main diagonal once).
-      for (Eigen::Index side = 0; side < (m == 0 ? 1 : 2); ++side) {
-        const Eigen::Index d = side == 0 ? m : -m;
-        const auto entry = [&](Eigen::Index k) -> std::complex<double>& {
-          return d >= 0 ? W(k, k + d) : W(k - d, k);
-        };
+      // The real and imaginary parts of diagonal m's entries W(k, k + m), then of −m's
+      // W(k + m, k) (the main diagonal once): one pass over V for both.
+      const Eigen::Index columns = m == 0 ? 2 : 4;
+      auto parts = w.parts.topLeftCorner(length, columns);
+      auto projected = w.projected.topLeftCorner(length, columns);
+      for (Eigen::Index k = 0; k < length; ++k) {
+        parts(k, 0) = W(k, k + m).real();
+        parts(k, 1) = W(k, k + m).imag();
+      }
+      if (m > 0) {
         for (Eigen::Index k = 0; k < length; ++k) {
-          parts(k, 0) = entry(k).real();
-          parts(k, 1) = entry(k).imag();
+          parts(k, 2) = W(k + m, k).real();
+          parts(k, 3) = W(k + m, k).imag();
         }
-        // Not through BLAS: OpenBLAS's dgemm allocates on some of these shapes (an n × n block
-        // times n × 2; measured, bench/zeitlin_bench.cc). V's columns are contiguous, so V·parts
-        // is a sum of outer products and Vᵀ·projected a dot product per entry.
-        projected.setZero();
-        for (Eigen::Index k = 0; k < length; ++k) projected.noalias() += V.col(k) * parts.row(k);
-        projected.array().colwise() *= f;
-        parts.noalias() = V.transpose().lazyProduct(projected);
-        for (Eigen::Index k = 0; k < length; ++k) entry(k) = {parts(k, 0), parts(k, 1)};
+      }
+      // Not through BLAS: OpenBLAS's dgemm allocates on some of these shapes (an n × n block
+      // times n × 2; measured, bench/zeitlin_bench.cc). V's columns are contiguous, so V·parts
+      // is a sum of outer products and Vᵀ·projected a dot product per entry.
+      projected.setZero();
+      for (Eigen::Index k = 0; k < length; ++k) projected.noalias() += V.col(k) * parts.row(k);
+      projected.array().colwise() *= f;
+      parts.noalias() = V.transpose().lazyProduct(projected);
+      for (Eigen::Index k = 0; k < length; ++k) W(k, k + m) = {parts(k, 0), parts(k, 1)};
+      if (m > 0) {
+        for (Eigen::Index k = 0; k < length; ++k) W(k + m, k) = {parts(k, 2), parts(k, 3)};
       }
     }
   }
@@ -176,13 +197,13 @@ class SphericalHarmonicBasis {
     Workspace w(n_);
     Eigen::VectorXd block;
     for (Eigen::Index m = 0; m < n_; ++m) {
-      blockVectors(m, w);
+      const BlockView V = blockVectors(m, w);
       block.resize(n_ - m);
       for (Eigen::Index l = m; l < n_; ++l) block(l - m) = omega(index(l, m));
-      addBlock(m, w.block(n_ - m).transpose() * block, 1.0, 0.0, W);
+      addBlock(m, V.transpose() * block, 1.0, 0.0, W);
       if (m == 0) continue;
       for (Eigen::Index l = m; l < n_; ++l) block(l - m) = omega(index(l, -m));
-      addBlock(m, w.block(n_ - m).transpose() * block, 0.0, 1.0, W);
+      addBlock(m, V.transpose() * block, 0.0, 1.0, W);
     }
     return W;
   }
@@ -264,7 +285,7 @@ class SphericalHarmonicBasis {
   /// w.block(N − m) = v_{l,m}, l = m..N−1: block m's eigenvectors for −l(l+1)
   /// (docs/reference/conventions.md §2), scaled to ‖v‖ = √N with the sign of their last component
   /// (−1)^m.
-  void blockVectors(Eigen::Index m, Workspace& w) const {
+  void computeBlockVectors(Eigen::Index m, Workspace& w) const {
     const Eigen::Index length = n_ - m;
     for (Eigen::Index l = m; l < n_; ++l) w.lambda(l - m) = -double(l) * double(l + 1);
     eigenvectors(diagonals_[std::size_t(m)], subdiagonals_[std::size_t(m)], w);

@@ -13,9 +13,11 @@
 #include <ddb/groups/sun.h>
 #include <ddb/systems/hoppe_yau_laplacian.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
+#include <ddb/systems/spherical_harmonic_degree_operator.h>
 
 #include <Eigen/Core>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -63,6 +65,12 @@ class ZeitlinViscousFlow final : public ExactFlow<SUN> {
     for (Eigen::Index l = 0; l < n; ++l) rates_(l) = viscosity.rate(l);
   }
 
+  /// The memory the flow may keep its operator in (SphericalHarmonicDegreeOperator::bytes:
+  /// 179 MB at N = 512, 2 GiB at N = 1172). Up to it a step reads the operator; above it, each
+  /// step computes the basis's eigenvectors instead, about 30 times slower
+  /// (docs/results/benchmarks.md, "The viscous flow through a kept operator").
+  static constexpr double kOperatorBytes = 2.0 * 1024.0 * 1024.0 * 1024.0;
+
   std::string name() const override { return "viscosity"; }
 
   /// Q ← F + exp(h L)(Q − F), L = ν (−1)^{p+1} Δ^p − γ.
@@ -70,15 +78,29 @@ class ZeitlinViscousFlow final : public ExactFlow<SUN> {
     if (h != h_) {
       factors_ = (-h * rates_.array()).exp().matrix();
       h_ = h;
+      // Kept for this h (a fixed step, or Strang splitting's two equal halves): a changing h
+      // rebuilds it, about as costly as a step without it.
+      if (SphericalHarmonicDegreeOperator::bytes(basis_.size()) <= kOperatorBytes) {
+        if (operator_) {
+          operator_->setFactors(basis_, factors_);
+        } else {
+          operator_.emplace(basis_, factors_);
+        }
+      }
     }
     if (rotating_) Q -= planetary_;
-    basis_.applyDegreeFunction(factors_, Q, workspace_);
+    if (operator_) {
+      operator_->apply(Q);
+    } else {
+      basis_.applyDegreeFunction(factors_, Q, workspace_);
+    }
     if (rotating_) Q += planetary_;
   }
 
  private:
   SphericalHarmonicBasis basis_;
   SphericalHarmonicBasis::Workspace workspace_;  // the flow allocates nothing once built
+  std::optional<SphericalHarmonicDegreeOperator> operator_;  // exp(h_ L), within kOperatorBytes
   Eigen::VectorXd rates_, factors_;  // per degree l: the decay rate, exp(−rate h) for h_
   double h_ = std::nan("");
   Eigen::MatrixXcd planetary_;

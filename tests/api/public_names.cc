@@ -44,6 +44,7 @@
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
+#include <ddb/systems/spherical_harmonic_degree_operator.h>
 #include <ddb/systems/spherical_harmonic_grid.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_forcing.h>
@@ -559,6 +560,12 @@ static_assert(
   const ddb::SphericalHarmonicGrid grid(n);
   const Eigen::MatrixXd field = grid.evaluate(omega);
   const ddb::ZeitlinGammaFromMatrix gammaOf(basis);
+  ddb::SphericalHarmonicDegreeOperator filter(basis, Eigen::VectorXd::Ones(n));
+  filter.setFactors(basis, Eigen::VectorXd::Constant(n, 0.5));
+  Eigen::MatrixXcd filtered = W;
+  filter.apply(filtered);
+  ddb::SphericalHarmonicBasis::Workspace workspace(n);
+  use(filtered, ddb::SphericalHarmonicDegreeOperator::bytes(n), basis.blockVectors(0, workspace));
   use(state, spectra.energy, spectra.enstrophy, ddb::zeitlinGamma(omega), parts.steady,
       parts.remainder, field, grid.colatitudes(), grid.longitudes(), gammaOf(W));
 }

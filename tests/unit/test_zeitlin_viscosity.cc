@@ -8,6 +8,7 @@
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/integrators/methods/strang_splitting.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
+#include <ddb/systems/spherical_harmonic_degree_operator.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <ddb/systems/zeitlin_viscosity.h>
@@ -53,6 +54,31 @@ TEST(ZeitlinViscosity, TheDegreeFunctionScalesEveryCoefficient) {
     Matrix filtered = W;
     basis.applyDegreeFunction(factors, filtered);
     EXPECT_LT((filtered - expected).norm(), 1e-13 * W.norm()) << "N = " << n;
+    // The kept operator (folded by the blocks' reversal symmetry), built for other factors first
+    // and then given these.
+    SphericalHarmonicDegreeOperator kept(basis, Eigen::VectorXd::Ones(n));
+    kept.setFactors(basis, factors);
+    Matrix applied = W;
+    kept.apply(applied);
+    EXPECT_LT((applied - expected).norm(), 1e-13 * W.norm()) << "N = " << n;
+  }
+}
+
+// f_l = −l(l + 1) is the Laplacian itself: the kept operator against HoppeYauLaplacian::apply's
+// three-term formula (no eigenvector in it), at odd and even N (blocks of every length).
+TEST(ZeitlinViscosity, TheKeptDegreeOperatorOfMinusLTimesLPlusOneIsTheLaplacian) {
+  for (const Eigen::Index n : {2, 3, 8, 17, 40}) {
+    const HoppeYauLaplacian laplacian(n);
+    const SphericalHarmonicBasis basis(laplacian);
+    Eigen::VectorXd factors(n);
+    for (Eigen::Index l = 0; l < n; ++l) factors(l) = -double(l) * double(l + 1);
+    SphericalHarmonicDegreeOperator kept(basis, factors);
+    const Matrix W = randomVorticity(int(n), 11);
+    Matrix expected(n, n);
+    laplacian.apply(W, expected);
+    Matrix applied = W;
+    kept.apply(applied);
+    EXPECT_LT((applied - expected).norm(), 1e-12 * expected.norm()) << "N = " << n;
   }
 }
 
