@@ -15,10 +15,13 @@ std::string limitText(const ResolutionLimit& limit) {
   return "N <= " + std::to_string(limit.max_n) + (limit.why.empty() ? "" : ": " + limit.why);
 }
 
-Eigen::MatrixXcd readVorticityFile(const std::string& path, const ResolutionLimit& limit) {
-  const auto bad = [&](const std::string& why) { usageError("--init-file", path, why); };
+}  // namespace
+
+Eigen::MatrixXcd readSuNMatrixFile(const std::string& flag, const std::string& path,
+                                   const std::string& name, const ResolutionLimit& limit) {
+  const auto bad = [&](const std::string& why) { usageError(flag, path, why); };
   const auto rows =
-      readNumberCsv("--init-file", path, static_cast<std::size_t>(limit.max_n), limitText(limit));
+      readNumberCsv(flag, path, static_cast<std::size_t>(limit.max_n), limitText(limit));
   const auto n = static_cast<Eigen::Index>(rows.size());
   if (n < 2) bad(std::to_string(n) + " rows; N must be >= 2");
   Eigen::MatrixXcd W(n, n);
@@ -33,15 +36,12 @@ Eigen::MatrixXcd readVorticityFile(const std::string& path, const ResolutionLimi
     }
   }
   try {
-    SUN::requireState("W", W);
+    SUN::requireState(name, W);
   } catch (const InvalidArgument& e) {
     bad(e.what());
   }
-  if (W.norm() == 0.0) bad("W is zero");
   return W;
 }
-
-}  // namespace
 
 const std::vector<std::pair<std::string, std::string>>& initDescriptions() {
   static const std::vector<std::pair<std::string, std::string>> inits{
@@ -56,7 +56,8 @@ InitialVorticity initialVorticity(const CLI::App& cli, const VorticityOptions& o
   if (!o.init_file.empty()) {
     rejectIfGiven(cli, "--init", "--init-file");
     rejectIfGiven(cli, "--seed", "--init-file");
-    Eigen::MatrixXcd W = readVorticityFile(o.init_file, limit);
+    Eigen::MatrixXcd W = readSuNMatrixFile("--init-file", o.init_file, "W", limit);
+    if (W.norm() == 0.0) usageError("--init-file", o.init_file, "W is zero");
     if (cli.count("--n") > 0 && W.rows() != o.n) {
       usageError("--n", std::to_string(o.n),
                  "--init-file " + o.init_file + " has N = " + std::to_string(W.rows()));

@@ -22,10 +22,11 @@ namespace {
 // layout 5 its damping (--viscosity, --hyperviscosity-order, --drag) and the field diagnostics of
 // the files (history.csv's gamma, fluid.hdf5's spectra, scale decomposition and grid), layout 6
 // its forcing (--forcing-band, --forcing-rate, --forcing-seed; the random stream's position is in
-// the method's record, ExactFlow::save); a checkpoint of layout 2, 3, 4 or 5 is still read
-// (without the hash, on a resting sphere, undamped, unforced, files without the diagnostics), so
-// that a run begun by an earlier build resumes.
-constexpr std::int32_t kLayout = 6;
+// the method's record, ExactFlow::save), layout 7 a fixed forcing (--forcing-file and its Φ); a
+// checkpoint of layout 2 to 6 is still read (without the hash, on a resting sphere, undamped,
+// unforced, files without the diagnostics), so that a run begun by an earlier build resumes.
+constexpr std::int32_t kLayout = 7;
+constexpr std::int32_t kLayoutWithoutFixedForcing = 6;
 constexpr std::int32_t kLayoutWithoutForcing = 5;
 constexpr std::int32_t kLayoutWithoutDamping = 4;
 constexpr std::int32_t kLayoutWithoutPhysics = 3;
@@ -54,22 +55,30 @@ void putOptions(BinaryRecordWriter& out, const Options& o) {
   out.put(o.forcing_band);
   out.put(o.forcing_rate);
   out.put(o.forcing_seed);
+  out.put(o.forcing_file);
 }
 
 /// Which of the physics' entries a record holds: none (layouts 2, 3), the rotation and the
-/// deformation radius (layout 4), those and the damping (layout 5), or those and the forcing
-/// (layout 6, the run definition).
-enum class PhysicsRecord { kNone, kWithoutDamping, kWithoutForcing, kAll };
+/// deformation radius (layout 4), those and the damping (layout 5), those and the stochastic
+/// forcing (layout 6), or those and the fixed forcing (layout 7, the run definition).
+enum class PhysicsRecord { kNone, kWithoutDamping, kWithoutForcing, kWithoutFixedForcing, kAll };
 
 PhysicsRecord physicsRecordOf(std::int32_t layout) {
   if (layout == kLayoutWithoutDamping) return PhysicsRecord::kWithoutDamping;
   if (layout == kLayoutWithoutForcing) return PhysicsRecord::kWithoutForcing;
+  if (layout == kLayoutWithoutFixedForcing) return PhysicsRecord::kWithoutFixedForcing;
   return layout == kLayout ? PhysicsRecord::kAll : PhysicsRecord::kNone;
 }
 
 /// Whether a record of `physics` holds the damping.
 bool holdsDamping(PhysicsRecord physics) {
-  return physics == PhysicsRecord::kWithoutForcing || physics == PhysicsRecord::kAll;
+  return physics == PhysicsRecord::kWithoutForcing ||
+         physics == PhysicsRecord::kWithoutFixedForcing || physics == PhysicsRecord::kAll;
+}
+
+/// Whether a record of `physics` holds the stochastic forcing.
+bool holdsForcing(PhysicsRecord physics) {
+  return physics == PhysicsRecord::kWithoutFixedForcing || physics == PhysicsRecord::kAll;
 }
 
 void getOptions(BinaryRecordReader& in, Options& o, PhysicsRecord physics) {
@@ -95,11 +104,12 @@ void getOptions(BinaryRecordReader& in, Options& o, PhysicsRecord physics) {
     in.get(o.hyperviscosity_order);
     in.get(o.drag);
   }
-  if (physics == PhysicsRecord::kAll) {
+  if (holdsForcing(physics)) {
     in.get(o.forcing_band);
     in.get(o.forcing_rate);
     in.get(o.forcing_seed);
   }
+  if (physics == PhysicsRecord::kAll) in.get(o.forcing_file);
   // What a command line could not have given (a record altered and its checksum made anew).
   if (o.every < 1 || o.steps < 0 || o.steps > kMaxSteps) {
     throw CorruptRecord("options out of their domain");
@@ -146,6 +156,7 @@ void putSettingsBesidesW0(BinaryRecordWriter& out, const Settings& s) {
   out.put(static_cast<std::int32_t>(s.forcing.band_half_width));
   out.put(s.forcing.rate);
   out.put(s.forcing.seed);
+  out.put(s.fixed_forcing);
 }
 
 void getSettingsBesidesW0(BinaryRecordReader& in, Settings& s, PhysicsRecord physics) {
@@ -169,12 +180,13 @@ void getSettingsBesidesW0(BinaryRecordReader& in, Settings& s, PhysicsRecord phy
     s.viscosity.order = in.get<std::int32_t>();
     in.get(s.viscosity.drag);
   }
-  if (physics == PhysicsRecord::kAll) {
+  if (holdsForcing(physics)) {
     s.forcing.band_centre = in.get<std::int32_t>();
     s.forcing.band_half_width = in.get<std::int32_t>();
     in.get(s.forcing.rate);
     in.get(s.forcing.seed);
   }
+  if (physics == PhysicsRecord::kAll) in.get(s.fixed_forcing);
   const ZeitlinViscosity& v = s.viscosity;
   const ZeitlinStochasticForcing& f = s.forcing;
   const bool in_domain =
@@ -200,7 +212,12 @@ void getSettings(BinaryRecordReader& in, Settings& s, PhysicsRecord physics) {
   in.get(s.W0);
   getSettingsBesidesW0(in, s, physics);
   if (s.W0.rows() < 2 || s.W0.rows() > SUN::kMaxN || s.W0.rows() != s.W0.cols() ||
-      (s.forcing.forces() && !s.forcing.bandFits(s.W0.rows()))) {
+      (s.forcing.forces() && !s.forcing.bandFits(s.W0.rows())) ||
+      // Φ is 0 x 0 (none) or N x N and finite.
+      (s.fixed_forcing.size() == 0
+           ? s.fixed_forcing.rows() != 0 || s.fixed_forcing.cols() != 0
+           : s.fixed_forcing.rows() != s.W0.rows() || s.fixed_forcing.cols() != s.W0.rows() ||
+                 !s.fixed_forcing.allFinite())) {
     throw CorruptRecord("settings out of their domain");
   }
 }
@@ -228,7 +245,8 @@ Checkpoint parseCheckpoint(const std::string& dir, std::string bytes) {
     BinaryRecordReader in = BinaryRecordReader::unseal(std::move(bytes));
     in.expectTag(kTag);
     const auto layout = in.get<std::int32_t>();
-    if (layout != kLayout && layout != kLayoutWithoutForcing && layout != kLayoutWithoutDamping &&
+    if (layout != kLayout && layout != kLayoutWithoutFixedForcing &&
+        layout != kLayoutWithoutForcing && layout != kLayoutWithoutDamping &&
         layout != kLayoutWithoutPhysics && layout != kLayoutWithoutDigest) {
       throw CorruptRecord("layout " + std::to_string(layout) + ", this build reads " +
                           std::to_string(kLayout));

@@ -11,11 +11,13 @@
 //   n()                             N, on every process
 //   kSpectrumEveryState             whether every state's spectrum drift is measured (the CPU),
 //                                   or only the history rows' (no step waits for an eigensolver)
-//   kExactFlows                     whether damped() and forced() exist: the viscous flow and
-//                                   the forcing (ZeitlinViscousFlow, ZeitlinStochasticForcingFlow)
-//                                   run on this placement's states
+//   kExactFlows                     whether damped(), forced() and forcedBy() exist: the viscous
+//                                   flow and the forcings (ZeitlinViscousFlow,
+//                                   ZeitlinStochasticForcingFlow, ZeitlinFixedForcingFlow) run on
+//                                   this placement's states
 //   damped(method, viscosity)       the method Strang-split with the exact viscous flow
 //   forced(method, forcing, κ²)     the method Strang-split with the stochastic forcing
+//   forcedBy(method, Φ)             the method Strang-split with the fixed forcing Φ
 //   system()                        the fluid whose states are State
 //   hostFluid()                     the same fluid on this process's memory (the writer's)
 //   initialState(W0)                W₀ where the states live (collective)
@@ -75,9 +77,9 @@
 
 namespace ddb::fluid {
 
-/// `method` Strang-split with the viscous flow of s.viscosity, then with the forcing of s.forcing
-/// (those the run has), where the placement has them; else a UsageError naming the first one's
-/// flag.
+/// `method` Strang-split with the viscous flow of s.viscosity, then with the forcing of s.forcing,
+/// then with the fixed forcing s.fixed_forcing (those the run has), where the placement has them;
+/// else a UsageError naming the first one's flag.
 template <class Placement, class G = typename Placement::Group>
 std::unique_ptr<OneStepMethod<G>> withExactFlows(Placement& where,
                                                  std::unique_ptr<OneStepMethod<G>> method,
@@ -87,6 +89,7 @@ std::unique_ptr<OneStepMethod<G>> withExactFlows(Placement& where,
     if (s.forcing.forces()) {
       method = where.forced(std::move(method), s.forcing, s.physics.kappaSquared());
     }
+    if (s.fixed_forcing.size() > 0) method = where.forcedBy(std::move(method), s.fixed_forcing);
     return method;
   } else {
     const auto [flag, text] = exactFlowFlag(o, s);
@@ -186,6 +189,11 @@ int runFluidRelaxation(Placement& where, const Options& o, const Settings& s,
           forcing.band_centre - forcing.band_half_width,
           forcing.band_centre + forcing.band_half_width, forcing.rate, forcing.seed);
     }
+    if (s.fixed_forcing.size() > 0) {
+      stepping +=
+          fmt::format("{} the fixed forcing of {}",
+                      damping.damps() || forcing.forces() ? ", and" : " with", o.forcing_file);
+    }
     spdlog::info("N = {}, alpha = {}, {}, {}{}: {}", n, s.alpha, init_text, stepping,
                  where.describe(), steps_text);
   }
@@ -210,7 +218,7 @@ int runFluidRelaxation(Placement& where, const Options& o, const Settings& s,
   // A forced run's energy rises by design (the forcing injects it): no rise is a sign of h.
   const bool watch_energy =
       app::EnergyRises::applies(newton || findMethod(o.method)->keeps_casimirs, s.alpha) &&
-      !s.forcing.forces();
+      !s.forced();
   // What the summary accumulates over every accepted state.
   const auto observe = [&] {
     if (at.k > 0 && counts_iterations) {

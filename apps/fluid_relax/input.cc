@@ -150,6 +150,33 @@ void requireForcingBand(const Options& o, const Settings& s) {
   }
 }
 
+/// --forcing-file's Φ, of W0's N, into s.fixed_forcing, and a bound on what it can add:
+/// |W0| + T |Φ| (Frobenius norms, T = steps · h) within kMaxForcedNorm, so that no energy or
+/// enstrophy of the run overflows (both are below |W|²).
+void readFixedForcing(const Options& o, Settings& s, Eigen::Index max_n) {
+  if (o.forcing_file.empty()) return;
+  Matrix phi = app::readSuNMatrixFile("--forcing-file", o.forcing_file, "Phi", {max_n, ""});
+  const Eigen::Index n = s.W0.rows();
+  if (phi.rows() != n) {
+    app::usageError(
+        "--forcing-file", o.forcing_file,
+        "has N = " + std::to_string(phi.rows()) + "; the run's N is " + std::to_string(n));
+  }
+  s.fixed_forcing = std::move(phi);
+}
+
+void requireRepresentableForcing(const Options& o, const Settings& s) {
+  if (s.fixed_forcing.size() == 0) return;
+  const double reach =
+      s.W0.stableNorm() + static_cast<double>(s.steps) * s.h * s.fixed_forcing.stableNorm();
+  if (!(reach <= kMaxForcedNorm)) {
+    app::usageError("--forcing-file", o.forcing_file,
+                    fmt::format("|W0| + t |Phi| = {:.3g} at t = steps * h exceeds {:g}, where the "
+                                "energy would overflow",
+                                reach, kMaxForcedNorm));
+  }
+}
+
 /// --rotation (finite) and --deformation-radius (> 0, finite) into s.physics; --viscosity,
 /// --drag (finite, >= 0) and --hyperviscosity-order into s.viscosity.
 void readPhysics(const Options& o, Settings& s) {
@@ -222,6 +249,7 @@ Settings settings(const CLI::App& cli, const Options& o, Eigen::Index max_n) {
   s.W0 = std::move(initial.W);
   s.init = initial.init;
   requireForcingBand(o, s);
+  readFixedForcing(o, s, max_n);
 
   double t_end = 0.0;
   if (by_time) {
@@ -256,6 +284,7 @@ Settings settings(const CLI::App& cli, const Options& o, Eigen::Index max_n) {
     if (s.default_h) s.h = t_end / static_cast<double>(s.steps);
   }
   requireRepresentableStep(cli, o, s);
+  requireRepresentableForcing(o, s);
   s.relax.max_steps = s.steps;
   if (time_cap) s.relax.t_end = t_end;
   // Only valid input is warned about: bad input gives its one line and nothing else.
@@ -272,6 +301,7 @@ std::pair<std::string, std::string> exactFlowFlag(const Options& o, const Settin
   if (s.viscosity.viscosity > 0) return {"--viscosity", o.viscosity};
   if (s.viscosity.drag > 0) return {"--drag", o.drag};
   if (s.forcing.forces()) return {"--forcing-rate", o.forcing_rate};
+  if (!o.forcing_file.empty()) return {"--forcing-file", o.forcing_file};
   return {};
 }
 

@@ -27,6 +27,7 @@ struct Settings {
   ZeitlinPhysics physics;            // --rotation, --deformation-radius
   ZeitlinViscosity viscosity;        // --viscosity, --hyperviscosity-order, --drag
   ZeitlinStochasticForcing forcing;  // --forcing-band, --forcing-rate, --forcing-seed
+  Matrix fixed_forcing;              // --forcing-file's Φ (empty: none)
   bool default_h = false;
   long steps = 0;
   /// When relax() stops: --until-steady, the cap (--steps, or --t-end's time with
@@ -34,6 +35,9 @@ struct Settings {
   RelaxOptions relax;
   std::string init;  // random, l1, zonal or file
   std::filesystem::path out;
+
+  /// Whether the run is forced (stochastically or by a fixed Φ): its energy rises by design.
+  bool forced() const { return forcing.forces() || fixed_forcing.size() > 0; }
 
   /// The run's first state: the absolute vorticity W0 + F (W0 itself without rotation, and on
   /// fluid-relax-mpi's ranks but rank 0, which hold no W0).
@@ -50,8 +54,8 @@ struct Settings {
 /// does not overflow.
 Settings settings(const CLI::App& cli, const Options& o, Eigen::Index max_n);
 
-/// The flag and text that name the run's exact flows (the damping's, then the forcing's: the first
-/// given), for a message that refuses them; empty if the run has none.
+/// The flag and text that name the run's exact flows (the damping's, then the forcing's, then the
+/// fixed forcing's: the first given), for a message that refuses them; empty if the run has none.
 std::pair<std::string, std::string> exactFlowFlag(const Options& o, const Settings& s);
 
 struct Checkpoint;

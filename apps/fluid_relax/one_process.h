@@ -93,6 +93,11 @@ class CpuPlacement : public OneProcess {
         std::move(method),
         std::make_unique<ZeitlinStochasticForcingFlow>(n(), forcing, kappa_squared));
   }
+  std::unique_ptr<OneStepMethod<SUN>> forcedBy(std::unique_ptr<OneStepMethod<SUN>> method,
+                                               const Matrix& forcing) const {
+    return std::make_unique<StrangSplitting<SUN>>(
+        std::move(method), std::make_unique<ZeitlinFixedForcingFlow>(n(), forcing));
+  }
 
  private:
   std::shared_ptr<const LiePoissonSystem<SUN>> fluid_;

@@ -23,6 +23,9 @@ constexpr long kMaxSteps = 1000000000L;
 // --hyperviscosity-order's largest p: the field's runs use p <= 8 (GLIFS, quflow), and
 // (l(l + 1))^p stays finite for every l <= SUN::kMaxN.
 constexpr long kMaxHyperviscosityOrder = 16;
+/// The largest |W0| + t |Phi| a run with --forcing-file may reach (Frobenius norms): its energy
+/// and enstrophy, below |W|², stay finite.
+constexpr double kMaxForcedNorm = 1e150;
 // Without --checkpoint-every, a checkpoint after the first step that ends this long after
 // the last one: a killed run loses at most about this much work.
 constexpr double kCheckpointSeconds = 300.0;
@@ -49,6 +52,8 @@ struct Options {
   /// and the random stream's seed.
   std::string forcing_band, forcing_rate = "0";
   std::uint64_t forcing_seed = 1;
+  /// A fixed forcing Φ (ZeitlinFixedForcingFlow), as --init-file's CSV (empty: none).
+  std::string forcing_file;
   std::string out = "results-fluid";
   app::RelaxFlags relax;      // --until-steady, --adaptive, --adaptive-tol
   bool newton = false;        // --newton: OrbitNewton's search instead of steps

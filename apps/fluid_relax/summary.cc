@@ -56,6 +56,7 @@ app::Json runSummary(const Options& o, const Settings& s, const LiePoissonSystem
           : app::Json();
   summary["forcing_rate"] = f.rate;
   summary["forcing_seed"] = f.forces() ? app::Json(f.seed) : app::Json();
+  summary["forcing_file"] = o.forcing_file.empty() ? app::Json() : app::Json(o.forcing_file);
   const Eigen::MatrixXcd Q0 = s.initialState();
   summary["energy_initial"] = diagnostics.energy(Q0);
   summary["energy_final"] = diagnostics.energy(result.final);

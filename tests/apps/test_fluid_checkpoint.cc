@@ -5,6 +5,7 @@
 // checkpoint byte-identical to it; so must a finished run extended by --resume --steps. A
 // checkpoint that is corrupted or truncated, a flag that would change the run and a cap
 // already reached are refused with exit status 2, and nothing in the folder changes.
+#include <ddb/systems/zeitlin_initial_conditions.h>
 #include <gmock/gmock.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -155,6 +156,35 @@ TEST_F(Checkpoint, AForcedRunKilledAndResumedIsTheUninterruptedOne) {
                                        " --steps 4000 --rotation 0.7 --viscosity 1e-3 "
                                        "--forcing-band 4:1 --forcing-rate 1e-3 --forcing-seed 9",
                                    "forced");
+}
+
+// A run with a fixed forcing (--forcing-file) killed and resumed writes the uninterrupted run's
+// files, although the file holds another Φ when it resumes: the checkpoint keeps Φ (layout 7).
+TEST_F(Checkpoint, AFixedForcedRunKilledAndResumedIsTheUninterruptedOneWhateverItsFileBecomes) {
+  const fs::path files = freshFolder("phi_files");
+  fs::create_directories(files);
+  const auto writePhi = [&](double scale) {
+    const Eigen::MatrixXcd phi = scale * ddb::zeitlinX3(12);
+    std::ofstream csv(files / "phi.csv");
+    csv.precision(17);
+    for (Eigen::Index j = 0; j < phi.rows(); ++j) {
+      for (Eigen::Index k = 0; k < phi.cols(); ++k) csv << phi(j, k).real() << ",";
+      for (Eigen::Index k = 0; k < phi.cols(); ++k) {
+        csv << phi(j, k).imag() << (k + 1 < phi.cols() ? "," : "\n");
+      }
+    }
+  };
+  writePhi(1e-3);
+  const std::string arguments =
+      kRun + " --steps 4000 --viscosity 1e-3 --forcing-file " + (files / "phi.csv").string();
+  const fs::path whole = freshFolder("fixed_forced_whole"),
+                 out = freshFolder("fixed_forced_killed");
+  ASSERT_EQ(run(arguments + " --out " + whole.string()).status, 0);
+  ASSERT_EQ(startAndSignal(arguments, out, SIGKILL), -SIGKILL);
+  ASSERT_FALSE(fs::exists(out / "summary.json")) << "the run finished before the kill";
+  writePhi(2e-3);
+  ASSERT_EQ(run("--quiet --resume " + out.string()).status, 0);
+  expectSameOutputs(whole, out);
 }
 
 /// The folder's files and their bytes.

@@ -440,6 +440,29 @@ TEST(FluidRelax, AForcedRunIsItsSeedsAndRecordsItsForcing) {
   EXPECT_FALSE(summary.contains("energy_rises")) << "not counted";
 }
 
+// A fixed forcing (--forcing-file) of a zonal flow on a rotating sphere: zonal flows are steady
+// ([P, W] = 0, and the double bracket vanishes with it), so W(t) = W0 + t Φ to rounding.
+TEST(FluidRelax, AFixedForcingOfAZonalFlowAddsTimesPhi) {
+  const fs::path files = freshFolder("phi"), out = freshFolder("fixed_forced");
+  fs::create_directories(files);
+  const int n = 8;
+  const Matrix phi = 0.3 * ddb::zeitlinX3(n);
+  const Matrix W0 = ddb::zonalVorticity(n, 2);
+  writeMatrix(files / "phi.csv", phi);
+  writeMatrix(files / "w0.csv", W0);
+  const AppResult r =
+      run("--quiet --alpha 0.5 --rotation 2 --method sddb-cay --h 0.02 --steps 50 "
+          "--init-file " +
+          (files / "w0.csv").string() + " --forcing-file " + (files / "phi.csv").string() +
+          " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Matrix expected = W0 + 1.0 * phi;  // t = 50 · 0.02
+  EXPECT_LT((readMatrix(out / "W_final.csv") - expected).norm(), 1e-12 * expected.norm());
+  const auto summary = readJson(out / "summary.json");
+  EXPECT_EQ(summary["forcing_file"].get<std::string>(), (files / "phi.csv").string());
+  EXPECT_FALSE(summary.contains("energy_rises")) << "not counted";
+}
+
 TEST(FluidRelax, FailedSolveKeepsTheHistoryPrefixAndExitsOne) {
   // At h = 3 (h||P||_2/hbar about 15) the Legendre solve of step 1 does not converge. (At
   // h = 2.2 it failed too until ξ was evaluated on su(N) and projected onto it; now it
@@ -525,6 +548,10 @@ TEST(FluidRelax, BadInputExitsTwoNamingTheFlagAndWritesNothing) {
       {file + "/good.csv --n 5", "--n"},
       {file + "/good.csv --init l1", "--init"},
       {file + "/good.csv --seed 3", "--seed"},
+      // A fixed forcing's file, read as --init-file's.
+      {file + "/good.csv --forcing-file " + (files / "not_skew.csv").string(), "--forcing-file"},
+      {file + "/good.csv --forcing-file " + (files / "trace.csv").string(), "--forcing-file"},
+      {file + "/good.csv --forcing-file " + (files / "word.csv").string(), "--forcing-file"},
   };
   for (const auto& [arguments, flag] : bad) {
     const fs::path out = freshFolder("bad");

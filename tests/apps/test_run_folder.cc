@@ -204,11 +204,14 @@ TEST_F(RunFolder, ACheckpointThatIsNoRegularFileOrHoldsSizesBeyondItIsRefused) {
   // Fields altered with the checksum recomputed: each is refused before it is used.
   const std::size_t settings = afterTag(bytes, "settings"), options = afterTag(bytes, "options");
   const std::size_t files = afterTag(bytes, "files");
-  // The settings end with the forcing's L, D (32-bit), ε and seed, before the tag "tally".
+  // The settings end with the forcing's L, D (32-bit), ε and seed, and the fixed forcing Φ (here
+  // empty: its two 64-bit sizes), before the tag "tally".
   const std::size_t tally = afterTag(bytes, "tally") - sizeof(std::uint64_t) - 5;
   const std::vector<std::pair<std::string, std::string>> edits{
-      {"--forcing-band's D -1", withField<std::int32_t>(bytes, tally - 20, -1)},
-      {"--forcing-rate -1", withField<double>(bytes, tally - 16, -1.0)},
+      {"--forcing-band's D -1", withField<std::int32_t>(bytes, tally - 36, -1)},
+      {"--forcing-rate -1", withField<double>(bytes, tally - 32, -1.0)},
+      {"Phi of 2^61 rows", withField<std::int64_t>(bytes, tally - 16, std::int64_t{1} << 61)},
+      {"Phi of 3 x 0", withField<std::int64_t>(bytes, tally - 16, 3)},
       {"W0 of 2^61 rows", withField<std::int64_t>(bytes, settings, std::int64_t{1} << 61)},
       {"W0 of 2^61 columns", withField<std::int64_t>(bytes, settings + 8, std::int64_t{1} << 61)},
       {"--every -3", withField<long>(bytes, options + 16, -3)},
@@ -244,8 +247,11 @@ std::string withoutLastColumn(const std::string& csv) {
   return out;
 }
 
-TEST_F(RunFolder, CheckpointsOfLayoutsTwoToFiveResume) {
-  // Layout 5 (before the forcing): the record without the options' three entries
+TEST_F(RunFolder, CheckpointsOfLayoutsTwoToSixResume) {
+  // Layout 6 (before the fixed forcing): the record without the options' last entry
+  // (--forcing-file "", before "given flags": its 8-byte length) and the settings' last (Φ, an
+  // empty matrix: its two 8-byte sizes, before "tally"); its files are those of today's layout.
+  // Layout 5 (before the forcing), also: the record without the options' three entries
   // (--forcing-band "", --forcing-rate "0" and --forcing-seed, the last before "given flags") and
   // the settings' four numbers (L and D as 32-bit integers, ε and the seed, the last before
   // "tally"); its files are those of today's layout. Layout 4 (before the fluid's damping and the
@@ -264,22 +270,29 @@ TEST_F(RunFolder, CheckpointsOfLayoutsTwoToFiveResume) {
     return afterTag(bytes, name) - sizeof(std::uint64_t) - name.size();
   };
   const std::string reference_history = withoutLastColumn(readFile(*reference_ / "history.csv"));
-  for (const std::int32_t layout : {5, 4, 3, 2}) {
+  for (const std::int32_t layout : {6, 5, 4, 3, 2}) {
     const fs::path out = finished("layout" + std::to_string(layout), /*h5=*/false);
     const fs::path checkpoint = out / "checkpoint.ddb";
     const std::string sealed = readFile(checkpoint);
     std::string bytes = sealed.substr(0, sealed.size() - 8);
-    bytes.erase(beforeTag(bytes, "tally") - 24, 24);
-    bytes.erase(beforeTag(bytes, "given flags") - 25, 25);
+    bytes.erase(beforeTag(bytes, "tally") - 16, 16);
+    bytes.erase(beforeTag(bytes, "given flags") - 8, 8);
     if (layout == 5) {
+      bytes.erase(beforeTag(bytes, "tally") - 24, 24);
+      bytes.erase(beforeTag(bytes, "given flags") - 25, 25);
+    }
+    if (layout >= 5) {
       resealAs(bytes, layout, checkpoint);
       const AppResult resumed = run("--quiet --resume " + out.string() + " --steps 40");
-      ASSERT_EQ(resumed.status, 0) << "layout 5\n" << resumed.output;
+      ASSERT_EQ(resumed.status, 0) << "layout " << layout << "\n" << resumed.output;
       for (const std::string name : {"history.csv", "W_final.csv", "omega_final.csv"}) {
-        EXPECT_EQ(readFile(out / name), readFile(*reference_ / name)) << "layout 5: " << name;
+        EXPECT_EQ(readFile(out / name), readFile(*reference_ / name))
+            << "layout " << layout << ": " << name;
       }
       continue;
     }
+    bytes.erase(beforeTag(bytes, "tally") - 24, 24);
+    bytes.erase(beforeTag(bytes, "given flags") - 25, 25);
     const std::size_t files = afterTag(bytes, "files");
     std::uint64_t length = 0;
     std::memcpy(&length, bytes.data() + files, sizeof length);

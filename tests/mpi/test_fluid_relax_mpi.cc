@@ -14,6 +14,7 @@
 // SIGTERM to one rank leaves a checkpoint and exit status 143, and the resumed run is the
 // uninterrupted one's to the bit.
 #include <ddb/integrators/methods/method_table.h>
+#include <ddb/systems/zeitlin_initial_conditions.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -372,6 +373,20 @@ INSTANTIATE_TEST_SUITE_P(RanksCaps, FluidRelaxMpiAdaptiveTest,
 // flags this app does not have.
 TEST(FluidRelaxMpi, RefusesBadInputOnEveryRankOnce) {
   const fs::path out = freshFolder("ddb_mpi_", "bad");
+  // A fixed forcing's file, valid at the default N = 32: Φ = X3.
+  const fs::path phi = freshFolder("ddb_mpi_", "phi") / "phi.csv";
+  fs::create_directories(phi.parent_path());
+  {
+    const Eigen::MatrixXcd x3 = ddb::zeitlinX3(32);
+    std::ofstream csv(phi);
+    csv.precision(17);
+    for (Eigen::Index j = 0; j < x3.rows(); ++j) {
+      for (Eigen::Index k = 0; k < x3.cols(); ++k) csv << x3(j, k).real() << ",";
+      for (Eigen::Index k = 0; k < x3.cols(); ++k) {
+        csv << x3(j, k).imag() << (k + 1 < x3.cols() ? "," : "\n");
+      }
+    }
+  }
   // fluid-relax's own checks are tested on fluid-relax (test_bad_inputs): here one of them
   // with this app's bound on N (the group's, not fluid-relax's 1024), a parse error, a method
   // fluid-relax does not offer (reference), and this app's own.
@@ -393,6 +408,7 @@ TEST(FluidRelaxMpi, RefusesBadInputOnEveryRankOnce) {
        "--viscosity = 1e-3: viscosity, drag and forcing run on the CPU"},
       {"--steps 10 --drag 0.1", "--drag = 0.1"},
       {"--steps 10 --forcing-band 3:1 --forcing-rate 1e-3", "--forcing-rate = 1e-3"},
+      {"--steps 10 --forcing-file " + phi.string(), "--forcing-file = " + phi.string()},
   };
   for (const auto& [arguments, flag] : cases) {
     const AppResult r = runMpi(2, arguments + " --out " + out.string());
