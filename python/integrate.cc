@@ -8,6 +8,7 @@
 #include <chrono>
 #include <optional>
 #include <string>
+#include <type_traits>
 
 #include "arguments.h"
 #include "bindings.h"
@@ -54,9 +55,11 @@ class SignalCheck {
 };
 
 template <class G>
-py::tuple integrateOn(const SystemPointer<G>& system, Eigen::Index n, const std::string& name,
-                      py::handle mu0_object, double h, long steps, long every) {
-  const auto method = makeMethod<G>(name, system);
+py::tuple integrateOn(const System& owner, const SystemPointer<G>& system, Eigen::Index n,
+                      const std::string& name, py::handle mu0_object, double h, long steps,
+                      long every) {
+  auto method = makeMethod<G>(name, system);
+  if constexpr (std::is_same_v<G, SUN>) method = owner.withExactFlows(std::move(method));
   Dual<G> mu0 = stateFromArray<G>("mu0", mu0_object, n);
   if constexpr (isDynamicGroup<G>) G::requireState("mu0", mu0);
   requirePositive("h", h);
@@ -119,7 +122,7 @@ void bindIntegrate(py::module_& m) {
         const long count = integerArgument<long>("steps", steps, 0);
         const long thinning = integerArgument<long>("every", every, 1);
         return s.visit([&](const auto& p) {
-          return integrateOn<GroupOf<decltype(p)>>(p, s.n(), name, mu0, step, count, thinning);
+          return integrateOn<GroupOf<decltype(p)>>(s, p, s.n(), name, mu0, step, count, thinning);
         });
       },
       py::arg("system"), py::arg("method"), py::arg("mu0"), py::arg("h"), py::arg("steps"),

@@ -7,6 +7,7 @@
 #include <ddb/groups/so3.h>
 #include <ddb/groups/son.h>
 #include <ddb/groups/sun.h>
+#include <ddb/integrators/methods/one_step_method.h>
 
 #include <memory>
 #include <string>
@@ -40,6 +41,12 @@ class System {
     return std::visit(std::forward<F>(f), system_);
   }
   Eigen::Index n() const { return n_; }
+  /// The method as integrate() steps this system: Strang-split with the system's exact flows
+  /// (ddb.zeitlin's viscosity, drag and forcing); the method itself for the others.
+  virtual std::unique_ptr<OneStepMethod<SUN>> withExactFlows(
+      std::unique_ptr<OneStepMethod<SUN>> method) const {
+    return method;
+  }
   std::string name() const {
     return visit([](const auto& s) { return s->name(); });
   }

@@ -1,16 +1,20 @@
 // Zeitlin's fluid on SU(N) (systems/zeitlin_fluid.h): the system with its diagnostics
 // (energy E, enstrophy Z, ||[P, W]||, the spherical-harmonic coefficients omega_lm) and
 // the apps' initial vorticities (random, l1, zonal with a seed).
+#include <ddb/integrators/methods/strang_splitting.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/spherical_harmonic_grid.h>
 #include <ddb/systems/zeitlin_fluid.h>
+#include <ddb/systems/zeitlin_forcing.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <ddb/systems/zeitlin_spectra.h>
+#include <ddb/systems/zeitlin_viscosity.h>
 #include <pybind11/eigen.h>
 
 #include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "arguments.h"
 #include "bindings.h"
@@ -26,8 +30,42 @@ namespace {
 /// The fluid: a System on SU(N) that keeps its Hamiltonian's type for the diagnostics.
 class ZeitlinFluid : public System {
  public:
-  ZeitlinFluid(Eigen::Index n, double alpha, const ZeitlinPhysics& physics)
-      : ZeitlinFluid(makeZeitlinFluid(checked(n), alpha, physics)) {}
+  /// The damping and forcing of a fluid, by Strang splitting around integrate()'s method.
+  struct ExactFlows {
+    ZeitlinViscosity viscosity;
+    ZeitlinStochasticForcing forcing;
+    Eigen::MatrixXcd fixed_forcing;  // Φ, empty: none
+  };
+
+  ZeitlinFluid(Eigen::Index n, double alpha, const ZeitlinPhysics& physics, ExactFlows flows)
+      : ZeitlinFluid(makeZeitlinFluid(checked(n), alpha, physics)) {
+    flows.viscosity.validate();
+    if (flows.forcing.forces()) flows.forcing.validate(n);
+    // The fixed forcing's own checks (N × N, finite, in su(N)), naming "forcing".
+    if (flows.fixed_forcing.size() > 0) ZeitlinFixedForcingFlow(n, flows.fixed_forcing);
+    flows_ = std::move(flows);
+  }
+
+  /// The method split with the viscous flow, then the stochastic forcing, then the fixed forcing
+  /// (those the fluid has), as fluid-relax's run (apps/fluid_relax/fluid_run.h, withExactFlows).
+  std::unique_ptr<OneStepMethod<SUN>> withExactFlows(
+      std::unique_ptr<OneStepMethod<SUN>> method) const override {
+    const auto split = [&](std::unique_ptr<ExactFlow<SUN>> flow) {
+      method = std::make_unique<StrangSplitting<SUN>>(std::move(method), std::move(flow));
+    };
+    if (flows_.viscosity.damps()) {
+      split(std::make_unique<ZeitlinViscousFlow>(n(), flows_.viscosity,
+                                                 hamiltonian_.planetaryVorticity()));
+    }
+    if (flows_.forcing.forces()) {
+      split(std::make_unique<ZeitlinStochasticForcingFlow>(
+          n(), flows_.forcing, hamiltonian_.laplacian().kappaSquared()));
+    }
+    if (flows_.fixed_forcing.size() > 0) {
+      split(std::make_unique<ZeitlinFixedForcingFlow>(n(), flows_.fixed_forcing));
+    }
+    return method;
+  }
 
   const ZeitlinHamiltonian& hamiltonian() const { return hamiltonian_; }
   const ZeitlinDiagnostics& diagnostics() const { return diagnostics_; }
@@ -60,6 +98,7 @@ class ZeitlinFluid : public System {
   const ZeitlinHamiltonian& hamiltonian_;
   ZeitlinDiagnostics diagnostics_;
   SphericalHarmonicBasis basis_;
+  ExactFlows flows_;
 };
 
 /// f(W) of one state (a float) or of each of a stack (an array).
@@ -174,22 +213,70 @@ void bindZeitlin(py::module_& m) {
           "absolute vorticities Q = W + F (docs/reference/conventions.md §2).");
   m.def(
       "zeitlin",
-      [](py::handle n, py::handle alpha, py::handle rotation, py::handle deformation_radius) {
+      [](py::handle n_object, py::handle alpha, py::handle rotation, py::handle deformation_radius,
+         py::handle viscosity, py::handle hyperviscosity_order, py::handle drag,
+         py::handle forcing_band, py::handle forcing_rate, py::handle forcing_seed,
+         py::handle forcing) {
+        const auto n = integerArgument<Eigen::Index>("N", n_object, 2, SUN::kMaxN);
         ZeitlinPhysics physics;
         physics.rotation = realArgument("rotation", rotation);
         if (!deformation_radius.is_none()) {
           physics.deformation_radius = realArgument("deformation_radius", deformation_radius);
         }
-        return std::make_shared<ZeitlinFluid>(integerArgument<Eigen::Index>("N", n, 2, SUN::kMaxN),
-                                              realArgument("alpha", alpha), physics);
+        ZeitlinFluid::ExactFlows flows;
+        flows.viscosity.viscosity = realArgument("viscosity", viscosity);
+        flows.viscosity.order =
+            integerArgument<int>("hyperviscosity_order", hyperviscosity_order, 1, 16);
+        flows.viscosity.drag = realArgument("drag", drag);
+        if (!forcing_band.is_none()) {
+          const auto band = vectorArgument("forcing_band", forcing_band, 2,
+                                           "a pair (L, D) of whole numbers: degrees L-D..L+D");
+          if (band(0) != std::floor(band(0)) || band(1) != std::floor(band(1)) ||
+              !(std::abs(band(0)) < 1e6 && std::abs(band(1)) < 1e6)) {
+            throwInvalid("forcing_band", std::string(py::repr(forcing_band)),
+                         "must be a pair (L, D) of whole numbers: degrees L-D..L+D");
+          }
+          flows.forcing.band_centre = static_cast<int>(band(0));
+          flows.forcing.band_half_width = static_cast<int>(band(1));
+        }
+        flows.forcing.rate = realArgument("forcing_rate", forcing_rate);
+        if (!(flows.forcing.rate >= 0)) {
+          throwInvalid("forcing_rate", formatValue(flows.forcing.rate), "must be >= 0");
+        }
+        flows.forcing.seed = integerArgument<std::uint64_t>("forcing_seed", forcing_seed);
+        if (forcing_band.is_none() && flows.forcing.rate > 0) {
+          throwInvalid("forcing_rate", formatValue(flows.forcing.rate),
+                       "needs forcing_band (L, D), the forced degrees L-D..L+D");
+        }
+        if (!forcing_band.is_none() && !(flows.forcing.rate > 0)) {
+          throwInvalid("forcing_band", std::string(py::repr(forcing_band)),
+                       "needs forcing_rate > 0");
+        }
+        if (!forcing_band.is_none() && !flows.forcing.bandFits(n)) {
+          throwInvalid("forcing_band", std::string(py::repr(forcing_band)),
+                       "its degrees L-D..L+D must lie in [1, N - 1], N = " + std::to_string(n));
+        }
+        if (!forcing.is_none()) flows.fixed_forcing = stateFromArray<SUN>("forcing", forcing, n);
+        return std::make_shared<ZeitlinFluid>(n, realArgument("alpha", alpha), physics,
+                                              std::move(flows));
       },
       py::arg("N"), py::arg("alpha"), py::arg("rotation") = 0.0,
-      py::arg("deformation_radius") = py::none(),
+      py::arg("deformation_radius") = py::none(), py::arg("viscosity") = 0.0,
+      py::arg("hyperviscosity_order") = 1, py::arg("drag") = 0.0,
+      py::arg("forcing_band") = py::none(), py::arg("forcing_rate") = 0.0,
+      py::arg("forcing_seed") = 1, py::arg("forcing") = py::none(),
       "Zeitlin's fluid at resolution N (2 <= N <= 4096) with double-bracket coefficient "
       "alpha (any finite sign; alpha > 0 dissipates energy), on a sphere rotating at "
       "`rotation` (Omega; its states are absolute vorticities Q = W + F, "
       "planetary_vorticity() is F) and quasi-geostrophic with `deformation_radius` L_d > 0 "
-      "(the stream matrix (Laplacian - 1/L_d^2)^-1 (Q - F); None: Euler).");
+      "(the stream matrix (Laplacian - 1/L_d^2)^-1 (Q - F); None: Euler). Damped with "
+      "`viscosity` nu >= 0 of order `hyperviscosity_order` p >= 1 and linear `drag` gamma >= 0 "
+      "(W' gains nu (-1)^(p+1) Laplacian^p W - gamma W on W = Q - F), forced in the degrees "
+      "L-D..L+D of `forcing_band` (L, D) at the mean energy injection rate `forcing_rate` "
+      "epsilon > 0 with the random stream `forcing_seed`, and by a fixed `forcing` Phi (W' gains "
+      "Phi; complex skew-Hermitian traceless N x N): exact flows Strang-split around "
+      "integrate()'s method (each integrate() call starts the stream anew; "
+      "docs/guide/matrix-groups-and-the-fluid.md).");
   m.def(
       "vorticity_on_grid",
       [](py::handle omega) {

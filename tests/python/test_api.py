@@ -117,6 +117,41 @@ def test_rotating_sphere_planetary_vorticity_and_the_rossby_haurwitz_drift():
     np.testing.assert_allclose(Q - F, exact, atol=1e-10)
 
 
+def test_damping_and_forcing_are_exact_flows_split_around_the_method():
+    # Zonal flows (diagonal W) are steady on a resting or rotating sphere ([P, W] = 0, and the
+    # double bracket vanishes with it): what moves them is the damping's and the forcing's
+    # exact flows alone, whose closed forms are written here.
+    n, h, steps = 8, 0.02, 50
+    t = h * steps
+    W0 = ddb.zeitlin_vorticity("zonal", n, 2)
+    # Drag on a rotating sphere: W(t) = exp(-gamma t) W0, W = Q - F.
+    fluid = ddb.zeitlin(n, 0.5, rotation=1.0, drag=0.3)
+    F = fluid.planetary_vorticity()
+    _, states = ddb.integrate(fluid, "sddb-cay", W0 + F, h, steps)
+    np.testing.assert_allclose(states[-1] - F, np.exp(-0.3 * t) * W0, atol=1e-12)
+    # Hyperviscosity p = 2 on T_30: exp(-nu (l(l + 1))^p t) with l(l + 1) = 12.
+    fluid = ddb.zeitlin(n, 0.0, viscosity=1e-3, hyperviscosity_order=2)
+    coefficients = np.zeros(n * n)
+    coefficients[3 * 3 + 3 + 0] = 1.0
+    W = fluid.vorticity(coefficients)
+    _, states = ddb.integrate(fluid, "rk4", W, h, steps)
+    np.testing.assert_allclose(states[-1], np.exp(-1e-3 * 144 * t) * W, atol=1e-12)
+    # A fixed forcing Phi of a zonal flow: W0 + t Phi.
+    phi = 0.3 * fluid.vorticity(np.eye(1, n * n, 1 * 1 + 1 + 0)[0])
+    fluid = ddb.zeitlin(n, 0.5, forcing=phi)
+    _, states = ddb.integrate(fluid, "sddb-cay", W0, h, steps)
+    np.testing.assert_allclose(states[-1], W0 + t * phi, atol=1e-12)
+    # Stochastic forcing: the same seed gives the same bits, another seed another run.
+    W1 = ddb.zeitlin_vorticity("random", n, 5)
+
+    def forced(seed):
+        fluid = ddb.zeitlin(n, 0.5, forcing_band=(3, 1), forcing_rate=1e-2, forcing_seed=seed)
+        return ddb.integrate(fluid, "ddb-cay", W1, h, 20)[1][-1]
+
+    np.testing.assert_array_equal(forced(3), forced(3))
+    assert np.linalg.norm(forced(3) - forced(4)) > 1e-6
+
+
 def test_field_diagnostics_sum_to_the_energy_and_enstrophy():
     n = 9
     fluid = ddb.zeitlin(n, 0.0, rotation=1.0, deformation_radius=0.5)
@@ -261,6 +296,19 @@ def test_bad_system_arguments_name_the_parameter():
         (lambda: ddb.zeitlin(8, 0.5, rotation=float("nan")), "rotation = nan"),
         (lambda: ddb.zeitlin(8, 0.5, deformation_radius=-1.0), "deformation_radius = -1"),
         (lambda: ddb.zeitlin(8, 0.5, deformation_radius="1"), "deformation_radius = '1'"),
+        (lambda: ddb.zeitlin(8, 0.5, viscosity=-1.0), "viscosity = -1"),
+        (lambda: ddb.zeitlin(8, 0.5, drag=float("inf")), "drag = inf"),
+        (lambda: ddb.zeitlin(8, 0.5, hyperviscosity_order=0), "hyperviscosity_order = 0"),
+        (lambda: ddb.zeitlin(8, 0.5, hyperviscosity_order=2.0), "hyperviscosity_order = 2.0"),
+        (lambda: ddb.zeitlin(8, 0.5, forcing_rate=1e-3), "forcing_rate = 0.001"),
+        (lambda: ddb.zeitlin(8, 0.5, forcing_band=(3, 1)), "forcing_band = (3, 1)"),
+        (lambda: ddb.zeitlin(8, 0.5, forcing_band=(7, 1), forcing_rate=1e-3),
+         "forcing_band = (7, 1)"),
+        (lambda: ddb.zeitlin(8, 0.5, forcing_band=(3.5, 1), forcing_rate=1e-3),
+         "forcing_band = (3.5, 1)"),
+        (lambda: ddb.zeitlin(8, 0.5, forcing_band=(3, 1), forcing_rate=-1.0), "forcing_rate = -1"),
+        (lambda: ddb.zeitlin(8, 0.5, forcing=np.eye(8)), "forcing"),
+        (lambda: ddb.zeitlin(8, 0.5, forcing=np.zeros((4, 4))), "forcing"),
         (lambda: ddb.zeitlin_vorticity("random", 100_000), "N = 100000"),
         (lambda: ddb.zeitlin_vorticity("random", 8, -1), "seed = -1"),
         (lambda: ddb.zeitlin_vorticity(None, 8), "kind = None"),
