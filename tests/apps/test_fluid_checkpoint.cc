@@ -164,15 +164,7 @@ TEST_F(Checkpoint, AFixedForcedRunKilledAndResumedIsTheUninterruptedOneWhateverI
   const fs::path files = freshFolder("phi_files");
   fs::create_directories(files);
   const auto writePhi = [&](double scale) {
-    const Eigen::MatrixXcd phi = scale * ddb::zeitlinX3(12);
-    std::ofstream csv(files / "phi.csv");
-    csv.precision(17);
-    for (Eigen::Index j = 0; j < phi.rows(); ++j) {
-      for (Eigen::Index k = 0; k < phi.cols(); ++k) csv << phi(j, k).real() << ",";
-      for (Eigen::Index k = 0; k < phi.cols(); ++k) {
-        csv << phi(j, k).imag() << (k + 1 < phi.cols() ? "," : "\n");
-      }
-    }
+    writeMatrix(files / "phi.csv", scale * ddb::zeitlinX3(12));
   };
   writePhi(1e-3);
   const std::string arguments =

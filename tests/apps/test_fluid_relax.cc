@@ -45,17 +45,6 @@ Matrix readMatrix(const fs::path& path) {
   return W;
 }
 
-void writeMatrix(const fs::path& path, const Matrix& W) {
-  std::ofstream out(path);
-  out.precision(17);
-  for (Eigen::Index j = 0; j < W.rows(); ++j) {
-    for (Eigen::Index k = 0; k < W.cols(); ++k) out << W(j, k).real() << ",";
-    for (Eigen::Index k = 0; k < W.cols(); ++k) {
-      out << W(j, k).imag() << (k + 1 < W.cols() ? "," : "\n");
-    }
-  }
-}
-
 /// summary.json's number `key`; NaN if it is missing or not a number (null).
 double jsonNumber(const nlohmann::ordered_json& json, const std::string& key) {
   const auto at = json.find(key);

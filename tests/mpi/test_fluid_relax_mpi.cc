@@ -376,17 +376,7 @@ TEST(FluidRelaxMpi, RefusesBadInputOnEveryRankOnce) {
   // A fixed forcing's file, valid at the default N = 32: Φ = X3.
   const fs::path phi = freshFolder("ddb_mpi_", "phi") / "phi.csv";
   fs::create_directories(phi.parent_path());
-  {
-    const Eigen::MatrixXcd x3 = ddb::zeitlinX3(32);
-    std::ofstream csv(phi);
-    csv.precision(17);
-    for (Eigen::Index j = 0; j < x3.rows(); ++j) {
-      for (Eigen::Index k = 0; k < x3.cols(); ++k) csv << x3(j, k).real() << ",";
-      for (Eigen::Index k = 0; k < x3.cols(); ++k) {
-        csv << x3(j, k).imag() << (k + 1 < x3.cols() ? "," : "\n");
-      }
-    }
-  }
+  writeMatrix(phi, ddb::zeitlinX3(32));
   // fluid-relax's own checks are tested on fluid-relax (test_bad_inputs): here one of them
   // with this app's bound on N (the group's, not fluid-relax's 1024), a parse error, a method
   // fluid-relax does not offer (reference), and this app's own.

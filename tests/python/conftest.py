@@ -2,11 +2,28 @@
 
 ctest sets PYTHONPATH to the module's folder and DDB_COMPARE to the app (tests/CMakeLists.txt).
 """
+import importlib.util
 import json
 import os
+import pathlib
 import subprocess
 
 import pytest
+
+SCRIPTS = pathlib.Path(__file__).resolve().parents[2] / "scripts"
+
+
+@pytest.fixture(scope="session")
+def load_script():
+    """Imports scripts/NAME.py as a module (its main() not run)."""
+
+    def load(name):
+        spec = importlib.util.spec_from_file_location(name, SCRIPTS / (name + ".py"))
+        module = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(module)
+        return module
+
+    return load
 
 
 @pytest.fixture(scope="session")

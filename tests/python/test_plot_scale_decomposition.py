@@ -1,25 +1,14 @@
 """scripts/plot_scale_decomposition.py on a run folder written here: it draws W, W_s and W_r of
 W_final.csv, and a zonal W on a resting sphere (diagonal, as its stream matrix) is all W_s."""
-import importlib.util
 import json
-import pathlib
 import sys
 
 import numpy as np
 
 import ddb
 
-SCRIPT = pathlib.Path(__file__).resolve().parents[2] / "scripts" / "plot_scale_decomposition.py"
 
-
-def load_script():
-    spec = importlib.util.spec_from_file_location("plot_scale_decomposition", SCRIPT)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-def test_draws_the_three_parts_of_the_final_state(tmp_path, monkeypatch):
+def test_draws_the_three_parts_of_the_final_state(tmp_path, monkeypatch, load_script):
     n = 6
     W = ddb.zeitlin_vorticity("zonal", n, 2) + 0.1 * ddb.zeitlin_vorticity("random", n, 3)
     with open(tmp_path / "W_final.csv", "w") as f:
@@ -28,7 +17,7 @@ def test_draws_the_three_parts_of_the_final_state(tmp_path, monkeypatch):
     summary = {"alpha": 0.5, "rotation": 0.0, "deformation_radius": None, "t_end": 1.0,
                "method": "ddb-cay"}
     (tmp_path / "summary.json").write_text(json.dumps(summary))
-    script = load_script()
+    script = load_script("plot_scale_decomposition")
     np.testing.assert_array_equal(script.read_matrix(tmp_path / "W_final.csv"), W)
     monkeypatch.setattr(sys, "argv", ["plot_scale_decomposition.py", str(tmp_path)])
     script.main()

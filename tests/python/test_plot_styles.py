@@ -1,22 +1,10 @@
 """scripts/plot_compare.py draws every method of the method table (ddb.methods()) with a
 style of its own: its own colour, line style and marker, and a place in the legend's groups."""
-import importlib.util
-import pathlib
-
 import ddb
 
-SCRIPT = pathlib.Path(__file__).resolve().parents[2] / "scripts" / "plot_compare.py"
 
-
-def load_plot_compare():
-    spec = importlib.util.spec_from_file_location("plot_compare", SCRIPT)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-def test_every_method_has_a_style_and_a_group_of_its_own():
-    plot = load_plot_compare()
+def test_every_method_has_a_style_and_a_group_of_its_own(load_script):
+    plot = load_script("plot_compare")
     names = [m["name"] for m in ddb.methods()]
     missing = [n for n in names if n not in plot.STYLE]
     assert not missing, f"no style in plot_compare.py for {missing}"

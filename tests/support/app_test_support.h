@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <Eigen/Core>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -160,6 +161,18 @@ inline std::vector<std::vector<double>> readCsv(const fs::path& path, std::strin
     rows.push_back(row);
   }
   return rows;
+}
+
+/// W in --init-file's CSV layout (row j: Re W[j, :] then Im W[j, :]), every digit kept.
+inline void writeMatrix(const fs::path& path, const Eigen::MatrixXcd& W) {
+  std::ofstream out(path);
+  out.precision(17);
+  for (Eigen::Index j = 0; j < W.rows(); ++j) {
+    for (Eigen::Index k = 0; k < W.cols(); ++k) out << W(j, k).real() << ",";
+    for (Eigen::Index k = 0; k < W.cols(); ++k) {
+      out << W(j, k).imag() << (k + 1 < W.cols() ? "," : "\n");
+    }
+  }
 }
 
 }  // namespace ddb::test
