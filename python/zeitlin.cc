@@ -4,11 +4,10 @@
 #include <ddb/integrators/methods/strang_splitting.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/spherical_harmonic_grid.h>
+#include <ddb/systems/zeitlin_exact_flows.h>
 #include <ddb/systems/zeitlin_fluid.h>
-#include <ddb/systems/zeitlin_forcing.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <ddb/systems/zeitlin_spectra.h>
-#include <ddb/systems/zeitlin_viscosity.h>
 #include <pybind11/eigen.h>
 
 #include <cmath>
@@ -30,39 +29,21 @@ namespace {
 /// The fluid: a System on SU(N) that keeps its Hamiltonian's type for the diagnostics.
 class ZeitlinFluid : public System {
  public:
-  /// The damping and forcing of a fluid, by Strang splitting around integrate()'s method.
-  struct ExactFlows {
-    ZeitlinViscosity viscosity;
-    ZeitlinStochasticForcing forcing;
-    Eigen::MatrixXcd fixed_forcing;  // Φ, empty: none
-  };
-
-  ZeitlinFluid(Eigen::Index n, double alpha, const ZeitlinPhysics& physics, ExactFlows flows)
+  /// With its damping and forcing, checked here (their flows built once and dropped: a bad
+  /// value is refused when the fluid is made, not at its first integrate()).
+  ZeitlinFluid(Eigen::Index n, double alpha, const ZeitlinPhysics& physics,
+               ZeitlinDampingAndForcing flows)
       : ZeitlinFluid(makeZeitlinFluid(checked(n), alpha, physics)) {
-    flows.viscosity.validate();
-    if (flows.forcing.forces()) flows.forcing.validate(n);
-    // The fixed forcing's own checks (N × N, finite, in su(N)), naming "forcing".
-    if (flows.fixed_forcing.size() > 0) ZeitlinFixedForcingFlow(n, flows.fixed_forcing);
+    zeitlinExactFlows(hamiltonian_, flows);
     flows_ = std::move(flows);
   }
 
-  /// The method split with the viscous flow, then the stochastic forcing, then the fixed forcing
-  /// (those the fluid has), as fluid-relax's run (apps/fluid_relax/fluid_run.h, withExactFlows).
+  /// The method Strang-split with each of the fluid's exact flows, in zeitlinExactFlows' order
+  /// (fluid-relax's).
   std::unique_ptr<OneStepMethod<SUN>> withExactFlows(
       std::unique_ptr<OneStepMethod<SUN>> method) const override {
-    const auto split = [&](std::unique_ptr<ExactFlow<SUN>> flow) {
+    for (auto& flow : zeitlinExactFlows(hamiltonian_, flows_)) {
       method = std::make_unique<StrangSplitting<SUN>>(std::move(method), std::move(flow));
-    };
-    if (flows_.viscosity.damps()) {
-      split(std::make_unique<ZeitlinViscousFlow>(n(), flows_.viscosity,
-                                                 hamiltonian_.planetaryVorticity()));
-    }
-    if (flows_.forcing.forces()) {
-      split(std::make_unique<ZeitlinStochasticForcingFlow>(
-          n(), flows_.forcing, hamiltonian_.laplacian().kappaSquared()));
-    }
-    if (flows_.fixed_forcing.size() > 0) {
-      split(std::make_unique<ZeitlinFixedForcingFlow>(n(), flows_.fixed_forcing));
     }
     return method;
   }
@@ -98,7 +79,7 @@ class ZeitlinFluid : public System {
   const ZeitlinHamiltonian& hamiltonian_;
   ZeitlinDiagnostics diagnostics_;
   SphericalHarmonicBasis basis_;
-  ExactFlows flows_;
+  ZeitlinDampingAndForcing flows_;
 };
 
 /// f(W) of one state (a float) or of each of a stack (an array).
@@ -223,7 +204,7 @@ void bindZeitlin(py::module_& m) {
         if (!deformation_radius.is_none()) {
           physics.deformation_radius = realArgument("deformation_radius", deformation_radius);
         }
-        ZeitlinFluid::ExactFlows flows;
+        ZeitlinDampingAndForcing flows;
         flows.viscosity.viscosity = realArgument("viscosity", viscosity);
         flows.viscosity.order =
             integerArgument<int>("hyperviscosity_order", hyperviscosity_order, 1, 16);

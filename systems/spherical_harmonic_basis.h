@@ -147,10 +147,7 @@ class SphericalHarmonicBasis {
       throwInvalid("factors", std::to_string(factors.size()) + " values",
                    "must be N = " + std::to_string(n_) + ", one per degree l");
     }
-    if (w.size() != n_) {
-      throwInvalid("workspace", "of N = " + std::to_string(w.size()),
-                   "must be of this basis's N = " + std::to_string(n_));
-    }
+    // The workspace's N is checked by blockVectors(), before W is touched.
     for (Eigen::Index m = 0; m < n_; ++m) {
       const Eigen::Index length = n_ - m;
       const BlockView V = blockVectors(m, w);

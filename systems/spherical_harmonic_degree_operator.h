@@ -151,8 +151,8 @@ class SphericalHarmonicDegreeOperator {
     return Block(operators_.data() + offsets_[std::size_t(index)], size, size);
   }
 
-  /// images.col(c) = S · x.col(c), c = 0..3, for a symmetric S: a sum of S's columns
-  /// (contiguous) weighted by x's rows, two columns of S read at a time for all four columns of x,
+  /// images.col(c) = S · x.col(c), c = 0..3: a sum of S's columns (contiguous) weighted by x's
+  /// rows, two columns of S read at a time for all four columns of x,
   /// so that S streams from memory once and the images stay in the first-level cache. Not
   /// through BLAS: OpenBLAS's dgemm allocates on shapes this narrow
   /// (SphericalHarmonicBasis::applyDegreeFunction).

@@ -60,7 +60,8 @@ class ZeitlinViscousFlow final : public ExactFlow<SUN> {
         rates_(n),
         factors_(n),
         planetary_(std::move(planetary)),
-        rotating_(planetary_.size() > 0 && !planetary_.isZero(0.0)) {
+        rotating_(planetary_.size() > 0 && !planetary_.isZero(0.0)),
+        keeps_operator_(SphericalHarmonicDegreeOperator::bytes(n) <= kOperatorBytes) {
     viscosity.validate();
     for (Eigen::Index l = 0; l < n; ++l) rates_(l) = viscosity.rate(l);
   }
@@ -80,7 +81,7 @@ class ZeitlinViscousFlow final : public ExactFlow<SUN> {
       h_ = h;
       // Kept for this h (a fixed step, or Strang splitting's two equal halves): a changing h
       // rebuilds it, about as costly as a step without it.
-      if (SphericalHarmonicDegreeOperator::bytes(basis_.size()) <= kOperatorBytes) {
+      if (keeps_operator_) {
         if (operator_) {
           operator_->setFactors(basis_, factors_);
         } else {
@@ -105,6 +106,7 @@ class ZeitlinViscousFlow final : public ExactFlow<SUN> {
   double h_ = std::nan("");
   Eigen::MatrixXcd planetary_;
   bool rotating_;
+  bool keeps_operator_;  // whether operator_ fits in kOperatorBytes at this N
 };
 
 }  // namespace ddb

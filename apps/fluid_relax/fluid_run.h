@@ -11,13 +11,9 @@
 //   n()                             N, on every process
 //   kSpectrumEveryState             whether every state's spectrum drift is measured (the CPU),
 //                                   or only the history rows' (no step waits for an eigensolver)
-//   kExactFlows                     whether damped(), forced() and forcedBy() exist: the viscous
-//                                   flow and the forcings (ZeitlinViscousFlow,
-//                                   ZeitlinStochasticForcingFlow, ZeitlinFixedForcingFlow) run on
-//                                   this placement's states
-//   damped(method, viscosity)       the method Strang-split with the exact viscous flow
-//   forced(method, forcing, κ²)     the method Strang-split with the stochastic forcing
-//   forcedBy(method, Φ)             the method Strang-split with the fixed forcing Φ
+//   kExactFlows                     whether splitWith() exists: the damping's and the forcings'
+//                                   exact flows (zeitlinExactFlows) run on this placement's states
+//   splitWith(method, flows)        the method Strang-split with each of zeitlinExactFlows
 //   system()                        the fluid whose states are State
 //   hostFluid()                     the same fluid on this process's memory (the writer's)
 //   initialState(W0)                W₀ where the states live (collective)
@@ -85,12 +81,7 @@ std::unique_ptr<OneStepMethod<G>> withExactFlows(Placement& where,
                                                  std::unique_ptr<OneStepMethod<G>> method,
                                                  const Options& o, const Settings& s) {
   if constexpr (Placement::kExactFlows) {
-    if (s.viscosity.damps()) method = where.damped(std::move(method), s.viscosity);
-    if (s.forcing.forces()) {
-      method = where.forced(std::move(method), s.forcing, s.physics.kappaSquared());
-    }
-    if (s.fixed_forcing.size() > 0) method = where.forcedBy(std::move(method), s.fixed_forcing);
-    return method;
+    return where.splitWith(std::move(method), {s.viscosity, s.forcing, s.fixed_forcing});
   } else {
     const auto [flag, text] = exactFlowFlag(o, s);
     app::usageError(flag, text,

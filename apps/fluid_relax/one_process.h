@@ -4,9 +4,8 @@
 #pragma once
 
 #include <ddb/integrators/methods/strang_splitting.h>
+#include <ddb/systems/zeitlin_exact_flows.h>
 #include <ddb/systems/zeitlin_fluid.h>
-#include <ddb/systems/zeitlin_forcing.h>
-#include <ddb/systems/zeitlin_viscosity.h>
 #include <spdlog/fmt/fmt.h>
 
 #include <Eigen/Core>
@@ -80,23 +79,12 @@ class CpuPlacement : public OneProcess {
     return fmt::format("  |[P,W]| {:.3g}", diagnostics_.commutatorNorm(W));
   }
   std::string device() const { return "cpu"; }
-  std::unique_ptr<OneStepMethod<SUN>> damped(std::unique_ptr<OneStepMethod<SUN>> method,
-                                             const ZeitlinViscosity& viscosity) const {
-    return std::make_unique<StrangSplitting<SUN>>(
-        std::move(method),
-        std::make_unique<ZeitlinViscousFlow>(n(), viscosity, hamiltonian_.planetaryVorticity()));
-  }
-  std::unique_ptr<OneStepMethod<SUN>> forced(std::unique_ptr<OneStepMethod<SUN>> method,
-                                             const ZeitlinStochasticForcing& forcing,
-                                             double kappa_squared) const {
-    return std::make_unique<StrangSplitting<SUN>>(
-        std::move(method),
-        std::make_unique<ZeitlinStochasticForcingFlow>(n(), forcing, kappa_squared));
-  }
-  std::unique_ptr<OneStepMethod<SUN>> forcedBy(std::unique_ptr<OneStepMethod<SUN>> method,
-                                               const Matrix& forcing) const {
-    return std::make_unique<StrangSplitting<SUN>>(
-        std::move(method), std::make_unique<ZeitlinFixedForcingFlow>(n(), forcing));
+  std::unique_ptr<OneStepMethod<SUN>> splitWith(std::unique_ptr<OneStepMethod<SUN>> method,
+                                                const ZeitlinDampingAndForcing& flows) const {
+    for (auto& flow : zeitlinExactFlows(hamiltonian_, flows)) {
+      method = std::make_unique<StrangSplitting<SUN>>(std::move(method), std::move(flow));
+    }
+    return method;
   }
 
  private:

@@ -46,6 +46,7 @@
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/spherical_harmonic_degree_operator.h>
 #include <ddb/systems/spherical_harmonic_grid.h>
+#include <ddb/systems/zeitlin_exact_flows.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_forcing.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
@@ -550,6 +551,8 @@ static_assert(
   forced.saveWarmStart(record);
   use(ddb::counterNormal(forcing.seed, 0, 0));
   ddb::ZeitlinFixedForcingFlow fixed(n, W);
+  ddb::ZeitlinDampingAndForcing damping_and_forcing{viscosity, forcing, W};
+  use(ddb::zeitlinExactFlows(hamiltonian, damping_and_forcing).size());
   fixed.advance(state, 0.01);
   // The field's diagnostics.
   const ddb::SphericalHarmonicBasis basis(hamiltonian.laplacian());
