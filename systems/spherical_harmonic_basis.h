@@ -147,41 +147,32 @@ class SphericalHarmonicBasis {
       throwInvalid("factors", std::to_string(factors.size()) + " values",
                    "must be N = " + std::to_string(n_) + ", one per degree l");
     }
-    // The workspace's N is checked by blockVectors(), before W is touched.
+    // The workspace's N is checked by blockVectors(), before W is touched. The real and
+    // imaginary parts of diagonal m's entries W(k, k + m), then of −m's W(k + m, k) (the main
+    // diagonal once): one pass over V for both.
     for (Eigen::Index m = 0; m < n_; ++m) {
-      const Eigen::Index length = n_ - m;
-      const BlockView V = blockVectors(m, w);
-      // f_l/N in a vector of the workspace: an expression there would be evaluated into a
-      // temporary by colwise() (Eigen's Replicate), an allocation per diagonal.
-      auto f = w.factors.head(length);
-      f = factors.tail(length).array() / double(n_);
-      // The real and imaginary parts of diagonal m's entries W(k, k + m), then of −m's
-      // W(k + m, k) (the main diagonal once): one pass over V for both.
-      const Eigen::Index columns = m == 0 ? 2 : 4;
-      auto parts = w.parts.topLeftCorner(length, columns);
-      auto projected = w.projected.topLeftCorner(length, columns);
-      for (Eigen::Index k = 0; k < length; ++k) {
-        parts(k, 0) = W(k, k + m).real();
-        parts(k, 1) = W(k, k + m).imag();
-      }
-      if (m > 0) {
-        for (Eigen::Index k = 0; k < length; ++k) {
-          parts(k, 2) = W(k + m, k).real();
-          parts(k, 3) = W(k + m, k).imag();
-        }
-      }
-      // Not through BLAS: OpenBLAS's dgemm allocates on some of these shapes (an n × n block
-      // times n × 2; measured, bench/zeitlin_bench.cc). V's columns are contiguous, so V·parts
-      // is a sum of outer products and Vᵀ·projected a dot product per entry.
-      projected.setZero();
-      for (Eigen::Index k = 0; k < length; ++k) projected.noalias() += V.col(k) * parts.row(k);
-      projected.array().colwise() *= f;
-      parts.noalias() = V.transpose().lazyProduct(projected);
-      for (Eigen::Index k = 0; k < length; ++k) W(k, k + m) = {parts(k, 0), parts(k, 1)};
-      if (m > 0) {
-        for (Eigen::Index k = 0; k < length; ++k) W(k + m, k) = {parts(k, 2), parts(k, 3)};
-      }
+      applyDegreeFunctionToBlock(factors, m, m == 0 ? 2 : 4, w,
+                                 [&](Eigen::Index column, Eigen::Index k) -> std::complex<double>& {
+                                   return column < 2 ? W(k, k + m) : W(k + m, k);
+                                 });
     }
+  }
+
+  /// The diagonals of block m (0 <= m < N) of a matrix W, each as its N − m entries in the order
+  /// k = min(i, j), W's diagonal m or −m, one (`second` null) or both, replaced by those of
+  /// f(−Δ) W (which maps each diagonal to itself, alike for m and −m): applyDegreeFunction on a
+  /// share of the diagonals (DistributedZeitlinViscousFlow). Allocates nothing.
+  void applyDegreeFunctionToDiagonals(const Eigen::VectorXd& factors, Eigen::Index m,
+                                      std::complex<double>* first, std::complex<double>* second,
+                                      Workspace& w) const {
+    if (factors.size() != n_) {
+      throwInvalid("factors", std::to_string(factors.size()) + " values",
+                   "must be N = " + std::to_string(n_) + ", one per degree l");
+    }
+    applyDegreeFunctionToBlock(factors, m, second != nullptr ? 4 : 2, w,
+                               [&](Eigen::Index column, Eigen::Index k) -> std::complex<double>& {
+                                 return column < 2 ? first[k] : second[k];
+                               });
   }
 
   /// W = Σ ω_lm T_lm.
@@ -271,6 +262,37 @@ class SphericalHarmonicBasis {
   }
 
   static double sign(Eigen::Index m) { return m % 2 == 0 ? 1.0 : -1.0; }
+
+  /// (1/N) Vᵀ diag(f) V applied to `columns` (2 or 4) real columns of block m's diagonals:
+  /// entry(c, k) is entry k of column c's diagonal, its real part for even c, imaginary for odd.
+  template <class Entry>
+  void applyDegreeFunctionToBlock(const Eigen::VectorXd& factors, Eigen::Index m,
+                                  Eigen::Index columns, Workspace& w, const Entry& entry) const {
+    const Eigen::Index length = n_ - m;
+    const BlockView V = blockVectors(m, w);
+    // f_l/N in a vector of the workspace: an expression there would be evaluated into a
+    // temporary by colwise() (Eigen's Replicate), an allocation per diagonal.
+    auto f = w.factors.head(length);
+    f = factors.tail(length).array() / double(n_);
+    auto parts = w.parts.topLeftCorner(length, columns);
+    auto projected = w.projected.topLeftCorner(length, columns);
+    for (Eigen::Index c = 0; c < columns; c += 2) {
+      for (Eigen::Index k = 0; k < length; ++k) {
+        parts(k, c) = entry(c, k).real();
+        parts(k, c + 1) = entry(c, k).imag();
+      }
+    }
+    // Not through BLAS: OpenBLAS's dgemm allocates on some of these shapes (an n × n block
+    // times n × 2; measured, bench/zeitlin_bench.cc). V's columns are contiguous, so V·parts
+    // is a sum of outer products and Vᵀ·projected a dot product per entry.
+    projected.setZero();
+    for (Eigen::Index k = 0; k < length; ++k) projected.noalias() += V.col(k) * parts.row(k);
+    projected.array().colwise() *= f;
+    parts.noalias() = V.transpose().lazyProduct(projected);
+    for (Eigen::Index c = 0; c < columns; c += 2) {
+      for (Eigen::Index k = 0; k < length; ++k) entry(c, k) = {parts(k, c), parts(k, c + 1)};
+    }
+  }
 
   void requireSize(const Eigen::MatrixXcd& W) const {
     if (W.rows() != n_ || W.cols() != n_) {

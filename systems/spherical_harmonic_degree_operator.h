@@ -12,15 +12,18 @@
 // (bytes(N): 179 MB at N = 512), and an application reads each once: half the memory and work of
 // applying A_m, and no eigenvector computed (the basis's transform computes them, about 30
 // matrix products at N = 512; docs/results/benchmarks.md, "The viscous flow through a kept
-// operator").
+// operator"). An operator may keep some blocks only, and apply to diagonals taken out of W one or
+// two at a time: an MPI rank's share (DistributedZeitlinViscousFlow).
 #pragma once
 
 #include <ddb/core/errors.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <complex>
 #include <cstddef>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -31,13 +34,28 @@ class SphericalHarmonicDegreeOperator {
   /// f(−Δ) for the factors f_l = factors(l), l = 0..N−1 (N = basis.size()).
   SphericalHarmonicDegreeOperator(const SphericalHarmonicBasis& basis,
                                   const Eigen::VectorXd& factors)
+      : SphericalHarmonicDegreeOperator(basis, factors, allBlocks(basis.size())) {}
+
+  /// ... on the diagonals ±m of the blocks m in `blocks` only (each 0 <= m < N; a rank's share
+  /// of the diagonals, DistributedZeitlinViscousFlow): their memory and their setFactors' work.
+  SphericalHarmonicDegreeOperator(const SphericalHarmonicBasis& basis,
+                                  const Eigen::VectorXd& factors,
+                                  const std::vector<Eigen::Index>& blocks)
       : n_(basis.size()),
+        kept_(static_cast<std::size_t>(n_), false),
         offsets_(2 * static_cast<std::size_t>(n_) + 1, 0),
         folded_(n_, 4),
         even_images_(n_, 4),
         odd_images_(n_, 4) {
+    for (const Eigen::Index m : blocks) {
+      if (!(m >= 0 && m < n_)) {
+        throwInvalid("blocks", std::to_string(m), "must be 0 <= m < N = " + std::to_string(n_));
+      }
+      kept_[std::size_t(m)] = true;
+    }
     for (Eigen::Index m = 0; m < n_; ++m) {
-      const std::size_t even = std::size_t(evenSize(n_ - m)), odd = std::size_t(oddSize(n_ - m));
+      const std::size_t even = kept(m) ? std::size_t(evenSize(n_ - m)) : 0,
+                        odd = kept(m) ? std::size_t(oddSize(n_ - m)) : 0;
       offsets_[2 * std::size_t(m) + 1] = offsets_[2 * std::size_t(m)] + even * even;
       offsets_[2 * std::size_t(m) + 2] = offsets_[2 * std::size_t(m) + 1] + odd * odd;
     }
@@ -47,14 +65,19 @@ class SphericalHarmonicDegreeOperator {
 
   /// The bytes the operator holds at resolution N: 8 Σ_m ((N − m)²/2 rounded up), ≈ 8 N³/6.
   static double bytes(Eigen::Index n) {
-    double numbers = 0;
-    for (Eigen::Index length = 1; length <= n; ++length) {
-      numbers += double(evenSize(length) * evenSize(length) + oddSize(length) * oddSize(length));
-    }
-    return 8.0 * numbers;
+    double total = 0;
+    for (Eigen::Index m = 0; m < n; ++m) total += blockBytes(n, m);
+    return total;
+  }
+  /// Block m's share of them: 8 ((N − m)²/2 rounded up).
+  static double blockBytes(Eigen::Index n, Eigen::Index m) {
+    const Eigen::Index length = n - m;
+    return 8.0 * double(evenSize(length) * evenSize(length) + oddSize(length) * oddSize(length));
   }
 
   Eigen::Index size() const { return n_; }
+  /// Whether block m (diagonals m and −m) is kept.
+  bool kept(Eigen::Index m) const { return m >= 0 && m < n_ && kept_[std::size_t(m)]; }
 
   /// Replaces the factors: O(N⁴/8) in products (about 40 matrix products at N = 512).
   void setFactors(const SphericalHarmonicBasis& basis, const Eigen::VectorXd& factors) {
@@ -70,6 +93,7 @@ class SphericalHarmonicDegreeOperator {
     Eigen::MatrixXd even_halves, odd_halves;
     Eigen::VectorXd even_factors, odd_factors;
     for (Eigen::Index m = 0; m < n_; ++m) {
+      if (!kept(m)) continue;
       const Eigen::Index length = n_ - m, even = evenSize(length), odd = oddSize(length);
       const SphericalHarmonicBasis::BlockView V = basis.blockVectors(m, w);
       even_halves.resize(even, even);
@@ -100,47 +124,77 @@ class SphericalHarmonicDegreeOperator {
     }
   }
 
-  /// W ← f(−Δ) W. Allocates nothing.
+  /// W ← f(−Δ) W. Allocates nothing. Every block must be kept.
   void apply(Eigen::MatrixXcd& W) {
     if (W.rows() != n_ || W.cols() != n_) {
       throwInvalid("W", std::to_string(W.rows()) + "x" + std::to_string(W.cols()),
                    "must be N x N, N = " + std::to_string(n_));
     }
     for (Eigen::Index m = 0; m < n_; ++m) {
-      const Eigen::Index length = n_ - m, even = evenSize(length), odd = oddSize(length);
-      // Columns: diagonal m's real and imaginary parts, then −m's (the main diagonal once: its
-      // columns 2 and 3 are zero and not written back).
-      const Eigen::Index columns = m == 0 ? 2 : 4;
-      if (m == 0) folded_.rightCols(2).setZero();
-      const auto entry = [&](Eigen::Index column, Eigen::Index k) -> std::complex<double>& {
-        return column < 2 ? W(k, k + m) : W(k + m, k);
-      };
-      const auto part = [](const std::complex<double>& value, Eigen::Index column) {
-        return column % 2 == 0 ? value.real() : value.imag();
-      };
-      // y (rows 0..even−1) and z (rows even..even+odd−1) of each column.
-      for (Eigen::Index c = 0; c < columns; ++c) {
-        for (Eigen::Index k = 0; k < odd; ++k) {
-          const double top = part(entry(c, k), c), bottom = part(entry(c, length - 1 - k), c);
-          folded_(k, c) = top + bottom;
-          folded_(even + k, c) = top - bottom;
-        }
-        if (even > odd) folded_(odd, c) = part(entry(c, odd), c);
-      }
-      multiply(block(2 * m, even), folded_.topRows(even), even_images_);
-      multiply(block(2 * m + 1, odd), folded_.middleRows(even, odd), odd_images_);
-      for (Eigen::Index c = 0; c < columns; ++c) {
-        for (Eigen::Index k = 0; k < odd; ++k) {
-          set(entry(c, k), c, even_images_(k, c) + odd_images_(k, c));
-          set(entry(c, length - 1 - k), c, even_images_(k, c) - odd_images_(k, c));
-        }
-        if (even > odd) set(entry(c, odd), c, even_images_(odd, c));
-      }
+      requireKept(m);
+      // Columns: diagonal m's real and imaginary parts, then −m's (the main diagonal once).
+      applyBlock(m, m == 0 ? 2 : 4,
+                 [&](Eigen::Index column, Eigen::Index k) -> std::complex<double>& {
+                   return column < 2 ? W(k, k + m) : W(k + m, k);
+                 });
     }
+  }
+
+  /// Diagonals of block m (0 <= m < N) of a matrix W, each as its N − m entries in the order
+  /// k = min(i, j): W's diagonal m (entries[k] = W(k, k + m)) or −m (W(k + m, k)), one of them
+  /// (`second` null) or both; each replaced by that diagonal of f(−Δ) W, since the operator maps
+  /// each diagonal to itself and acts alike on m and −m. Block m must be kept. Allocates nothing.
+  void applyToDiagonals(Eigen::Index m, std::complex<double>* first,
+                        std::complex<double>* second = nullptr) {
+    requireKept(m);
+    applyBlock(m, second != nullptr ? 4 : 2,
+               [&](Eigen::Index column, Eigen::Index k) -> std::complex<double>& {
+                 return column < 2 ? first[k] : second[k];
+               });
   }
 
  private:
   using Block = Eigen::Map<Eigen::MatrixXd>;
+
+  static std::vector<Eigen::Index> allBlocks(Eigen::Index n) {
+    std::vector<Eigen::Index> blocks(static_cast<std::size_t>(std::max<Eigen::Index>(n, 0)));
+    for (std::size_t m = 0; m < blocks.size(); ++m) blocks[m] = Eigen::Index(m);
+    return blocks;
+  }
+  void requireKept(Eigen::Index m) const {
+    if (!kept(m)) {
+      throwInvalid("m", std::to_string(m), "is a block this operator does not keep");
+    }
+  }
+
+  /// A_m applied to `columns` (2 or 4) real columns of block m's diagonals: entry(c, k) is entry k
+  /// of column c's diagonal, whose real part is column c for even c and imaginary for odd c.
+  template <class Entry>
+  void applyBlock(Eigen::Index m, Eigen::Index columns, const Entry& entry) {
+    const Eigen::Index length = n_ - m, even = evenSize(length), odd = oddSize(length);
+    const auto part = [](const std::complex<double>& value, Eigen::Index column) {
+      return column % 2 == 0 ? value.real() : value.imag();
+    };
+    if (columns == 2) folded_.rightCols(2).setZero();
+    // y (rows 0..even−1) and z (rows even..even+odd−1) of each column.
+    for (Eigen::Index c = 0; c < columns; ++c) {
+      for (Eigen::Index k = 0; k < odd; ++k) {
+        const double top = part(entry(c, k), c), bottom = part(entry(c, length - 1 - k), c);
+        folded_(k, c) = top + bottom;
+        folded_(even + k, c) = top - bottom;
+      }
+      if (even > odd) folded_(odd, c) = part(entry(c, odd), c);
+    }
+    multiply(block(2 * m, even), folded_.topRows(even), even_images_);
+    multiply(block(2 * m + 1, odd), folded_.middleRows(even, odd), odd_images_);
+    for (Eigen::Index c = 0; c < columns; ++c) {
+      for (Eigen::Index k = 0; k < odd; ++k) {
+        set(entry(c, k), c, even_images_(k, c) + odd_images_(k, c));
+        set(entry(c, length - 1 - k), c, even_images_(k, c) - odd_images_(k, c));
+      }
+      if (even > odd) set(entry(c, odd), c, even_images_(odd, c));
+    }
+  }
   // Length L's even vectors' halves have ⌈L/2⌉ entries (the middle one included), its odd ones
   // ⌊L/2⌋; a block of length L has as many even (odd) vectors as that.
   static Eigen::Index evenSize(Eigen::Index length) { return length - length / 2; }
@@ -201,7 +255,9 @@ class SphericalHarmonicDegreeOperator {
   }
 
   Eigen::Index n_;
-  // P and Q of each block m, column-major at offsets_[2m] and offsets_[2m + 1].
+  std::vector<bool> kept_;  // per block m
+  // P and Q of each block m (empty where not kept), column-major at offsets_[2m] and offsets_[2m +
+  // 1].
   std::vector<std::size_t> offsets_;
   std::vector<double> operators_;
   // A block's folded columns (y over z, up to 4 of them) and their images P y and Q z.

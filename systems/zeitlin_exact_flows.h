@@ -24,27 +24,42 @@ struct ZeitlinDampingAndForcing {
   Eigen::MatrixXcd fixed_forcing;
 };
 
-/// The flows of `d` that act on the fluid of `hamiltonian`, innermost first: a method
-/// Strang-split with each in turn (StrangSplitting(method, flow)) steps the damped and forced
-/// fluid. Throws InvalidArgument naming the parameter for bad ν, p, γ (whether or not they act),
-/// a band or rate the fluid's N refuses, or a Φ outside su(N).
+/// The flows of `d` that act on a fluid, innermost first, made by `make` for where its states
+/// live: make.viscous(ZeitlinViscosity), make.stochastic(ZeitlinStochasticForcing) and
+/// make.fixed(Φ) each return a std::unique_ptr to an ExactFlow of the states' group
+/// (zeitlinExactFlows below for this process's memory; distributedZeitlinExactFlows,
+/// distributed/distributed_zeitlin_exact_flows.h, for MPI ranks). A method Strang-split with each
+/// in turn (StrangSplitting(method, flow)) steps the damped and forced fluid.
+template <class Make>
+auto zeitlinExactFlowsBy(const Make& make, const ZeitlinDampingAndForcing& d) {
+  d.viscosity.validate();
+  std::vector<decltype(make.viscous(d.viscosity))> flows;
+  if (d.viscosity.damps()) flows.push_back(make.viscous(d.viscosity));
+  if (d.forcing.forces()) flows.push_back(make.stochastic(d.forcing));
+  if (d.fixed_forcing.size() > 0) flows.push_back(make.fixed(d.fixed_forcing));
+  return flows;
+}
+
+/// The flows of `d` that act on the fluid of `hamiltonian`, states in this process's memory,
+/// innermost first. Throws InvalidArgument naming the parameter for bad ν, p, γ (whether or not
+/// they act), a band or rate the fluid's N refuses, or a Φ outside su(N).
 inline std::vector<std::unique_ptr<ExactFlow<SUN>>> zeitlinExactFlows(
     const ZeitlinHamiltonian& hamiltonian, const ZeitlinDampingAndForcing& d) {
-  d.viscosity.validate();
-  const Eigen::Index n = hamiltonian.laplacian().size();
-  std::vector<std::unique_ptr<ExactFlow<SUN>>> flows;
-  if (d.viscosity.damps()) {
-    flows.push_back(
-        std::make_unique<ZeitlinViscousFlow>(n, d.viscosity, hamiltonian.planetaryVorticity()));
-  }
-  if (d.forcing.forces()) {
-    flows.push_back(std::make_unique<ZeitlinStochasticForcingFlow>(
-        n, d.forcing, hamiltonian.laplacian().kappaSquared()));
-  }
-  if (d.fixed_forcing.size() > 0) {
-    flows.push_back(std::make_unique<ZeitlinFixedForcingFlow>(n, d.fixed_forcing));
-  }
-  return flows;
+  struct Make {
+    const ZeitlinHamiltonian& hamiltonian;
+    Eigen::Index n() const { return hamiltonian.laplacian().size(); }
+    std::unique_ptr<ExactFlow<SUN>> viscous(const ZeitlinViscosity& viscosity) const {
+      return std::make_unique<ZeitlinViscousFlow>(n(), viscosity, hamiltonian.planetaryVorticity());
+    }
+    std::unique_ptr<ExactFlow<SUN>> stochastic(const ZeitlinStochasticForcing& forcing) const {
+      return std::make_unique<ZeitlinStochasticForcingFlow>(n(), forcing,
+                                                            hamiltonian.laplacian().kappaSquared());
+    }
+    std::unique_ptr<ExactFlow<SUN>> fixed(const Eigen::MatrixXcd& forcing) const {
+      return std::make_unique<ZeitlinFixedForcingFlow>(n(), forcing);
+    }
+  };
+  return zeitlinExactFlowsBy(Make{hamiltonian}, d);
 }
 
 }  // namespace ddb

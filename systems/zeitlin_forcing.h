@@ -84,13 +84,24 @@ inline double counterNormal(std::uint64_t seed, std::uint64_t draw, std::uint64_
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * 3.14159265358979323846 * u2);
 }
 
-/// The stochastic forcing's exact flow at resolution N for a fluid of κ² (ZeitlinPhysics::
-/// kappaSquared; 0: Euler). Each T_lm of the band is held as its two nonzero diagonals (O(N) each),
-/// so that a kick costs O(N · modes) and allocates nothing.
-class ZeitlinStochasticForcingFlow final : public ExactFlow<SUN> {
+/// The band of a ZeitlinStochasticForcing at resolution N for a fluid of κ² (ZeitlinPhysics::
+/// kappaSquared; 0: Euler): its modes T_lm, each held as its two nonzero diagonals (O(N) each),
+/// and the amplitude σ. Kick k over a step h adds c_j T_j, c_j = σ √h counterNormal(seed, k, j),
+/// for the modes j in order: one formula for every placement of the states
+/// (ZeitlinStochasticForcingFlow here, DistributedZeitlinStochasticForcingFlow on MPI ranks).
+class ZeitlinForcingBand {
  public:
-  ZeitlinStochasticForcingFlow(Eigen::Index n, const ZeitlinStochasticForcing& forcing,
-                               double kappa_squared = 0.0)
+  /// T_lm's diagonal `offset` = |m| (upper) and −|m| (lower; the same for m = 0), entries in the
+  /// order k = min(i, j).
+  struct Mode {
+    Eigen::Index offset;
+    Eigen::VectorXcd upper, lower;
+  };
+
+  /// Throws InvalidArgument naming the parameter for a band or rate N refuses
+  /// (ZeitlinStochasticForcing::validate).
+  ZeitlinForcingBand(Eigen::Index n, const ZeitlinStochasticForcing& forcing,
+                     double kappa_squared = 0.0)
       : forcing_(forcing) {
     forcing.validate(n);
     const SphericalHarmonicBasis basis{HoppeYauLaplacian(n)};
@@ -110,14 +121,40 @@ class ZeitlinStochasticForcingFlow final : public ExactFlow<SUN> {
     sigma_ = std::sqrt(forcing.rate / unit_energy);
   }
 
+  const std::vector<Mode>& modes() const { return modes_; }
+  /// σ, the noise amplitude that gives the mean injection rate ε.
+  double amplitude() const { return sigma_; }
+  /// c_j of kick `draw` over a step h into `c` (one per mode, sized by the caller: no allocation).
+  void coefficients(double h, std::uint64_t draw, Eigen::VectorXd& c) const {
+    const double scale = sigma_ * std::sqrt(h);
+    for (std::size_t j = 0; j < modes_.size(); ++j) {
+      c(Eigen::Index(j)) = scale * counterNormal(forcing_.seed, draw, j);
+    }
+  }
+
+ private:
+  ZeitlinStochasticForcing forcing_;
+  std::vector<Mode> modes_;
+  double sigma_ = 0.0;
+};
+
+/// The stochastic forcing's exact flow at resolution N for a fluid of κ²: a kick costs
+/// O(N · modes) and allocates nothing.
+class ZeitlinStochasticForcingFlow final : public ExactFlow<SUN> {
+ public:
+  ZeitlinStochasticForcingFlow(Eigen::Index n, const ZeitlinStochasticForcing& forcing,
+                               double kappa_squared = 0.0)
+      : band_(n, forcing, kappa_squared), c_(Eigen::Index(band_.modes().size())) {}
+
   std::string name() const override { return "forcing"; }
 
   /// W ← W + σ √h Σ g_lm T_lm, the next kick of the stream.
   void advance(Eigen::MatrixXcd& W, double h) override {
-    const double scale = sigma_ * std::sqrt(h);
-    for (std::size_t j = 0; j < modes_.size(); ++j) {
-      const Mode& mode = modes_[j];
-      const double c = scale * counterNormal(forcing_.seed, draws_, j);
+    band_.coefficients(h, draws_, c_);
+    const auto& modes = band_.modes();
+    for (std::size_t j = 0; j < modes.size(); ++j) {
+      const ZeitlinForcingBand::Mode& mode = modes[j];
+      const double c = c_(Eigen::Index(j));
       W.diagonal(mode.offset) += c * mode.upper;
       if (mode.offset != 0) W.diagonal(-mode.offset) += c * mode.lower;
     }
@@ -125,22 +162,15 @@ class ZeitlinStochasticForcingFlow final : public ExactFlow<SUN> {
   }
 
   /// σ, the noise amplitude that gives the mean injection rate ε.
-  double amplitude() const { return sigma_; }
+  double amplitude() const { return band_.amplitude(); }
   /// How many kicks the stream has given (the next kick's draw index).
   std::uint64_t draws() const { return draws_; }
   void save(BinaryRecordWriter& out) const override { out.put(draws_); }
   void load(BinaryRecordReader& in) override { in.get(draws_); }
 
  private:
-  /// T_lm's diagonal `offset` = |m| (upper) and −|m| (lower; the same for m = 0).
-  struct Mode {
-    Eigen::Index offset;
-    Eigen::VectorXcd upper, lower;
-  };
-
-  ZeitlinStochasticForcing forcing_;
-  std::vector<Mode> modes_;
-  double sigma_ = 0.0;
+  ZeitlinForcingBand band_;
+  Eigen::VectorXd c_;  // the kick's coefficients
   std::uint64_t draws_ = 0;
 };
 
@@ -150,15 +180,18 @@ class ZeitlinFixedForcingFlow final : public ExactFlow<SUN> {
   /// Throws InvalidArgument naming "forcing" unless Φ is N × N, finite, skew-Hermitian and
   /// traceless (to 1e-12 of its norm: a member of su(N)).
   ZeitlinFixedForcingFlow(Eigen::Index n, Eigen::MatrixXcd forcing) : forcing_(std::move(forcing)) {
-    if (forcing_.rows() != n || forcing_.cols() != n) {
-      throwInvalid("forcing",
-                   std::to_string(forcing_.rows()) + "x" + std::to_string(forcing_.cols()),
+    requireValid(n, forcing_);
+  }
+
+  /// The constructor's checks of Φ (every placement's: DistributedZeitlinFixedForcingFlow).
+  static void requireValid(Eigen::Index n, const Eigen::MatrixXcd& forcing) {
+    if (forcing.rows() != n || forcing.cols() != n) {
+      throwInvalid("forcing", std::to_string(forcing.rows()) + "x" + std::to_string(forcing.cols()),
                    "must be N x N, N = " + std::to_string(n));
     }
-    if (!forcing_.allFinite()) throwInvalid("forcing", "a matrix", "must be finite");
-    const double tolerance = 1e-12 * std::max(1.0, forcing_.norm());
-    if ((forcing_ + forcing_.adjoint()).norm() > tolerance ||
-        std::abs(forcing_.trace()) > tolerance) {
+    if (!forcing.allFinite()) throwInvalid("forcing", "a matrix", "must be finite");
+    const double tolerance = 1e-12 * std::max(1.0, forcing.norm());
+    if ((forcing + forcing.adjoint()).norm() > tolerance || std::abs(forcing.trace()) > tolerance) {
       throwInvalid("forcing", "a matrix", "must be traceless and skew-Hermitian (in su(N))");
     }
   }

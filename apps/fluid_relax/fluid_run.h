@@ -84,9 +84,10 @@ std::unique_ptr<OneStepMethod<G>> withExactFlows(Placement& where,
     return where.splitWith(std::move(method), {s.viscosity, s.forcing, s.fixed_forcing});
   } else {
     const auto [flag, text] = exactFlowFlag(o, s);
-    app::usageError(flag, text,
-                    "viscosity, drag and forcing run on the CPU only so far (fluid-relax --device "
-                    "cpu)");
+    app::usageError(
+        flag, text,
+        "viscosity, drag and forcing do not run on a GPU yet (fluid-relax --device cpu, "
+        "or fluid-relax-mpi)");
   }
 }
 

@@ -36,9 +36,11 @@ void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n) {
   cli.add_option("--deformation-radius", o.deformation_radius,
                  "quasi-geostrophic flow with deformation radius L_d > 0 (in sphere radii): the "
                  "stream matrix (Laplacian - 1/L_d^2)^-1 (W); default none (Euler)");
-  cli.add_option("--viscosity", o.viscosity,
-                 "viscosity nu >= 0: dW/dt gains nu (-1)^(p+1) Laplacian^p W, solved exactly "
-                 "and Strang-split around --method (CPU only; leaves the orbit by design)")
+  cli.add_option(
+         "--viscosity", o.viscosity,
+         "viscosity nu >= 0: dW/dt gains nu (-1)^(p+1) Laplacian^p W, solved exactly "
+         "and Strang-split around --method (not yet with --device cuda; leaves the orbit by "
+         "design)")
       ->capture_default_str();
   cli.add_option("--hyperviscosity-order", o.hyperviscosity_order,
                  "the order p of --viscosity, 1 <= p <= " +
@@ -49,7 +51,7 @@ void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n) {
       ->capture_default_str();
   cli.add_option("--forcing-band", o.forcing_band,
                  "L:D, stochastic forcing of the degrees L-D..L+D (within 1..N-1; L alone: D = 0), "
-                 "white in time, Strang-split as --viscosity (CPU only; needs --forcing-rate)");
+                 "white in time, Strang-split as --viscosity (needs --forcing-rate)");
   cli.add_option("--forcing-rate", o.forcing_rate,
                  "the forcing's mean energy injection rate epsilon >= 0 (energy per unit time)")
       ->capture_default_str();
@@ -58,7 +60,7 @@ void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n) {
       ->capture_default_str();
   cli.add_option("--forcing-file", o.forcing_file,
                  "a fixed forcing Phi, dW/dt gains Phi: a CSV as --init-file's (N rows x 2N "
-                 "columns, traceless skew-Hermitian), Strang-split as --viscosity (CPU only)");
+                 "columns, traceless skew-Hermitian), Strang-split as --viscosity");
   cli.add_option("--h", o.h,
                  "step size (default min(" + app::number(kZeitlinContractionRate) +
                      " hbar/||P0||_2, " + app::number(kZeitlinStiffness) +

@@ -6,9 +6,11 @@
 // rank waits alone in a collective call.
 #pragma once
 
+#include <ddb/distributed/distributed_zeitlin_exact_flows.h>
 #include <ddb/distributed/distributed_zeitlin_fluid.h>
 #include <ddb/distributed/process_grid.h>
 #include <ddb/distributed/rank_zero_record_reader.h>
+#include <ddb/integrators/methods/strang_splitting.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <mpi.h>
 #include <spdlog/fmt/fmt.h>
@@ -17,6 +19,7 @@
 #include <exception>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "common/json.h"
 #include "fluid_relax/checkpoint.h"
@@ -31,8 +34,7 @@ class DistributedPlacement {
   using State = DistributedMatrix;
   /// Only the rows' states are gathered: every state's spectrum would gather every state.
   static constexpr bool kSpectrumEveryState = false;
-  // The viscous flow and the forcing are dense (ZeitlinViscousFlow, ZeitlinStochasticForcingFlow).
-  static constexpr bool kExactFlows = false;
+  static constexpr bool kExactFlows = true;
 
   /// The fluid of `run` on `grid` with blocks of run.block; rank 0's fluid for the files.
   DistributedPlacement(const MpiRun& run, const ProcessGrid& grid)
@@ -40,6 +42,7 @@ class DistributedPlacement {
         n_(run.n),
         block_(run.block),
         layout_(DistributedMatrix(grid, static_cast<int>(run.n), run.block).layout()),
+        physics_(run.settings.physics),
         fluid_(makeDistributedZeitlinFluid(layout_, run.settings.alpha, run.settings.physics)),
         host_fluid_(grid.rank() == 0
                         ? makeZeitlinFluid(run.n, run.settings.alpha, run.settings.physics)
@@ -53,6 +56,14 @@ class DistributedPlacement {
     DistributedMatrix W(layout_);
     W.scatterFrom(W0);
     return W;
+  }
+  /// `method` Strang-split with each of distributedZeitlinExactFlows (the CPU placement's order).
+  std::unique_ptr<OneStepMethod<Group>> splitWith(std::unique_ptr<OneStepMethod<Group>> method,
+                                                  const ZeitlinDampingAndForcing& flows) const {
+    for (auto& flow : distributedZeitlinExactFlows(layout_, physics_, flows)) {
+      method = std::make_unique<StrangSplitting<Group>>(std::move(method), std::move(flow));
+    }
+    return method;
   }
   bool writes() const { return grid_.rank() == 0; }
   template <class Job>
@@ -123,6 +134,7 @@ class DistributedPlacement {
   Eigen::Index n_;
   int block_;
   BlockCyclicLayout layout_;
+  ZeitlinPhysics physics_;
   std::shared_ptr<const LiePoissonSystem<DistributedSUN>> fluid_;
   std::shared_ptr<const LiePoissonSystem<SUN>> host_fluid_;  // rank 0's
   std::string write_error_;                                  // rank 0's first failed write

@@ -553,6 +553,21 @@ static_assert(
   ddb::ZeitlinFixedForcingFlow fixed(n, W);
   ddb::ZeitlinDampingAndForcing damping_and_forcing{viscosity, forcing, W};
   use(ddb::zeitlinExactFlows(hamiltonian, damping_and_forcing).size());
+  // The order for any placement of the states, given how to make each flow there.
+  struct MakeFlows {
+    Eigen::Index n;
+    std::unique_ptr<ddb::ExactFlow<ddb::SUN>> viscous(const ddb::ZeitlinViscosity& v) const {
+      return std::make_unique<ddb::ZeitlinViscousFlow>(n, v);
+    }
+    std::unique_ptr<ddb::ExactFlow<ddb::SUN>> stochastic(
+        const ddb::ZeitlinStochasticForcing& f) const {
+      return std::make_unique<ddb::ZeitlinStochasticForcingFlow>(n, f);
+    }
+    std::unique_ptr<ddb::ExactFlow<ddb::SUN>> fixed(const Eigen::MatrixXcd& phi) const {
+      return std::make_unique<ddb::ZeitlinFixedForcingFlow>(n, phi);
+    }
+  };
+  use(ddb::zeitlinExactFlowsBy(MakeFlows{n}, damping_and_forcing).size());
   fixed.advance(state, 0.01);
   // The field's diagnostics.
   const ddb::SphericalHarmonicBasis basis(hamiltonian.laplacian());

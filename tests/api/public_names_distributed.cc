@@ -6,6 +6,7 @@
 #include <ddb/distributed/block_cyclic_layout.h>
 #include <ddb/distributed/distributed_backend.h>
 #include <ddb/distributed/distributed_matrix.h>
+#include <ddb/distributed/distributed_zeitlin_exact_flows.h>
 #include <ddb/distributed/distributed_zeitlin_fluid.h>
 #include <ddb/distributed/process_grid.h>
 #include <ddb/groups/sun.h>
@@ -63,6 +64,15 @@ static_assert(std::is_same_v<ddb::DistributedSUN::Algebra<double>, ddb::Distribu
   const Eigen::MatrixXcd final_state = run.current().gather();
   use(gathered, final_state, grid.rank(),
       ddb::MatrixBackend<ddb::DistributedMatrix>::frobeniusNorm(W));
+}
+
+// docs/guide/matrix-groups-and-the-fluid.md: the damping and forcing on MPI ranks.
+[[maybe_unused]] void dampingAndForcingOnRanks(const ddb::BlockCyclicLayout& layout) {
+  ddb::ZeitlinDampingAndForcing d;
+  d.viscosity.viscosity = 1e-3;
+  const auto flows = ddb::distributedZeitlinExactFlows(layout, ddb::ZeitlinPhysics{}, d);
+  ddb::DistributedZeitlinViscousFlow viscous(layout, d.viscosity, 2.0);
+  use(flows.size(), viscous.name());
 }
 
 [[maybe_unused]] void clusterNames() {

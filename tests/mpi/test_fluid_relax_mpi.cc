@@ -311,6 +311,51 @@ TEST(FluidRelaxMpi, RotatingQuasiGeostrophicRunWritesWhatTheSerialAppWrites) {
   fs::remove_all(mpi);
 }
 
+// A fixed forcing's file at N: Φ = X3 + a multiple of T_21's matrix (traceless skew-Hermitian).
+fs::path writeFixedForcing(const std::string& name, int n) {
+  const fs::path phi = freshFolder("ddb_mpi_", name) / "phi.csv";
+  fs::create_directories(phi.parent_path());
+  Eigen::MatrixXcd matrix = ddb::zeitlinX3(n);
+  for (int k = 0; k + 1 < n; ++k) {
+    matrix(k, k + 1) += std::complex<double>(0.3, 0.1 * k);
+    matrix(k + 1, k) -= std::conj(std::complex<double>(0.3, 0.1 * k));
+  }
+  writeMatrix(phi, matrix);
+  return phi;
+}
+
+// Viscosity, hyperviscosity, drag, the stochastic and the fixed forcing on a rotating sphere, on
+// 1, 2 and 4 ranks (blocks that do not divide N): the serial app's files. The damping leaves the
+// orbit, so the drift is compared as a method's that does not keep the Casimirs.
+TEST(FluidRelaxMpi, DampedAndForcedRunWritesWhatTheSerialAppWrites) {
+  const int n = 33;
+  const fs::path phi = writeFixedForcing("phi_damped", n);
+  const fs::path serial = freshFolder("ddb_mpi_serial_", "damped");
+  const std::string common =
+      "--n 33 --alpha 0.5 --rotation 2 --viscosity 1e-3 "
+      "--hyperviscosity-order 2 --drag 0.05 --forcing-band 6:2 "
+      "--forcing-rate 1e-3 --forcing-seed 9 --forcing-file " +
+      phi.string() + " --steps 40 --every 10 --quiet";
+  const AppResult s = runProgram(FLUID_RELAX_PATH, common + " --out " + serial.string());
+  ASSERT_EQ(s.status, 0) << s.output;
+  for (const auto& [ranks, layout] :
+       std::vector<std::pair<int, std::string>>{{1, ""}, {2, " --block 5"}, {4, " --block 4"}}) {
+    const fs::path mpi = freshFolder("ddb_mpi_", "damped");
+    const AppResult m = runMpi(ranks, common + layout + " --out " + mpi.string());
+    ASSERT_EQ(m.status, 0) << m.output;
+    EXPECT_LT(matrixDistance(readCsv(mpi / "W_final.csv", nullptr),
+                             readCsv(serial / "W_final.csv", nullptr)),
+              1e-13)
+        << ranks << " ranks";
+    expectSameHistory(mpi, serial, false);
+    expectSameSummary(mpi, serial, ranks, 0, false);
+    EXPECT_EQ(readJson(mpi / "summary.json")["forcing_seed"], 9);
+    fs::remove_all(mpi);
+  }
+  fs::remove_all(serial);
+  fs::remove_all(phi.parent_path());
+}
+
 TEST(FluidRelaxMpi, StopsWhenSteadyAtTheSerialAppsStep) {
   const fs::path serial = freshFolder("ddb_mpi_serial_", "steady");
   const fs::path mpi = freshFolder("ddb_mpi_", "steady");
@@ -373,10 +418,6 @@ INSTANTIATE_TEST_SUITE_P(RanksCaps, FluidRelaxMpiAdaptiveTest,
 // flags this app does not have.
 TEST(FluidRelaxMpi, RefusesBadInputOnEveryRankOnce) {
   const fs::path out = freshFolder("ddb_mpi_", "bad");
-  // A fixed forcing's file, valid at the default N = 32: Φ = X3.
-  const fs::path phi = freshFolder("ddb_mpi_", "phi") / "phi.csv";
-  fs::create_directories(phi.parent_path());
-  writeMatrix(phi, ddb::zeitlinX3(32));
   // fluid-relax's own checks are tested on fluid-relax (test_bad_inputs): here one of them
   // with this app's bound on N (the group's, not fluid-relax's 1024), a parse error, a method
   // fluid-relax does not offer (reference), and this app's own.
@@ -392,13 +433,9 @@ TEST(FluidRelaxMpi, RefusesBadInputOnEveryRankOnce) {
       {"--steps 10 --method reference", "--method"},
       {"--steps 10 --adaptive --alpha 0", "--adaptive"},
       {"--steps 10 --resume somewhere", "--resume"},
-      // Viscosity, drag and forcing run on the CPU only so far (fluid_relax/fluid_run.h,
-      // withExactFlows()).
-      {"--steps 10 --viscosity 1e-3",
-       "--viscosity = 1e-3: viscosity, drag and forcing run on the CPU"},
-      {"--steps 10 --drag 0.1", "--drag = 0.1"},
-      {"--steps 10 --forcing-band 3:1 --forcing-rate 1e-3", "--forcing-rate = 1e-3"},
-      {"--steps 10 --forcing-file " + phi.string(), "--forcing-file = " + phi.string()},
+      // fluid-relax's checks of the damping and forcing flags, on every rank.
+      {"--steps 10 --viscosity -1e-3", "--viscosity = -1e-3"},
+      {"--steps 10 --forcing-band 40:1 --forcing-rate 1e-3", "--forcing-band = 40:1"},
   };
   for (const auto& [arguments, flag] : cases) {
     const AppResult r = runMpi(2, arguments + " --out " + out.string());
@@ -600,6 +637,17 @@ TEST(FluidRelaxMpiCheckpoint, ResumedRunOnAGridOfBlocksContinuesToTheBit) {
 // uninterrupted run's steps.
 TEST(FluidRelaxMpiCheckpoint, ResumedAdaptiveRunContinuesToTheBit) {
   expectResumedRunToTheBit(2, 16, "", " --adaptive --h 0.5");
+}
+
+// A damped and forced run (the random stream's position and Φ in the record) on a 2×2 grid of
+// blocks that do not divide N resumes to the bit.
+TEST(FluidRelaxMpiCheckpoint, ResumedDampedAndForcedRunContinuesToTheBit) {
+  const fs::path phi = writeFixedForcing("phi_resumed", 33);
+  expectResumedRunToTheBit(4, 33, " --block 5",
+                           " --rotation 1 --viscosity 1e-3 --drag 0.05 --forcing-band 5:2 "
+                           "--forcing-rate 1e-3 --forcing-file " +
+                               phi.string());
+  fs::remove_all(phi.parent_path());
 }
 
 // A Newton search with α > 0 (its trust radius is in the record; its direction, to lower the

@@ -64,6 +64,48 @@ TEST(ZeitlinViscosity, TheDegreeFunctionScalesEveryCoefficient) {
   }
 }
 
+// A share of the diagonals at a time (a rank's, DistributedZeitlinViscousFlow): each diagonal m
+// and −m taken out as a vector, alone or as a pair, through the basis and through an operator that
+// keeps only some blocks, against the coefficients scaled one by one.
+TEST(ZeitlinViscosity, TheDegreeFunctionActsOnEachDiagonalAlone) {
+  for (const Eigen::Index n : {2, 7, 16}) {
+    const SphericalHarmonicBasis basis{HoppeYauLaplacian(n)};
+    const Matrix W = randomVorticity(n, 7);
+    const Eigen::VectorXd factors = Eigen::VectorXd::LinSpaced(n, 0.2, 1.3);
+    Eigen::VectorXd omega = basis.coefficients(W);
+    for (Eigen::Index l = 0; l < n; ++l) {
+      for (Eigen::Index m = -l; m <= l; ++m) {
+        omega(SphericalHarmonicBasis::index(l, m)) *= factors(l);
+      }
+    }
+    const Matrix expected = basis.matrix(omega);
+    // The odd blocks kept, the even ones through the basis.
+    std::vector<Eigen::Index> odd;
+    for (Eigen::Index m = 1; m < n; m += 2) odd.push_back(m);
+    SphericalHarmonicDegreeOperator kept(basis, factors, odd);
+    SphericalHarmonicBasis::Workspace w(n);
+    Matrix filtered = W;
+    for (Eigen::Index m = 0; m < n; ++m) {
+      Eigen::VectorXcd plus = filtered.diagonal(m), minus = filtered.diagonal(-m);
+      // Diagonals 1 and −1 one at a time, the others as pairs (the main diagonal alone).
+      const bool pair = m > 1;
+      if (kept.kept(m)) {
+        kept.applyToDiagonals(m, plus.data(), pair ? minus.data() : nullptr);
+        if (m == 1) kept.applyToDiagonals(m, minus.data());
+      } else {
+        basis.applyDegreeFunctionToDiagonals(factors, m, plus.data(), pair ? minus.data() : nullptr,
+                                             w);
+      }
+      filtered.diagonal(m) = plus;
+      if (m > 0) filtered.diagonal(-m) = minus;
+    }
+    EXPECT_LT((filtered - expected).norm(), 1e-13 * W.norm()) << "N = " << n;
+    EXPECT_FALSE(kept.kept(0));
+    EXPECT_THROW(kept.applyToDiagonals(0, filtered.data()), InvalidArgument);
+    EXPECT_THROW(SphericalHarmonicDegreeOperator(basis, factors, {n}), InvalidArgument);
+  }
+}
+
 // f_l = −l(l + 1) is the Laplacian itself: the kept operator against HoppeYauLaplacian::apply's
 // three-term formula (no eigenvector in it), at odd and even N (blocks of every length).
 TEST(ZeitlinViscosity, TheKeptDegreeOperatorOfMinusLTimesLPlusOneIsTheLaplacian) {
