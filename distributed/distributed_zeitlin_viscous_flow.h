@@ -1,9 +1,10 @@
 // The viscous flow of Zeitlin's fluid (ZeitlinViscousFlow, systems/zeitlin_viscosity.h) on a
-// block-cyclic state (docs/design/distributed.md, "Viscosity and forcing"): f(−Δ) maps each
-// diagonal of W to itself, so the state's diagonals go to their owners as for the Poisson solve
-// (DiagonalRedistribution), each rank applies exp(h L) to its own, and they come back. Each rank
-// keeps the operator of its diagonals' blocks only (SphericalHarmonicDegreeOperator), about
-// 2/P of the serial flow's N³/6 numbers.
+// block-cyclic state (docs/design/distributed.md, "Viscosity and forcing"), exact or by the
+// implicit step (ZeitlinViscousScheme): either maps each diagonal of W to itself, so the state's
+// diagonals go to their owners as for the Poisson solve (DiagonalRedistribution), each rank steps
+// its own, and they come back. Each rank keeps the operator (SphericalHarmonicDegreeOperator), or
+// the implicit step's factors (ZeitlinImplicitViscousStep), of its diagonals' blocks only: about
+// 2/P of the serial flow's.
 #pragma once
 
 #include <ddb/core/exact_flow.h>
@@ -12,6 +13,7 @@
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/spherical_harmonic_degree_operator.h>
 #include <ddb/systems/zeitlin_hamiltonian.h>
+#include <ddb/systems/zeitlin_implicit_viscous_step.h>
 #include <ddb/systems/zeitlin_viscosity.h>
 
 #include <Eigen/Core>
@@ -54,6 +56,11 @@ class DistributedZeitlinViscousFlow final : public ExactFlow<DistributedSUN> {
       if (block == nullptr) block = &blocks_.emplace_back(Block{std::abs(m), -1, -1});
       (m >= 0 ? block->plus : block->minus) = redistribution_.offsets()[d];
     }
+    for (const Block& b : blocks_) kept_.push_back(b.m);
+    if (viscosity.scheme == ZeitlinViscousScheme::kImplicit) {
+      implicit_.emplace(n_, viscosity.viscosity, viscosity.order, viscosity.drag, kept_);
+      return;
+    }
     double bytes = 0;
     for (const Block& b : blocks_) bytes += SphericalHarmonicDegreeOperator::blockBytes(n_, b.m);
     keeps_operator_ = bytes <= ZeitlinViscousFlow::kOperatorBytes;
@@ -66,13 +73,12 @@ class DistributedZeitlinViscousFlow final : public ExactFlow<DistributedSUN> {
     if (h != h_) {
       factors_ = (-h * rates_.array()).exp().matrix();
       h_ = h;
+      if (implicit_) implicit_->setStep(h);
       if (keeps_operator_) {
         if (operator_) {
           operator_->setFactors(basis_, factors_);
         } else {
-          std::vector<Eigen::Index> kept;
-          for (const Block& b : blocks_) kept.push_back(b.m);
-          operator_.emplace(basis_, factors_, kept);
+          operator_.emplace(basis_, factors_, kept_);
         }
       }
     }
@@ -83,7 +89,9 @@ class DistributedZeitlinViscousFlow final : public ExactFlow<DistributedSUN> {
       std::complex<double>* first = diagonals_.data() + (b.plus >= 0 ? b.plus : b.minus);
       std::complex<double>* second =
           b.plus >= 0 && b.minus >= 0 ? diagonals_.data() + b.minus : nullptr;
-      if (operator_) {
+      if (implicit_) {
+        implicit_->applyToDiagonals(b.m, first, second);
+      } else if (operator_) {
         operator_->applyToDiagonals(b.m, first, second);
       } else {
         basis_.applyDegreeFunctionToDiagonals(factors_, b.m, first, second, workspace_);
@@ -104,8 +112,10 @@ class DistributedZeitlinViscousFlow final : public ExactFlow<DistributedSUN> {
   SphericalHarmonicBasis basis_;
   SphericalHarmonicBasis::Workspace workspace_;  // the flow allocates nothing once built
   std::vector<Block> blocks_;
-  bool keeps_operator_ = false;  // whether its blocks' operator fits in kOperatorBytes
+  std::vector<Eigen::Index> kept_;  // blocks_' m, in order
+  bool keeps_operator_ = false;     // whether its blocks' operator fits in kOperatorBytes
   std::optional<SphericalHarmonicDegreeOperator> operator_;  // exp(h_ L) on blocks_
+  std::optional<ZeitlinImplicitViscousStep> implicit_;       // the implicit scheme's, on blocks_
   Eigen::VectorXd rates_, factors_;  // per degree l: the decay rate, exp(−rate h) for h_
   double h_ = std::nan("");
   Eigen::VectorXcd planetary_;      // F's main diagonal, where this rank owns it and Ω ≠ 0

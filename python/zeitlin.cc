@@ -197,7 +197,7 @@ void bindZeitlin(py::module_& m) {
       [](py::handle n_object, py::handle alpha, py::handle rotation, py::handle deformation_radius,
          py::handle viscosity, py::handle hyperviscosity_order, py::handle drag,
          py::handle forcing_band, py::handle forcing_rate, py::handle forcing_seed,
-         py::handle forcing) {
+         py::handle forcing, py::handle viscous_scheme) {
         const auto n = integerArgument<Eigen::Index>("N", n_object, 2, SUN::kMaxN);
         ZeitlinPhysics physics;
         physics.rotation = realArgument("rotation", rotation);
@@ -209,6 +209,14 @@ void bindZeitlin(py::module_& m) {
         flows.viscosity.order =
             integerArgument<int>("hyperviscosity_order", hyperviscosity_order, 1, 16);
         flows.viscosity.drag = realArgument("drag", drag);
+        const std::string scheme =
+            py::isinstance<py::str>(viscous_scheme) ? viscous_scheme.cast<std::string>() : "";
+        if (scheme != "exact" && scheme != "implicit") {
+          throwInvalid("viscous_scheme", std::string(py::repr(viscous_scheme)),
+                       "must be 'exact' or 'implicit'");
+        }
+        flows.viscosity.scheme =
+            scheme == "implicit" ? ZeitlinViscousScheme::kImplicit : ZeitlinViscousScheme::kExact;
         if (!forcing_band.is_none()) {
           const auto band = vectorArgument("forcing_band", forcing_band, 2,
                                            "a pair (L, D) of whole numbers: degrees L-D..L+D");
@@ -246,6 +254,7 @@ void bindZeitlin(py::module_& m) {
       py::arg("hyperviscosity_order") = 1, py::arg("drag") = 0.0,
       py::arg("forcing_band") = py::none(), py::arg("forcing_rate") = 0.0,
       py::arg("forcing_seed") = 1, py::arg("forcing") = py::none(),
+      py::arg("viscous_scheme") = "exact",
       "Zeitlin's fluid at resolution N (2 <= N <= 4096) with double-bracket coefficient "
       "alpha (any finite sign; alpha > 0 dissipates energy), on a sphere rotating at "
       "`rotation` (Omega; its states are absolute vorticities Q = W + F, "
@@ -256,7 +265,9 @@ void bindZeitlin(py::module_& m) {
       "L-D..L+D of `forcing_band` (L, D) at the mean energy injection rate `forcing_rate` "
       "epsilon > 0 with the random stream `forcing_seed`, and by a fixed `forcing` Phi (W' gains "
       "Phi; complex skew-Hermitian traceless N x N): exact flows Strang-split around "
-      "integrate()'s method (each integrate() call starts the stream anew; "
+      "integrate()'s method (the viscous one exact, or with `viscous_scheme` 'implicit' the "
+      "second-order L-stable step (I + hA + (hA)^2/2)^-1, A = nu (-Laplacian)^p + gamma, far "
+      "cheaper at large N; each integrate() call starts the stream anew; "
       "docs/guide/matrix-groups-and-the-fluid.md).");
   m.def(
       "vorticity_on_grid",

@@ -19,6 +19,7 @@
 #include <ddb/systems/hoppe_yau_laplacian.h>
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -74,6 +75,12 @@ class SphericalHarmonicBasis {
     Eigen::MatrixXd parts, projected;
   };
   static Eigen::Index index(Eigen::Index l, Eigen::Index m) { return l * l + l + m; }
+  /// The blocks m = 0..N − 1, each serving diagonals m and −m: what an operator on all of W keeps.
+  static std::vector<Eigen::Index> allBlocks(Eigen::Index n) {
+    std::vector<Eigen::Index> blocks(static_cast<std::size_t>(std::max<Eigen::Index>(n, 0)));
+    for (std::size_t m = 0; m < blocks.size(); ++m) blocks[m] = Eigen::Index(m);
+    return blocks;
+  }
 
   /// T_lm as an N×N complex matrix.
   Eigen::MatrixXcd element(Eigen::Index l, Eigen::Index m) const {
@@ -274,6 +281,9 @@ class SphericalHarmonicBasis {
     // temporary by colwise() (Eigen's Replicate), an allocation per diagonal.
     auto f = w.factors.head(length);
     f = factors.tail(length).array() / double(n_);
+    // Subnormal factors flushed to zero (each product with one costs a hundred normal ones;
+    // SphericalHarmonicDegreeOperator::setFactors).
+    f = (f.array().abs() < std::numeric_limits<double>::min()).select(0.0, f);
     auto parts = w.parts.topLeftCorner(length, columns);
     auto projected = w.projected.topLeftCorner(length, columns);
     for (Eigen::Index c = 0; c < columns; c += 2) {

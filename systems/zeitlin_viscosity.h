@@ -3,9 +3,11 @@
 // on the relative vorticity W = Q − F (the planetary vorticity F is the frame's, not the flow's,
 // and is not damped). Each T_lm is an eigenmatrix, of rate −(ν (l(l + 1))^p + γ), so the exact
 // flow over h multiplies ω_lm by exp(−(ν (l(l + 1))^p + γ) h) (SphericalHarmonicBasis::
-// applyDegreeFunction). With the Lie–Poisson part by any method of the table it is a
-// StrangSplitting (integrators/methods/strang_splitting.h); it leaves the coadjoint orbit by
-// design, and combines with the double bracket (α) freely.
+// applyDegreeFunction); the implicit scheme by R(z) = 1/(1 + z + z²/2) of z = (ν (l(l + 1))^p + γ)
+// h instead, through a banded solve per diagonal (systems/zeitlin_implicit_viscous_step.h). With
+// the Lie–Poisson part by any method of the table it is a StrangSplitting
+// (integrators/methods/strang_splitting.h); it leaves the coadjoint orbit by design, and combines
+// with the double bracket (α) freely.
 #pragma once
 
 #include <ddb/core/errors.h>
@@ -14,20 +16,28 @@
 #include <ddb/systems/hoppe_yau_laplacian.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/spherical_harmonic_degree_operator.h>
+#include <ddb/systems/zeitlin_implicit_viscous_step.h>
 
 #include <Eigen/Core>
 #include <cmath>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace ddb {
 
-/// ν, p and γ of Ẇ = ν (−1)^{p+1} Δ^p W − γ W.
+/// How the viscous flow steps: exactly (exp(−hA) in the spherical harmonics, kept as an operator
+/// of N³/6 numbers), or by the implicit step (I + hA + (hA)²/2)⁻¹, second order and L-stable, a
+/// banded solve per diagonal (ZeitlinImplicitViscousStep): O(N² p) numbers and work.
+enum class ZeitlinViscousScheme { kExact, kImplicit };
+
+/// ν, p and γ of Ẇ = ν (−1)^{p+1} Δ^p W − γ W, and the scheme of its flow.
 struct ZeitlinViscosity {
   double viscosity = 0.0;  ///< ν >= 0
   int order = 1;           ///< p >= 1: 1 is Laplacian viscosity, p > 1 hyperviscosity
   double drag = 0.0;       ///< γ >= 0, linear (Rayleigh) drag
+  ZeitlinViscousScheme scheme = ZeitlinViscousScheme::kExact;
 
   /// Throws InvalidArgument naming the parameter unless ν, γ are finite and >= 0 and p >= 1.
   void validate() const {
@@ -48,9 +58,9 @@ struct ZeitlinViscosity {
   }
 };
 
-/// The exact flow of ZeitlinViscosity at resolution N, of the states Q = W + F of a fluid whose
-/// planetary vorticity is `planetary` (ZeitlinHamiltonian::planetaryVorticity; zero or empty on
-/// a resting sphere).
+/// The flow of ZeitlinViscosity at resolution N (exact, or its implicit step by
+/// viscosity.scheme), of the states Q = W + F of a fluid whose planetary vorticity is `planetary`
+/// (ZeitlinHamiltonian::planetaryVorticity; zero or empty on a resting sphere).
 class ZeitlinViscousFlow final : public ExactFlow<SUN> {
  public:
   ZeitlinViscousFlow(Eigen::Index n, const ZeitlinViscosity& viscosity,
@@ -61,9 +71,14 @@ class ZeitlinViscousFlow final : public ExactFlow<SUN> {
         factors_(n),
         planetary_(std::move(planetary)),
         rotating_(planetary_.size() > 0 && !planetary_.isZero(0.0)),
-        keeps_operator_(SphericalHarmonicDegreeOperator::bytes(n) <= kOperatorBytes) {
+        keeps_operator_(SphericalHarmonicDegreeOperator::bytes(n) <= kOperatorBytes),
+        diagonals_(viscosity.scheme == ZeitlinViscousScheme::kImplicit ? n * (n + 1) / 2 : 0) {
     viscosity.validate();
     for (Eigen::Index l = 0; l < n; ++l) rates_(l) = viscosity.rate(l);
+    if (viscosity.scheme == ZeitlinViscousScheme::kImplicit) {
+      implicit_.emplace(n, viscosity.viscosity, viscosity.order, viscosity.drag,
+                        SphericalHarmonicBasis::allBlocks(n));
+    }
   }
 
   /// The memory the flow may keep its operator in (SphericalHarmonicDegreeOperator::bytes:
@@ -74,8 +89,12 @@ class ZeitlinViscousFlow final : public ExactFlow<SUN> {
 
   std::string name() const override { return "viscosity"; }
 
-  /// Q ← F + exp(h L)(Q − F), L = ν (−1)^{p+1} Δ^p − γ.
+  /// Q ← F + exp(h L)(Q − F), L = ν (−1)^{p+1} Δ^p − γ (the implicit step: F + R(−hL)(Q − F)).
   void advance(Eigen::MatrixXcd& Q, double h) override {
+    if (implicit_) {
+      advanceImplicitly(Q, h);
+      return;
+    }
     if (h != h_) {
       factors_ = (-h * rates_.array()).exp().matrix();
       h_ = h;
@@ -99,6 +118,33 @@ class ZeitlinViscousFlow final : public ExactFlow<SUN> {
   }
 
  private:
+  // Each diagonal of Q − F through the implicit step. Q − F is skew-Hermitian and the step real
+  // and alike on diagonals m and −m, so diagonal m's result is −conj of −m's: the lower diagonals
+  // alone are solved, and the upper triangle is made from them (exactly skew-Hermitian). The
+  // diagonals are taken out and put back walking Q's columns in order (a diagonal read along
+  // itself touches one cache line per entry): entry k of diagonal −a at diagonals_[start(a) + k],
+  // start(a) = Σ_{b < a} (N − b).
+  void advanceImplicitly(Eigen::MatrixXcd& Q, double h) {
+    if (h != h_) {
+      implicit_->setStep(h);
+      h_ = h;
+    }
+    const Eigen::Index n = Q.rows();
+    if (rotating_) Q -= planetary_;
+    const auto start = [n](Eigen::Index a) { return a * n - a * (a - 1) / 2; };
+    for (Eigen::Index j = 0; j < n; ++j) {
+      for (Eigen::Index i = j; i < n; ++i) diagonals_(start(i - j) + j) = Q(i, j);
+    }
+    for (Eigen::Index a = 0; a < n; ++a) {
+      implicit_->applyToDiagonals(a, diagonals_.data() + start(a));
+    }
+    for (Eigen::Index j = 0; j < n; ++j) {
+      for (Eigen::Index i = j; i < n; ++i) Q(i, j) = diagonals_(start(i - j) + j);
+    }
+    Q.triangularView<Eigen::StrictlyUpper>() = -Q.adjoint();
+    if (rotating_) Q += planetary_;
+  }
+
   SphericalHarmonicBasis basis_;
   SphericalHarmonicBasis::Workspace workspace_;  // the flow allocates nothing once built
   std::optional<SphericalHarmonicDegreeOperator> operator_;  // exp(h_ L), within kOperatorBytes
@@ -107,6 +153,8 @@ class ZeitlinViscousFlow final : public ExactFlow<SUN> {
   Eigen::MatrixXcd planetary_;
   bool rotating_;
   bool keeps_operator_;  // whether operator_ fits in kOperatorBytes at this N
+  std::optional<ZeitlinImplicitViscousStep> implicit_;  // the implicit scheme's
+  Eigen::VectorXcd diagonals_;  // Q − F's diagonals, for the implicit step
 };
 
 }  // namespace ddb

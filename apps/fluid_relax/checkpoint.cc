@@ -17,20 +17,24 @@ namespace ddb::fluid {
 
 namespace {
 
-// The layout's version: a checkpoint of another layout is refused, not misread. Layout 3
-// added history.csv's hash, layout 4 the fluid's physics (--rotation, --deformation-radius),
-// layout 5 its damping (--viscosity, --hyperviscosity-order, --drag) and the field diagnostics of
-// the files (history.csv's gamma, fluid.hdf5's spectra, scale decomposition and grid), layout 6
-// its forcing (--forcing-band, --forcing-rate, --forcing-seed; the random stream's position is in
-// the method's record, ExactFlow::save), layout 7 a fixed forcing (--forcing-file and its Φ); a
-// checkpoint of layout 2 to 6 is still read (without the hash, on a resting sphere, undamped,
-// unforced, files without the diagnostics), so that a run begun by an earlier build resumes.
-constexpr std::int32_t kLayout = 7;
-constexpr std::int32_t kLayoutWithoutFixedForcing = 6;
-constexpr std::int32_t kLayoutWithoutForcing = 5;
-constexpr std::int32_t kLayoutWithoutDamping = 4;
-constexpr std::int32_t kLayoutWithoutPhysics = 3;
-constexpr std::int32_t kLayoutWithoutDigest = 2;
+// The layout's version: a checkpoint of another layout is refused, not misread. Each layout adds
+// entries to the one before: layout 3 history.csv's hash, layout 4 the fluid's physics
+// (--rotation, --deformation-radius), layout 5 its damping (--viscosity, --hyperviscosity-order,
+// --drag) and the field diagnostics of the files (history.csv's gamma, fluid.hdf5's spectra, scale
+// decomposition and grid), layout 6 its forcing (--forcing-band, --forcing-rate, --forcing-seed;
+// the random stream's position is in the method's record, ExactFlow::save), layout 7 a fixed
+// forcing (--forcing-file and its Φ), layout 8 the viscous flow's scheme (--viscous-scheme). A
+// checkpoint of layout 2 to 7 is still read (without what came later: no hash, a resting sphere,
+// undamped, unforced, exact, files without the diagnostics), so that a run begun by an earlier
+// build resumes.
+constexpr std::int32_t kLayout = 8;
+constexpr std::int32_t kOldestLayout = 2;
+constexpr std::int32_t kLayoutWithDigest = 3;
+constexpr std::int32_t kLayoutWithPhysics = 4;
+constexpr std::int32_t kLayoutWithDamping = 5;
+constexpr std::int32_t kLayoutWithForcing = 6;
+constexpr std::int32_t kLayoutWithFixedForcing = 7;
+constexpr std::int32_t kLayoutWithViscousScheme = 8;
 constexpr const char* kTag = "fluid-relax checkpoint";
 
 void putOptions(BinaryRecordWriter& out, const Options& o) {
@@ -56,32 +60,11 @@ void putOptions(BinaryRecordWriter& out, const Options& o) {
   out.put(o.forcing_rate);
   out.put(o.forcing_seed);
   out.put(o.forcing_file);
+  out.put(o.viscous_scheme);
 }
 
-/// Which of the physics' entries a record holds: none (layouts 2, 3), the rotation and the
-/// deformation radius (layout 4), those and the damping (layout 5), those and the stochastic
-/// forcing (layout 6), or those and the fixed forcing (layout 7, the run definition).
-enum class PhysicsRecord { kNone, kWithoutDamping, kWithoutForcing, kWithoutFixedForcing, kAll };
-
-PhysicsRecord physicsRecordOf(std::int32_t layout) {
-  if (layout == kLayoutWithoutDamping) return PhysicsRecord::kWithoutDamping;
-  if (layout == kLayoutWithoutForcing) return PhysicsRecord::kWithoutForcing;
-  if (layout == kLayoutWithoutFixedForcing) return PhysicsRecord::kWithoutFixedForcing;
-  return layout == kLayout ? PhysicsRecord::kAll : PhysicsRecord::kNone;
-}
-
-/// Whether a record of `physics` holds the damping.
-bool holdsDamping(PhysicsRecord physics) {
-  return physics == PhysicsRecord::kWithoutForcing ||
-         physics == PhysicsRecord::kWithoutFixedForcing || physics == PhysicsRecord::kAll;
-}
-
-/// Whether a record of `physics` holds the stochastic forcing.
-bool holdsForcing(PhysicsRecord physics) {
-  return physics == PhysicsRecord::kWithoutFixedForcing || physics == PhysicsRecord::kAll;
-}
-
-void getOptions(BinaryRecordReader& in, Options& o, PhysicsRecord physics) {
+/// The options of a record of `layout` (those it lacks keep their defaults).
+void getOptions(BinaryRecordReader& in, Options& o, std::int32_t layout) {
   in.expectTag("options");
   in.get(o.n);
   in.get(o.steps);
@@ -95,23 +78,25 @@ void getOptions(BinaryRecordReader& in, Options& o, PhysicsRecord physics) {
   in.get(o.newton);
   in.get(o.h5);
   in.get(o.animate);
-  if (physics != PhysicsRecord::kNone) {
+  if (layout >= kLayoutWithPhysics) {
     in.get(o.rotation);
     in.get(o.deformation_radius);
   }
-  if (holdsDamping(physics)) {
+  if (layout >= kLayoutWithDamping) {
     in.get(o.viscosity);
     in.get(o.hyperviscosity_order);
     in.get(o.drag);
   }
-  if (holdsForcing(physics)) {
+  if (layout >= kLayoutWithForcing) {
     in.get(o.forcing_band);
     in.get(o.forcing_rate);
     in.get(o.forcing_seed);
   }
-  if (physics == PhysicsRecord::kAll) in.get(o.forcing_file);
+  if (layout >= kLayoutWithFixedForcing) in.get(o.forcing_file);
+  if (layout >= kLayoutWithViscousScheme) in.get(o.viscous_scheme);
   // What a command line could not have given (a record altered and its checksum made anew).
-  if (o.every < 1 || o.steps < 0 || o.steps > kMaxSteps) {
+  if (o.every < 1 || o.steps < 0 || o.steps > kMaxSteps ||
+      (o.viscous_scheme != "exact" && o.viscous_scheme != "implicit")) {
     throw CorruptRecord("options out of their domain");
   }
 }
@@ -157,9 +142,10 @@ void putSettingsBesidesW0(BinaryRecordWriter& out, const Settings& s) {
   out.put(s.forcing.rate);
   out.put(s.forcing.seed);
   out.put(s.fixed_forcing);
+  out.put(static_cast<std::int32_t>(s.viscosity.scheme));
 }
 
-void getSettingsBesidesW0(BinaryRecordReader& in, Settings& s, PhysicsRecord physics) {
+void getSettingsBesidesW0(BinaryRecordReader& in, Settings& s, std::int32_t layout) {
   in.get(s.alpha);
   in.get(s.h);
   in.get(s.default_h);
@@ -171,22 +157,26 @@ void getSettingsBesidesW0(BinaryRecordReader& in, Settings& s, PhysicsRecord phy
   in.get(s.relax.control.tolerance);
   in.get(s.relax.newton);
   in.get(s.init);
-  if (physics != PhysicsRecord::kNone) {
+  if (layout >= kLayoutWithPhysics) {
     in.get(s.physics.rotation);
     in.get(s.physics.deformation_radius);
   }
-  if (holdsDamping(physics)) {
+  if (layout >= kLayoutWithDamping) {
     in.get(s.viscosity.viscosity);
     s.viscosity.order = in.get<std::int32_t>();
     in.get(s.viscosity.drag);
   }
-  if (holdsForcing(physics)) {
+  if (layout >= kLayoutWithForcing) {
     s.forcing.band_centre = in.get<std::int32_t>();
     s.forcing.band_half_width = in.get<std::int32_t>();
     in.get(s.forcing.rate);
     in.get(s.forcing.seed);
   }
-  if (physics == PhysicsRecord::kAll) in.get(s.fixed_forcing);
+  if (layout >= kLayoutWithFixedForcing) in.get(s.fixed_forcing);
+  std::int32_t scheme = 0;
+  if (layout >= kLayoutWithViscousScheme) in.get(scheme);
+  if (scheme != 0 && scheme != 1) throw CorruptRecord("settings out of their domain");
+  s.viscosity.scheme = scheme == 1 ? ZeitlinViscousScheme::kImplicit : ZeitlinViscousScheme::kExact;
   const ZeitlinViscosity& v = s.viscosity;
   const ZeitlinStochasticForcing& f = s.forcing;
   const bool in_domain =
@@ -207,10 +197,10 @@ void putSettings(BinaryRecordWriter& out, const Settings& s) {
   putSettingsBesidesW0(out, s);
 }
 
-void getSettings(BinaryRecordReader& in, Settings& s, PhysicsRecord physics) {
+void getSettings(BinaryRecordReader& in, Settings& s, std::int32_t layout) {
   in.expectTag("settings");
   in.get(s.W0);
-  getSettingsBesidesW0(in, s, physics);
+  getSettingsBesidesW0(in, s, layout);
   if (s.W0.rows() < 2 || s.W0.rows() > SUN::kMaxN || s.W0.rows() != s.W0.cols() ||
       (s.forcing.forces() && !s.forcing.bandFits(s.W0.rows())) ||
       // Φ is 0 x 0 (none) or N x N and finite.
@@ -245,16 +235,13 @@ Checkpoint parseCheckpoint(const std::string& dir, std::string bytes) {
     BinaryRecordReader in = BinaryRecordReader::unseal(std::move(bytes));
     in.expectTag(kTag);
     const auto layout = in.get<std::int32_t>();
-    if (layout != kLayout && layout != kLayoutWithoutFixedForcing &&
-        layout != kLayoutWithoutForcing && layout != kLayoutWithoutDamping &&
-        layout != kLayoutWithoutPhysics && layout != kLayoutWithoutDigest) {
+    if (layout < kOldestLayout || layout > kLayout) {
       throw CorruptRecord("layout " + std::to_string(layout) + ", this build reads " +
                           std::to_string(kLayout));
     }
-    const PhysicsRecord physics = physicsRecordOf(layout);
-    getOptions(in, c.options, physics);
+    getOptions(in, c.options, layout);
     getGivenFlags(in, c.given);
-    getSettings(in, c.settings, physics);
+    getSettings(in, c.settings, layout);
     in.expectTag("tally");
     in.get(c.tally.drift);
     in.get(c.tally.drift_max);
@@ -264,8 +251,9 @@ Checkpoint parseCheckpoint(const std::string& dir, std::string bytes) {
     in.expectTag("files");
     in.get(c.files.history_bytes);
     in.get(c.files.h5_frames);
-    if (layout != kLayoutWithoutDigest) c.files.history_digest = in.get<std::uint64_t>();
-    const auto diagnostics = holdsDamping(physics) ? in.get<std::uint8_t>() : std::uint8_t{0};
+    if (layout >= kLayoutWithDigest) c.files.history_digest = in.get<std::uint64_t>();
+    const auto diagnostics =
+        layout >= kLayoutWithDamping ? in.get<std::uint8_t>() : std::uint8_t{0};
     if (diagnostics > 1) throw CorruptRecord("files out of their domain");
     c.files.field_diagnostics = diagnostics == 1;
     if (c.files.h5_frames < 0 || (c.files.h5_frames > 0 && !(c.options.h5 || c.options.animate))) {
@@ -325,9 +313,9 @@ void putRunDefinition(BinaryRecordWriter& out, const Options& o, const GivenFlag
 }
 
 void getRunDefinition(BinaryRecordReader& in, Options& o, GivenFlags& given, Settings& s) {
-  getOptions(in, o, PhysicsRecord::kAll);
+  getOptions(in, o, kLayout);
   getGivenFlags(in, given);
-  getSettingsBesidesW0(in, s, PhysicsRecord::kAll);
+  getSettingsBesidesW0(in, s, kLayout);
 }
 
 void writeCheckpoint(const std::filesystem::path& out, const BinaryRecordWriter& record) {

@@ -178,7 +178,7 @@ void requireRepresentableForcing(const Options& o, const Settings& s) {
 }
 
 /// --rotation (finite) and --deformation-radius (> 0, finite) into s.physics; --viscosity,
-/// --drag (finite, >= 0) and --hyperviscosity-order into s.viscosity.
+/// --drag (finite, >= 0), --hyperviscosity-order and --viscous-scheme into s.viscosity.
 void readPhysics(const Options& o, Settings& s) {
   s.physics.rotation = app::parseNumber("--rotation", o.rotation, o.rotation);
   if (!o.deformation_radius.empty()) {
@@ -203,6 +203,9 @@ void readPhysics(const Options& o, Settings& s) {
                     "must be in [1, " + std::to_string(kMaxHyperviscosityOrder) + "]");
   }
   s.viscosity.order = static_cast<int>(o.hyperviscosity_order);
+  app::requireChoice("--viscous-scheme", o.viscous_scheme, {"exact", "implicit"});
+  s.viscosity.scheme = o.viscous_scheme == "implicit" ? ZeitlinViscousScheme::kImplicit
+                                                      : ZeitlinViscousScheme::kExact;
   readForcing(o, s);
 }
 
@@ -215,6 +218,7 @@ std::string defaultText(const Checkpoint& c, const std::string& flag) {
   if (flag == "--viscosity") return o.viscosity;
   if (flag == "--drag") return o.drag;
   if (flag == "--hyperviscosity-order") return std::to_string(o.hyperviscosity_order);
+  if (flag == "--viscous-scheme") return o.viscous_scheme;
   if (flag == "--forcing-rate") return o.forcing_rate;
   if (flag == "--forcing-seed") return std::to_string(o.forcing_seed);
   if (flag == "--method") return o.method;

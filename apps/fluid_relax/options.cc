@@ -49,6 +49,11 @@ void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n) {
       ->check(app::fitsIn<long>());
   cli.add_option("--drag", o.drag, "linear drag gamma >= 0: dW/dt gains -gamma W, as --viscosity")
       ->capture_default_str();
+  cli.add_option("--viscous-scheme", o.viscous_scheme,
+                 "how --viscosity and --drag step: exact (exp(-hA) in the spherical harmonics, "
+                 "N^3/6 numbers kept) or implicit ((I + hA + (hA)^2/2)^-1, second order, a banded "
+                 "solve per diagonal: much cheaper at large N)")
+      ->capture_default_str();
   cli.add_option("--forcing-band", o.forcing_band,
                  "L:D, stochastic forcing of the degrees L-D..L+D (within 1..N-1; L alone: D = 0), "
                  "white in time, Strang-split as --viscosity (needs --forcing-rate)");

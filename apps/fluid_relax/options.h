@@ -47,6 +47,8 @@ struct Options {
   /// (ZeitlinViscosity), by Strang splitting around --method.
   std::string viscosity = "0", drag = "0";
   long hyperviscosity_order = 1;
+  /// How the viscous flow steps: "exact" or "implicit" (ZeitlinViscousScheme).
+  std::string viscous_scheme = "exact";
   /// Band-limited white-in-time forcing (ZeitlinStochasticForcing), Strang-split as the damping:
   /// the degrees L - D .. L + D of --forcing-band L:D (empty: none), the mean energy injection rate
   /// and the random stream's seed.

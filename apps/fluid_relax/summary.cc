@@ -49,6 +49,7 @@ app::Json runSummary(const Options& o, const Settings& s, const LiePoissonSystem
   summary["viscosity"] = s.viscosity.viscosity;
   summary["hyperviscosity_order"] = s.viscosity.order;
   summary["drag"] = s.viscosity.drag;
+  summary["viscous_scheme"] = o.viscous_scheme;
   const ZeitlinStochasticForcing& f = s.forcing;
   summary["forcing_band"] =
       f.forces()

@@ -49,6 +49,7 @@
 #include <ddb/systems/zeitlin_exact_flows.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_forcing.h>
+#include <ddb/systems/zeitlin_implicit_viscous_step.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <ddb/systems/zeitlin_spectra.h>
 #include <ddb/systems/zeitlin_step_size.h>
@@ -568,6 +569,14 @@ static_assert(
     }
   };
   use(ddb::zeitlinExactFlowsBy(MakeFlows{n}, damping_and_forcing).size());
+  // The viscous flow's implicit step.
+  ddb::ZeitlinViscosity implicit_viscosity = viscosity;
+  implicit_viscosity.scheme = ddb::ZeitlinViscousScheme::kImplicit;
+  ddb::ZeitlinViscousFlow implicit_flow(n, implicit_viscosity);
+  implicit_flow.advance(state, 0.01);
+  ddb::ZeitlinImplicitViscousStep implicit_step(n, 1e-3, 2, 0.0,
+                                                ddb::SphericalHarmonicBasis::allBlocks(n));
+  implicit_step.setStep(0.01);
   fixed.advance(state, 0.01);
   // The field's diagnostics.
   const ddb::SphericalHarmonicBasis basis(hamiltonian.laplacian());

@@ -204,14 +204,15 @@ TEST_F(RunFolder, ACheckpointThatIsNoRegularFileOrHoldsSizesBeyondItIsRefused) {
   // Fields altered with the checksum recomputed: each is refused before it is used.
   const std::size_t settings = afterTag(bytes, "settings"), options = afterTag(bytes, "options");
   const std::size_t files = afterTag(bytes, "files");
-  // The settings end with the forcing's L, D (32-bit), ε and seed, and the fixed forcing Φ (here
-  // empty: its two 64-bit sizes), before the tag "tally".
+  // The settings end with the forcing's L, D (32-bit), ε and seed, the fixed forcing Φ (here
+  // empty: its two 64-bit sizes) and the viscous scheme (32-bit), before the tag "tally".
   const std::size_t tally = afterTag(bytes, "tally") - sizeof(std::uint64_t) - 5;
   const std::vector<std::pair<std::string, std::string>> edits{
-      {"--forcing-band's D -1", withField<std::int32_t>(bytes, tally - 36, -1)},
-      {"--forcing-rate -1", withField<double>(bytes, tally - 32, -1.0)},
-      {"Phi of 2^61 rows", withField<std::int64_t>(bytes, tally - 16, std::int64_t{1} << 61)},
-      {"Phi of 3 x 0", withField<std::int64_t>(bytes, tally - 16, 3)},
+      {"--forcing-band's D -1", withField<std::int32_t>(bytes, tally - 40, -1)},
+      {"--forcing-rate -1", withField<double>(bytes, tally - 36, -1.0)},
+      {"Phi of 2^61 rows", withField<std::int64_t>(bytes, tally - 20, std::int64_t{1} << 61)},
+      {"Phi of 3 x 0", withField<std::int64_t>(bytes, tally - 20, 3)},
+      {"viscous scheme 2", withField<std::int32_t>(bytes, tally - 4, 2)},
       {"W0 of 2^61 rows", withField<std::int64_t>(bytes, settings, std::int64_t{1} << 61)},
       {"W0 of 2^61 columns", withField<std::int64_t>(bytes, settings + 8, std::int64_t{1} << 61)},
       {"--every -3", withField<long>(bytes, options + 16, -3)},
@@ -247,8 +248,11 @@ std::string withoutLastColumn(const std::string& csv) {
   return out;
 }
 
-TEST_F(RunFolder, CheckpointsOfLayoutsTwoToSixResume) {
-  // Layout 6 (before the fixed forcing): the record without the options' last entry
+TEST_F(RunFolder, CheckpointsOfLayoutsTwoToSevenResume) {
+  // Layout 7 (before the viscous scheme): the record without the options' last entry
+  // (--viscous-scheme "exact", before "given flags": its 8-byte length and 5 bytes) and the
+  // settings' last (the scheme, 32-bit, before "tally"); its files are those of today's layout.
+  // Layout 6 (before the fixed forcing), also: the record without the options' next entry
   // (--forcing-file "", before "given flags": its 8-byte length) and the settings' last (Φ, an
   // empty matrix: its two 8-byte sizes, before "tally"); its files are those of today's layout.
   // Layout 5 (before the forcing), also: the record without the options' three entries
@@ -270,13 +274,17 @@ TEST_F(RunFolder, CheckpointsOfLayoutsTwoToSixResume) {
     return afterTag(bytes, name) - sizeof(std::uint64_t) - name.size();
   };
   const std::string reference_history = withoutLastColumn(readFile(*reference_ / "history.csv"));
-  for (const std::int32_t layout : {6, 5, 4, 3, 2}) {
+  for (const std::int32_t layout : {7, 6, 5, 4, 3, 2}) {
     const fs::path out = finished("layout" + std::to_string(layout), /*h5=*/false);
     const fs::path checkpoint = out / "checkpoint.ddb";
     const std::string sealed = readFile(checkpoint);
     std::string bytes = sealed.substr(0, sealed.size() - 8);
-    bytes.erase(beforeTag(bytes, "tally") - 16, 16);
-    bytes.erase(beforeTag(bytes, "given flags") - 8, 8);
+    bytes.erase(beforeTag(bytes, "tally") - 4, 4);
+    bytes.erase(beforeTag(bytes, "given flags") - 13, 13);
+    if (layout <= 6) {
+      bytes.erase(beforeTag(bytes, "tally") - 16, 16);
+      bytes.erase(beforeTag(bytes, "given flags") - 8, 8);
+    }
     if (layout == 5) {
       bytes.erase(beforeTag(bytes, "tally") - 24, 24);
       bytes.erase(beforeTag(bytes, "given flags") - 25, 25);

@@ -352,6 +352,19 @@ TEST(FluidRelaxMpi, DampedAndForcedRunWritesWhatTheSerialAppWrites) {
     EXPECT_EQ(readJson(mpi / "summary.json")["forcing_seed"], 9);
     fs::remove_all(mpi);
   }
+  // The viscous flow's implicit step, on 2 ranks.
+  const std::string implicit = common + " --viscous-scheme implicit";
+  const AppResult si =
+      runProgram(FLUID_RELAX_PATH, implicit + " --overwrite --out " + serial.string());
+  ASSERT_EQ(si.status, 0) << si.output;
+  const fs::path mpi = freshFolder("ddb_mpi_", "damped_implicit");
+  const AppResult mi = runMpi(2, implicit + " --block 5 --out " + mpi.string());
+  ASSERT_EQ(mi.status, 0) << mi.output;
+  EXPECT_LT(matrixDistance(readCsv(mpi / "W_final.csv", nullptr),
+                           readCsv(serial / "W_final.csv", nullptr)),
+            1e-13);
+  EXPECT_EQ(readJson(mpi / "summary.json")["viscous_scheme"], "implicit");
+  fs::remove_all(mpi);
   fs::remove_all(serial);
   fs::remove_all(phi.parent_path());
 }

@@ -136,6 +136,11 @@ def test_damping_and_forcing_are_exact_flows_split_around_the_method():
     W = fluid.vorticity(coefficients)
     _, states = ddb.integrate(fluid, "rk4", W, h, steps)
     np.testing.assert_allclose(states[-1], np.exp(-1e-3 * 144 * t) * W, atol=1e-12)
+    # The implicit scheme: each half step's factor 1/(1 + z + z^2/2), z = (h/2) nu 144.
+    fluid = ddb.zeitlin(n, 0.0, viscosity=1e-3, hyperviscosity_order=2, viscous_scheme="implicit")
+    _, states = ddb.integrate(fluid, "rk4", W, h, steps)
+    z = 0.5 * h * 1e-3 * 144
+    np.testing.assert_allclose(states[-1], (1 + z + z * z / 2) ** (-2 * steps) * W, atol=1e-12)
     # A fixed forcing Phi of a zonal flow: W0 + t Phi.
     phi = 0.3 * fluid.vorticity(np.eye(1, n * n, 1 * 1 + 1 + 0)[0])
     fluid = ddb.zeitlin(n, 0.5, forcing=phi)
@@ -308,6 +313,7 @@ def test_bad_system_arguments_name_the_parameter():
          "forcing_band = (3.5, 1)"),
         (lambda: ddb.zeitlin(8, 0.5, forcing_band=(3, 1), forcing_rate=-1.0), "forcing_rate = -1"),
         (lambda: ddb.zeitlin(8, 0.5, forcing=np.eye(8)), "forcing"),
+        (lambda: ddb.zeitlin(8, 0.5, viscous_scheme="crank"), "viscous_scheme = 'crank'"),
         (lambda: ddb.zeitlin(8, 0.5, forcing=np.zeros((4, 4))), "forcing"),
         (lambda: ddb.zeitlin_vorticity("random", 100_000), "N = 100000"),
         (lambda: ddb.zeitlin_vorticity("random", 8, -1), "seed = -1"),

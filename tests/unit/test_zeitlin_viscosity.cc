@@ -196,19 +196,78 @@ TEST(ZeitlinViscosity, TheSplitStepIsSecondOrderOnANonlinearFlow) {
     reference += (r / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
   }
   // The symmetric (second-order) DDB methods: ddb-cay's dissipative factor is first order in h.
-  for (const std::string name : {"sddb-cay", "sddb-exp"}) {
-    std::vector<double> steps, errors;
-    for (const int count : {10, 20, 40, 80}) {
-      const auto method = split(name, fluid, viscosity);
-      const double h = t_end / count;
-      Matrix Q = Q0;
-      for (int k = 0; k < count; ++k) method->advance(Q, k * h, h);
-      steps.push_back(h);
-      errors.push_back((Q - reference).norm() / Q0.norm());
+  // The viscous flow exact, then by its implicit step (second order itself).
+  for (const auto scheme : {ZeitlinViscousScheme::kExact, ZeitlinViscousScheme::kImplicit}) {
+    viscosity.scheme = scheme;
+    for (const std::string name : {"sddb-cay", "sddb-exp"}) {
+      std::vector<double> steps, errors;
+      for (const int count : {10, 20, 40, 80}) {
+        const auto method = split(name, fluid, viscosity);
+        const double h = t_end / count;
+        Matrix Q = Q0;
+        for (int k = 0; k < count; ++k) method->advance(Q, k * h, h);
+        steps.push_back(h);
+        errors.push_back((Q - reference).norm() / Q0.norm());
+      }
+      const OrderFit fit = fitOrder(steps, errors);
+      EXPECT_EQ(fit.points, 4) << name;
+      EXPECT_NEAR(fit.slope, 2.0, 0.2) << name;
     }
-    const OrderFit fit = fitOrder(steps, errors);
-    EXPECT_EQ(fit.points, 4) << name;
-    EXPECT_NEAR(fit.slope, 2.0, 0.2) << name;
+  }
+}
+
+// The implicit step multiplies each ω_lm by R(z) = 1/(1 + z + z²/2), z = (ν (l(l + 1))^p + γ) h:
+// the coefficients scaled one by one (the transform, not the banded solve), on a rotating
+// sphere, for Laplacian viscosity, hyperviscosity and a stiff case whose smallest scales' z is
+// about 1e5 (R ≈ 2e-10 there: L-stable, every factor in (0, 1)). The step's rounding is about
+// ε ‖hA‖ (forming (−Δ)^p; systems/zeitlin_implicit_viscous_step.h), hence the tolerance.
+TEST(ZeitlinViscosity, TheImplicitStepScalesEachModeByItsRationalFactor) {
+  struct Case {
+    Eigen::Index n;
+    double viscosity;
+    int order;
+    double drag, h;
+  };
+  for (const Case& c :
+       {Case{2, 0.1, 1, 0.0, 0.3}, Case{7, 1e-2, 1, 0.05, 0.2}, Case{16, 1e-3, 2, 0.0, 0.1},
+        Case{17, 1e-10, 5, 0.02, 0.5}, Case{16, 1.0, 2, 0.0, 2.0}}) {
+    const SphericalHarmonicBasis basis{HoppeYauLaplacian(c.n)};
+    ZeitlinViscosity v;
+    v.viscosity = c.viscosity;
+    v.order = c.order;
+    v.drag = c.drag;
+    v.scheme = ZeitlinViscousScheme::kImplicit;
+    const Matrix F = zeitlinPlanetaryVorticity(c.n, 0.8);
+    const Matrix W = randomVorticity(int(c.n), 13);
+    Eigen::VectorXd omega = basis.coefficients(W);
+    for (Eigen::Index l = 0; l < c.n; ++l) {
+      const double z = v.rate(l) * c.h, factor = 1.0 / (1.0 + z + 0.5 * z * z);
+      ASSERT_GT(factor, 0.0);
+      ASSERT_LE(factor, 1.0);
+      for (Eigen::Index m = -l; m <= l; ++m) omega(SphericalHarmonicBasis::index(l, m)) *= factor;
+    }
+    const Matrix expected = basis.matrix(omega) + F;
+    const double tolerance = (1e-13 + 1e-15 * v.rate(c.n - 1) * c.h) * W.norm();
+    ZeitlinViscousFlow flow(c.n, v, F);
+    Matrix Q = W + F;
+    flow.advance(Q, c.h);
+    EXPECT_LT((Q - expected).norm(), tolerance) << "N = " << c.n << ", p = " << c.order;
+    // A second step of the same h reuses the factors; one of another h makes them again.
+    Matrix twice = W + F, other = W + F;
+    flow.advance(twice, c.h);
+    flow.advance(twice, c.h);
+    flow.advance(other, 2 * c.h);
+    Eigen::VectorXd twice_omega = basis.coefficients(W), other_omega = basis.coefficients(W);
+    for (Eigen::Index l = 0; l < c.n; ++l) {
+      const double z = v.rate(l) * c.h, z2 = 2 * z;
+      const double once = 1.0 / (1.0 + z + 0.5 * z * z), doubled = 1.0 / (1.0 + z2 + 0.5 * z2 * z2);
+      for (Eigen::Index m = -l; m <= l; ++m) {
+        twice_omega(SphericalHarmonicBasis::index(l, m)) *= once * once;
+        other_omega(SphericalHarmonicBasis::index(l, m)) *= doubled;
+      }
+    }
+    EXPECT_LT((twice - F - basis.matrix(twice_omega)).norm(), 2 * tolerance) << "N = " << c.n;
+    EXPECT_LT((other - F - basis.matrix(other_omega)).norm(), 2 * tolerance) << "N = " << c.n;
   }
 }
 
