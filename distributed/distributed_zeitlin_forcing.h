@@ -21,16 +21,17 @@
 
 namespace ddb {
 
-class DistributedZeitlinStochasticForcingFlow final : public ExactFlow<DistributedSUN> {
+class DistributedZeitlinStochasticForcingFlow final
+    : public ZeitlinStochasticForcingStream<DistributedSUN> {
  public:
   /// The forcing on states of `layout` for a fluid of κ² (ZeitlinPhysics::kappaSquared); the same
   /// arguments on every rank. Throws InvalidArgument naming the parameter, on every rank alike.
   DistributedZeitlinStochasticForcingFlow(const BlockCyclicLayout& layout,
                                           const ZeitlinStochasticForcing& forcing,
                                           double kappa_squared = 0.0)
-      : band_(layout.size(), forcing, kappa_squared), c_(Eigen::Index(band_.modes().size())) {
+      : ZeitlinStochasticForcingStream<DistributedSUN>(layout.size(), forcing, kappa_squared) {
     const int my_row = layout.grid().row(), my_col = layout.grid().col();
-    const auto& modes = band_.modes();
+    const auto& modes = band().modes();
     for (std::size_t j = 0; j < modes.size(); ++j) {
       const ZeitlinForcingBand::Mode& mode = modes[j];
       const auto add = [&](Eigen::Index k, bool upper) {
@@ -47,22 +48,12 @@ class DistributedZeitlinStochasticForcingFlow final : public ExactFlow<Distribut
     }
   }
 
-  std::string name() const override { return "forcing"; }
-
   /// W ← W + σ √h Σ g_lm T_lm, the next kick of the stream (no message between ranks).
   void advance(DistributedMatrix& W, double h) override {
-    band_.coefficients(h, draws_, c_);
+    const Eigen::VectorXd& c = nextKick(h);
     std::complex<double>* local = W.local().data();
-    for (const Entry& e : entries_) local[e.index] += c_(Eigen::Index(e.mode)) * e.value;
-    ++draws_;
+    for (const Entry& e : entries_) local[e.index] += c(Eigen::Index(e.mode)) * e.value;
   }
-
-  /// σ, the noise amplitude that gives the mean injection rate ε.
-  double amplitude() const { return band_.amplitude(); }
-  /// How many kicks the stream has given, the same on every rank.
-  std::uint64_t draws() const { return draws_; }
-  void save(BinaryRecordWriter& out) const override { out.put(draws_); }
-  void load(BinaryRecordReader& in) override { in.get(draws_); }
 
  private:
   /// Mode `mode`'s value at this rank's local entry `index` (column-major), in the modes' order.
@@ -72,10 +63,7 @@ class DistributedZeitlinStochasticForcingFlow final : public ExactFlow<Distribut
     std::complex<double> value;
   };
 
-  ZeitlinForcingBand band_;
   std::vector<Entry> entries_;
-  Eigen::VectorXd c_;  // the kick's coefficients
-  std::uint64_t draws_ = 0;
 };
 
 class DistributedZeitlinFixedForcingFlow final : public ExactFlow<DistributedSUN> {

@@ -138,29 +138,17 @@ class ZeitlinForcingBand {
   double sigma_ = 0.0;
 };
 
-/// The stochastic forcing's exact flow at resolution N for a fluid of κ²: a kick costs
-/// O(N · modes) and allocates nothing.
-class ZeitlinStochasticForcingFlow final : public ExactFlow<SUN> {
+/// What the stochastic forcing's flow is on every placement of the states: its band, the stream's
+/// position (the count of kicks given, which a checkpoint keeps) and the next kick's
+/// coefficients; each placement adds them to its own storage (advance).
+template <class G>
+class ZeitlinStochasticForcingStream : public ExactFlow<G> {
  public:
-  ZeitlinStochasticForcingFlow(Eigen::Index n, const ZeitlinStochasticForcing& forcing,
-                               double kappa_squared = 0.0)
+  ZeitlinStochasticForcingStream(Eigen::Index n, const ZeitlinStochasticForcing& forcing,
+                                 double kappa_squared)
       : band_(n, forcing, kappa_squared), c_(Eigen::Index(band_.modes().size())) {}
 
   std::string name() const override { return "forcing"; }
-
-  /// W ← W + σ √h Σ g_lm T_lm, the next kick of the stream.
-  void advance(Eigen::MatrixXcd& W, double h) override {
-    band_.coefficients(h, draws_, c_);
-    const auto& modes = band_.modes();
-    for (std::size_t j = 0; j < modes.size(); ++j) {
-      const ZeitlinForcingBand::Mode& mode = modes[j];
-      const double c = c_(Eigen::Index(j));
-      W.diagonal(mode.offset) += c * mode.upper;
-      if (mode.offset != 0) W.diagonal(-mode.offset) += c * mode.lower;
-    }
-    ++draws_;
-  }
-
   /// σ, the noise amplitude that gives the mean injection rate ε.
   double amplitude() const { return band_.amplitude(); }
   /// How many kicks the stream has given (the next kick's draw index).
@@ -168,10 +156,39 @@ class ZeitlinStochasticForcingFlow final : public ExactFlow<SUN> {
   void save(BinaryRecordWriter& out) const override { out.put(draws_); }
   void load(BinaryRecordReader& in) override { in.get(draws_); }
 
+ protected:
+  const ZeitlinForcingBand& band() const { return band_; }
+  /// The next kick's coefficients c_j over a step h (the stream moves on by one).
+  const Eigen::VectorXd& nextKick(double h) {
+    band_.coefficients(h, draws_, c_);
+    ++draws_;
+    return c_;
+  }
+
  private:
   ZeitlinForcingBand band_;
   Eigen::VectorXd c_;  // the kick's coefficients
   std::uint64_t draws_ = 0;
+};
+
+/// The stochastic forcing's exact flow at resolution N for a fluid of κ²: a kick costs
+/// O(N · modes) and allocates nothing.
+class ZeitlinStochasticForcingFlow final : public ZeitlinStochasticForcingStream<SUN> {
+ public:
+  ZeitlinStochasticForcingFlow(Eigen::Index n, const ZeitlinStochasticForcing& forcing,
+                               double kappa_squared = 0.0)
+      : ZeitlinStochasticForcingStream<SUN>(n, forcing, kappa_squared) {}
+
+  /// W ← W + σ √h Σ g_lm T_lm, the next kick of the stream.
+  void advance(Eigen::MatrixXcd& W, double h) override {
+    const Eigen::VectorXd& c = nextKick(h);
+    const auto& modes = band().modes();
+    for (std::size_t j = 0; j < modes.size(); ++j) {
+      const ZeitlinForcingBand::Mode& mode = modes[j];
+      W.diagonal(mode.offset) += c(Eigen::Index(j)) * mode.upper;
+      if (mode.offset != 0) W.diagonal(-mode.offset) += c(Eigen::Index(j)) * mode.lower;
+    }
+  }
 };
 
 /// The fixed forcing's exact flow: W ← W + h Φ.

@@ -181,6 +181,15 @@ class ZeitlinImplicitViscousStep {
     }
   }
 
+  // (a, b) −= l · (the two unknowns at `other`), complex l = (l[0], l[1]).
+  static void subtract(const double* l, const double* other, double& ar, double& ai, double& br,
+                       double& bi) {
+    const double lr = l[0], li = l[1];
+    ar -= lr * other[0] - li * other[1];
+    ai -= lr * other[1] + li * other[0];
+    br -= lr * other[2] - li * other[3];
+    bi -= lr * other[3] + li * other[2];
+  }
   // C⁻¹ of two right-hand sides at once, interleaved in y (entry i: Re, Im of the first, Re, Im
   // of the second, at 4i..4i + 3): L z = y, z ← D⁻¹ z, Lᵀ y = z. L's p subdiagonals by column
   // (L(j + d, j) at 2 (j p + d − 1), real then imaginary), D⁻¹ likewise (2 j). Restrict-qualified
@@ -191,12 +200,7 @@ class ZeitlinImplicitViscousStep {
     for (Eigen::Index i = 0; i < length; ++i) {
       double ar = y[4 * i], ai = y[4 * i + 1], br = y[4 * i + 2], bi = y[4 * i + 3];
       for (int d = 1; d <= p && i - d >= 0; ++d) {
-        const double lr = L[2 * ((i - d) * p + d - 1)], li = L[2 * ((i - d) * p + d - 1) + 1];
-        const double* prior = y + 4 * (i - d);
-        ar -= lr * prior[0] - li * prior[1];
-        ai -= lr * prior[1] + li * prior[0];
-        br -= lr * prior[2] - li * prior[3];
-        bi -= lr * prior[3] + li * prior[2];
+        subtract(L + 2 * ((i - d) * p + d - 1), y + 4 * (i - d), ar, ai, br, bi);
       }
       y[4 * i] = ar;
       y[4 * i + 1] = ai;
@@ -214,12 +218,7 @@ class ZeitlinImplicitViscousStep {
     for (Eigen::Index i = length - 1; i >= 0; --i) {
       double ar = y[4 * i], ai = y[4 * i + 1], br = y[4 * i + 2], bi = y[4 * i + 3];
       for (int d = 1; d <= p && i + d < length; ++d) {
-        const double lr = L[2 * (i * p + d - 1)], li = L[2 * (i * p + d - 1) + 1];
-        const double* later = y + 4 * (i + d);
-        ar -= lr * later[0] - li * later[1];
-        ai -= lr * later[1] + li * later[0];
-        br -= lr * later[2] - li * later[3];
-        bi -= lr * later[3] + li * later[2];
+        subtract(L + 2 * (i * p + d - 1), y + 4 * (i + d), ar, ai, br, bi);
       }
       y[4 * i] = ar;
       y[4 * i + 1] = ai;

@@ -26,16 +26,8 @@
 namespace ddb {
 namespace distributed_exact_flows_tests {
 
-using test::randomComplexMatrix;
+using test::randomVorticity;
 using test::relativeDistance;
-
-// A random traceless skew-Hermitian matrix.
-Eigen::MatrixXcd randomVorticity(int n, unsigned seed) {
-  const Eigen::MatrixXcd a = randomComplexMatrix(n, seed);
-  Eigen::MatrixXcd w = (a - a.adjoint()) / 2.0;
-  w.diagonal().array() -= w.trace() / double(n);
-  return w;
-}
 
 ZeitlinViscosity viscosity(double nu, int order, double drag) {
   ZeitlinViscosity v;

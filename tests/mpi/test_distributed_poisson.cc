@@ -18,14 +18,8 @@
 namespace ddb {
 namespace distributed_poisson_tests {
 
-using test::randomComplexMatrix;
+using test::randomVorticity;
 using test::relativeDistance;
-
-// A random skew-Hermitian matrix, the fluid's vorticity (docs/reference/conventions.md §2).
-Eigen::MatrixXcd randomVorticity(int n, unsigned seed) {
-  const Eigen::MatrixXcd a = randomComplexMatrix(n, seed);
-  return (a - a.adjoint()) / 2.0;
-}
 
 class DistributedPoissonTest : public test::SizeAndBlockTest {};
 

@@ -38,6 +38,14 @@ inline Eigen::MatrixXcd randomComplexMatrix(int n, unsigned seed) {
   return a;
 }
 
+/// A seeded random vorticity: traceless skew-Hermitian, the same on every rank.
+inline Eigen::MatrixXcd randomVorticity(int n, unsigned seed) {
+  const Eigen::MatrixXcd a = randomComplexMatrix(n, seed);
+  Eigen::MatrixXcd w = (a - a.adjoint()) / 2.0;
+  w.diagonal().array() -= w.trace() / double(n);
+  return w;
+}
+
 inline double relativeDistance(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& reference) {
   return (a - reference).norm() / reference.norm();
 }
