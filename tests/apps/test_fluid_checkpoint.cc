@@ -206,6 +206,9 @@ TEST_F(Checkpoint, RefusesACorruptCheckpointAFlagThatChangesTheRunAndAReachedCap
   refused("--steps 200 --viscosity 1e-4", "--viscosity = 1e-4: a resumed run keeps its settings");
   refused("--steps 200 --hyperviscosity-order 2", "--hyperviscosity-order = 2");
   refused("--steps 200 --drag 0.1", "--drag = 0.1");
+  refused("--steps 200 --viscous-scheme implicit",
+          "--viscous-scheme = implicit: a resumed run keeps its settings (it ran with "
+          "--viscous-scheme = exact)");
   refused("--steps 200 --forcing-band 3:1 --forcing-rate 1e-3", "--forcing-band = 3:1");
   refused("--steps 200 --forcing-seed 5", "--forcing-seed = 5");
   refused("", "the run has taken 120 steps, its cap 120");
