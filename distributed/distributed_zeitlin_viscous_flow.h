@@ -36,7 +36,6 @@ class DistributedZeitlinViscousFlow final : public ExactFlow<DistributedSUN> {
       : n_(layout.size()),
         redistribution_(layout),
         basis_(HoppeYauLaplacian(n_)),
-        workspace_(n_),
         rates_(n_),
         factors_(n_) {
     viscosity.validate();
@@ -64,6 +63,7 @@ class DistributedZeitlinViscousFlow final : public ExactFlow<DistributedSUN> {
     double bytes = 0;
     for (const Block& b : blocks_) bytes += SphericalHarmonicDegreeOperator::blockBytes(n_, b.m);
     keeps_operator_ = bytes <= ZeitlinViscousFlow::kOperatorBytes;
+    if (!keeps_operator_) workspace_.emplace(n_);
   }
 
   std::string name() const override { return "viscosity"; }
@@ -94,7 +94,7 @@ class DistributedZeitlinViscousFlow final : public ExactFlow<DistributedSUN> {
       } else if (operator_) {
         operator_->applyToDiagonals(b.m, first, second);
       } else {
-        basis_.applyDegreeFunctionToDiagonals(factors_, b.m, first, second, workspace_);
+        basis_.applyDegreeFunctionToDiagonals(factors_, b.m, first, second, *workspace_);
       }
     }
     if (rotating) diagonals_.segment(main_diagonal_, n_) += planetary_;
@@ -110,7 +110,9 @@ class DistributedZeitlinViscousFlow final : public ExactFlow<DistributedSUN> {
   Eigen::Index n_;
   DiagonalRedistribution redistribution_;
   SphericalHarmonicBasis basis_;
-  SphericalHarmonicBasis::Workspace workspace_;  // the flow allocates nothing once built
+  // The transform's workspace, where neither the operator nor the implicit step is kept (3 N²
+  // numbers): the flow allocates nothing once built.
+  std::optional<SphericalHarmonicBasis::Workspace> workspace_;
   std::vector<Block> blocks_;
   std::vector<Eigen::Index> kept_;  // blocks_' m, in order
   bool keeps_operator_ = false;     // whether its blocks' operator fits in kOperatorBytes

@@ -66,7 +66,6 @@ class ZeitlinViscousFlow final : public ExactFlow<SUN> {
   ZeitlinViscousFlow(Eigen::Index n, const ZeitlinViscosity& viscosity,
                      Eigen::MatrixXcd planetary = Eigen::MatrixXcd())
       : basis_(HoppeYauLaplacian(n)),
-        workspace_(n),
         rates_(n),
         factors_(n),
         planetary_(std::move(planetary)),
@@ -78,6 +77,8 @@ class ZeitlinViscousFlow final : public ExactFlow<SUN> {
     if (viscosity.scheme == ZeitlinViscousScheme::kImplicit) {
       implicit_.emplace(n, viscosity.viscosity, viscosity.order, viscosity.drag,
                         SphericalHarmonicBasis::allBlocks(n));
+    } else if (!keeps_operator_) {
+      workspace_.emplace(n);
     }
   }
 
@@ -112,7 +113,7 @@ class ZeitlinViscousFlow final : public ExactFlow<SUN> {
     if (operator_) {
       operator_->apply(Q);
     } else {
-      basis_.applyDegreeFunction(factors_, Q, workspace_);
+      basis_.applyDegreeFunction(factors_, Q, *workspace_);
     }
     if (rotating_) Q += planetary_;
   }
@@ -146,7 +147,9 @@ class ZeitlinViscousFlow final : public ExactFlow<SUN> {
   }
 
   SphericalHarmonicBasis basis_;
-  SphericalHarmonicBasis::Workspace workspace_;  // the flow allocates nothing once built
+  // The transform's workspace, where neither the operator nor the implicit step is kept (3 N²
+  // numbers): the flow allocates nothing once built.
+  std::optional<SphericalHarmonicBasis::Workspace> workspace_;
   std::optional<SphericalHarmonicDegreeOperator> operator_;  // exp(h_ L), within kOperatorBytes
   Eigen::VectorXd rates_, factors_;  // per degree l: the decay rate, exp(−rate h) for h_
   double h_ = std::nan("");
