@@ -63,13 +63,18 @@ CudaMatrix& CudaMatrix::operator=(const CudaMatrix& other) {
 // Not checked: a destructor does not throw, and a failed free leaves nothing to do.
 CudaMatrix::~CudaMatrix() { cudaFree(data_); }
 
-CudaMatrix toDevice(const Eigen::MatrixXcd& m) {
-  CudaMatrix x(m.rows(), m.cols());
+void toDevice(const Eigen::MatrixXcd& m, CudaMatrix& x) {
+  if (x.rows() != m.rows() || x.cols() != m.cols()) x = CudaMatrix(m.rows(), m.cols());
   if (x.size() > 0) {
     checkCuda(cudaMemcpy(x.deviceData(), m.data(), sizeof(CudaMatrix::Scalar) * m.size(),
                          cudaMemcpyHostToDevice),
               "cudaMemcpy (to the device)");
   }
+}
+
+CudaMatrix toDevice(const Eigen::MatrixXcd& m) {
+  CudaMatrix x;
+  toDevice(m, x);
   return x;
 }
 

@@ -30,6 +30,8 @@ void cudaSynchronize();
 
 /// The host matrix m on the device.
 CudaMatrix toDevice(const Eigen::MatrixXcd& m);
+/// x ← m's entries (x reallocated only when its shape is not m's).
+void toDevice(const Eigen::MatrixXcd& m, CudaMatrix& x);
 /// x's entries in this process's memory.
 Eigen::MatrixXcd toHost(const CudaMatrix& x);
 /// out ← x's entries (out resized; no allocation when it has x's shape).

@@ -3,7 +3,9 @@
 // checkpoints and the final files; the spectrum drift of the rows' states (as on MPI ranks), so
 // that no step waits for an eigensolver.
 #include <ddb/cuda/cuda_device.h>
+#include <ddb/cuda/cuda_zeitlin_exact_flows.h>
 #include <ddb/cuda/cuda_zeitlin_fluid.h>
+#include <ddb/integrators/methods/strang_splitting.h>
 
 #include "fluid_relax/device.h"
 #include "fluid_relax/fluid_run.h"
@@ -18,8 +20,6 @@ class CudaPlacement : public OneProcess {
   using Group = CudaSUN;
   using State = CudaMatrix;
   static constexpr bool kSpectrumEveryState = false;
-  // The viscous flow and the forcing are dense (ZeitlinViscousFlow, ZeitlinStochasticForcingFlow).
-  static constexpr bool kExactFlows = false;
 
   CudaPlacement(Eigen::Index n, double alpha, const ZeitlinPhysics& physics)
       : OneProcess(n),
@@ -36,6 +36,15 @@ class CudaPlacement : public OneProcess {
   /// ‖[P, W]‖ on the CPU only: on the GPU it would copy the state and take two products.
   std::string commutatorText(const CudaMatrix&) const { return ""; }
   std::string device() const { return "cuda: " + cudaDeviceName(); }
+  /// The damping and forcing run on the host's copy of the state (cudaZeitlinExactFlows).
+  std::unique_ptr<OneStepMethod<CudaSUN>> splitWith(std::unique_ptr<OneStepMethod<CudaSUN>> method,
+                                                    const ZeitlinDampingAndForcing& flows) const {
+    const auto& host = dynamic_cast<const ZeitlinHamiltonian&>(host_fluid_->hamiltonian());
+    for (auto& flow : cudaZeitlinExactFlows(host, flows)) {
+      method = std::make_unique<StrangSplitting<CudaSUN>>(std::move(method), std::move(flow));
+    }
+    return method;
+  }
 
  private:
   std::shared_ptr<const LiePoissonSystem<CudaSUN>> fluid_;

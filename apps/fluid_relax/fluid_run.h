@@ -11,9 +11,9 @@
 //   n()                             N, on every process
 //   kSpectrumEveryState             whether every state's spectrum drift is measured (the CPU),
 //                                   or only the history rows' (no step waits for an eigensolver)
-//   kExactFlows                     whether splitWith() exists: the damping's and the forcings'
-//                                   exact flows (zeitlinExactFlows) run on this placement's states
-//   splitWith(method, flows)        the method Strang-split with each of zeitlinExactFlows
+//   splitWith(method, flows)        the method Strang-split with each of the damping's and the
+//                                   forcings' exact flows (zeitlinExactFlowsBy's order) for
+//                                   this placement's states
 //   system()                        the fluid whose states are State
 //   hostFluid()                     the same fluid on this process's memory (the writer's)
 //   initialState(W0)                W₀ where the states live (collective)
@@ -73,24 +73,6 @@
 
 namespace ddb::fluid {
 
-/// `method` Strang-split with the viscous flow of s.viscosity, then with the forcing of s.forcing,
-/// then with the fixed forcing s.fixed_forcing (those the run has), where the placement has them;
-/// else a UsageError naming the first one's flag.
-template <class Placement, class G = typename Placement::Group>
-std::unique_ptr<OneStepMethod<G>> withExactFlows(Placement& where,
-                                                 std::unique_ptr<OneStepMethod<G>> method,
-                                                 const Options& o, const Settings& s) {
-  if constexpr (Placement::kExactFlows) {
-    return where.splitWith(std::move(method), {s.viscosity, s.forcing, s.fixed_forcing});
-  } else {
-    const auto [flag, text] = exactFlowFlag(o, s);
-    app::usageError(
-        flag, text,
-        "viscosity, drag and forcing do not run on a GPU yet (fluid-relax --device cpu, "
-        "or fluid-relax-mpi)");
-  }
-}
-
 /// The run of `o`, `s` (a new one, or with `resume` the checkpoint's) on `where`; returns the
 /// exit status. A resumed run's folder is locked by the caller; a new run's is claimed here into
 /// `lock` (by the writer) once the run is known to start: bad input leaves no folder behind.
@@ -116,9 +98,8 @@ int runFluidRelaxation(Placement& where, const Options& o, const Settings& s,
         relaxing.emplace(*system, W0, s.relax);
       } else {
         method = makeMethod<G>(o.method, system);
-        if (!exactFlowFlag(o, s).first.empty()) {
-          method = withExactFlows(where, std::move(method), o, s);
-        }
+        // The damping and forcing the run has, Strang-split around the method in their order.
+        method = where.splitWith(std::move(method), {s.viscosity, s.forcing, s.fixed_forcing});
         relaxing.emplace(*method, *system, W0, s.h, s.relax);
       }
     } catch (const InvalidArgument& e) {

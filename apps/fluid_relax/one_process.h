@@ -63,7 +63,6 @@ class CpuPlacement : public OneProcess {
   using Group = SUN;
   using State = Matrix;
   static constexpr bool kSpectrumEveryState = true;
-  static constexpr bool kExactFlows = true;
 
   CpuPlacement(Eigen::Index n, double alpha, const ZeitlinPhysics& physics)
       : OneProcess(n),

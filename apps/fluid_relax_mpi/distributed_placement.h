@@ -34,7 +34,6 @@ class DistributedPlacement {
   using State = DistributedMatrix;
   /// Only the rows' states are gathered: every state's spectrum would gather every state.
   static constexpr bool kSpectrumEveryState = false;
-  static constexpr bool kExactFlows = true;
 
   /// The fluid of `run` on `grid` with blocks of run.block; rank 0's fluid for the files.
   DistributedPlacement(const MpiRun& run, const ProcessGrid& grid)

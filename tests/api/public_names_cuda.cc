@@ -11,6 +11,8 @@
 // CudaError's own header, and CudaMatrix's.
 #include <ddb/cuda/cuda_error.h>
 #include <ddb/cuda/cuda_matrix.h>
+// docs/guide/gpu.md, "Run": the damping and forcing for the device's states.
+#include <ddb/cuda/cuda_zeitlin_exact_flows.h>
 
 #include <Eigen/Core>
 #include <memory>
@@ -18,6 +20,7 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <vector>
 
 namespace {
 
@@ -66,6 +69,10 @@ static_assert(std::is_same_v<ddb::CudaSUN::Algebra<double>, ddb::CudaMatrix>);
       static_cast<ddb::CudaMatrix (*)(const Eigen::MatrixXcd&)>(&ddb::toDevice),
       static_cast<Eigen::MatrixXcd (*)(const ddb::CudaMatrix&)>(&ddb::toHost),
       static_cast<void (*)(const ddb::CudaMatrix&, Eigen::MatrixXcd&)>(&ddb::toHost),
+      static_cast<void (*)(const Eigen::MatrixXcd&, ddb::CudaMatrix&)>(&ddb::toDevice),
+      static_cast<std::vector<std::unique_ptr<ddb::ExactFlow<ddb::CudaSUN>>> (*)(
+          const ddb::ZeitlinHamiltonian&, const ddb::ZeitlinDampingAndForcing&)>(
+          &ddb::cudaZeitlinExactFlows),
       &ddb::Relaxation<ddb::CudaSUN>::advance, &ddb::Relaxation<ddb::CudaSUN>::current);
   static_assert(
       std::is_constructible_v<ddb::Relaxation<ddb::CudaSUN>, ddb::OneStepMethod<ddb::CudaSUN>&,

@@ -557,12 +557,16 @@ TEST(FluidRelax, BadInputExitsTwoNamingTheFlagAndWritesNothing) {
 }
 
 // --device: the CPU run's summary says "cpu"; --device cuda, where this build has the CUDA
-// backend and a GPU is present, follows the CPU run (W_final.csv to 1e-12 of its largest entry,
-// the same history rows) and names the device in its summary; elsewhere it is refused, exit
-// status 2 with one line naming --device and why, nothing written (docs/guide/gpu.md).
+// backend and a GPU is present, follows the CPU run of a damped and forced fluid (W_final.csv to
+// 1e-12 of its largest entry, the same history rows) and names the device in its summary; elsewhere
+// it is refused, exit status 2 with one line naming --device and why, nothing written
+// (docs/guide/gpu.md).
 TEST(FluidRelax, DeviceCudaFollowsTheCpuRunOrIsRefusedSayingWhy) {
   const fs::path cpu = freshFolder("device_cpu"), gpu = freshFolder("device_cuda");
-  const std::string common = "--quiet --n 12 --steps 20 --method sddb-cay ";
+  // Damped and forced on a rotating sphere, so that the flows run on the device's states too.
+  const std::string physics =
+      "--rotation 1 --viscosity 1e-3 --drag 0.01 --forcing-band 4:1 --forcing-rate 1e-3 ";
+  const std::string common = "--quiet --n 12 --steps 20 --method sddb-cay " + physics;
   const AppResult a = run(common + "--out " + cpu.string());
   ASSERT_EQ(a.status, 0) << a.output;
   EXPECT_EQ(readJson(cpu / "summary.json")["device"], "cpu");
@@ -583,7 +587,10 @@ TEST(FluidRelax, DeviceCudaFollowsTheCpuRunOrIsRefusedSayingWhy) {
   // Each run resumed on the other device: the CPU's checkpoint on the GPU and back, 10 steps
   // more, both within 1e-12 of a CPU run of 30 steps.
   const fs::path whole = freshFolder("device_whole");
-  ASSERT_EQ(run("--quiet --n 12 --steps 30 --method sddb-cay --out " + whole.string()).status, 0);
+  ASSERT_EQ(
+      run("--quiet --n 12 --steps 30 --method sddb-cay " + physics + "--out " + whole.string())
+          .status,
+      0);
   const Matrix expected = readMatrix(whole / "W_final.csv");
   for (const auto& [folder, device] : {std::pair{cpu, "cuda"}, {gpu, "cpu"}}) {
     const AppResult r =

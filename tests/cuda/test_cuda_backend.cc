@@ -5,15 +5,17 @@
 // kBackendMatrixGroups family on Zeitlin's fluid (within 1e-12 of the dense run after 100 steps,
 // or 10 times the dense run's own motion from a W0 moved by one ulp where the flow amplifies
 // rounding more: GPU reductions and products add in another order) and the spectrum kept over
-// 1000 steps at N = 1024. Without a GPU every test but the first is skipped, by ctest's skip,
-// naming why (GTEST_SKIP).
+// 1000 steps at N = 1024, and the damped and forced fluid. Without a GPU every test but the first
+// is skipped, by ctest's skip, naming why (GTEST_SKIP).
 #include <ddb/core/skew_hermitian_eigenbasis.h>
 #include <ddb/cuda/cuda_backend.h>
 #include <ddb/cuda/cuda_device.h>
 #include <ddb/cuda/cuda_poisson_solver.h>
+#include <ddb/cuda/cuda_zeitlin_exact_flows.h>
 #include <ddb/cuda/cuda_zeitlin_fluid.h>
 #include <ddb/integrators/drivers/relax.h>
 #include <ddb/integrators/methods/method_table.h>
+#include <ddb/integrators/methods/strang_splitting.h>
 #include <ddb/systems/hoppe_yau_laplacian.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
@@ -547,6 +549,72 @@ TEST(CudaRelaxation, ACheckpointMovesBetweenTheCpuAndTheGpu) {
     }
     EXPECT_EQ(second.state().k, 40);
     EXPECT_LE(relativeDifference(toHost(second.current()), whole.current()), 1e-12);
+  }
+}
+
+// Damping and forcing on the GPU (cudaZeitlinExactFlows: the host's flows on a copy of the
+// state): ddb-cay Strang-split with viscosity, drag, a stochastic band and a fixed forcing on a
+// rotating sphere, both viscous schemes, follows the dense run to 1e-12 over 40 steps; the run
+// saved on the GPU after 20 steps (the forcing's kick count in its record) and resumed on the CPU
+// lands on the uninterrupted run's state to 1e-12.
+TEST(CudaRelaxation, DampedAndForcedRunsFollowTheDenseRunAndMoveToTheCpu) {
+  SKIP_WITHOUT_GPU();
+  const Eigen::Index n = 48;
+  const double alpha = 0.5;
+  ZeitlinPhysics physics;
+  physics.rotation = 1.5;
+  const Matrix F = zeitlinPlanetaryVorticity(n, physics.rotation);
+  const Matrix Q0 = randomVorticity(n, 26) + F;
+  const double h = 0.5 * zeitlinDefaultStep(Q0, alpha);
+  const auto dense_fluid = makeZeitlinFluid(n, alpha, physics);
+  const auto device_fluid = makeCudaZeitlinFluid(n, alpha, physics);
+  const auto& hamiltonian = dynamic_cast<const ZeitlinHamiltonian&>(dense_fluid->hamiltonian());
+  for (const auto scheme : {ZeitlinViscousScheme::kExact, ZeitlinViscousScheme::kImplicit}) {
+    ZeitlinDampingAndForcing d;
+    d.viscosity = {1e-3, 2, 0.05, scheme};
+    d.forcing = {6, 2, 1e-3, 7};
+    d.fixed_forcing = 1e-2 * randomVorticity(n, 27);
+    const auto split = [&](auto method, auto flows) {
+      for (auto& flow : flows) {
+        using G = typename decltype(method)::element_type::Group;
+        method = std::make_unique<StrangSplitting<G>>(std::move(method), std::move(flow));
+      }
+      return method;
+    };
+    const auto dense_method = [&] {
+      return split(makeMethod<SUN>("ddb-cay", dense_fluid), zeitlinExactFlows(hamiltonian, d));
+    };
+    const auto device_method = [&] {
+      return split(makeMethod<CudaSUN>("ddb-cay", device_fluid),
+                   cudaZeitlinExactFlows(hamiltonian, d));
+    };
+    RelaxOptions options;
+    options.max_steps = 40;
+    options.tolerance = 0.0;
+    auto whole_method = dense_method();
+    Relaxation<SUN> whole(*whole_method, *dense_fluid, Q0, h, options);
+    while (whole.advance()) {
+    }
+    ASSERT_EQ(whole.state().k, 40) << whole.result().failure;
+    auto device_whole_method = device_method();
+    Relaxation<CudaSUN> device(*device_whole_method, *device_fluid, toDevice(Q0), h, options);
+    while (device.advance()) {
+    }
+    EXPECT_LE(relativeDifference(toHost(device.current()), whole.current()), 1e-12);
+    auto first_method = device_method();
+    Relaxation<CudaSUN> first(*first_method, *device_fluid, toDevice(Q0), h, options);
+    for (int k = 0; k < 20; ++k) ASSERT_TRUE(first.advance());
+    BinaryRecordWriter out;
+    first.save(out);
+    BinaryRecordReader in = BinaryRecordReader::unseal(out.sealed());
+    auto second_method = dense_method();
+    Relaxation<SUN> second(*second_method, *dense_fluid, Q0, h, options);
+    second.load(in);
+    EXPECT_TRUE(in.atEnd());
+    while (second.advance()) {
+    }
+    EXPECT_EQ(second.state().k, 40);
+    EXPECT_LE(relativeDifference(second.current(), whole.current()), 1e-12);
   }
 }
 
