@@ -22,7 +22,7 @@
 #pragma once
 
 #include <ddb/core/detail/bernoulli.h>
-#include <ddb/core/detail/jet_jacobian.h>
+#include <ddb/core/detail/linear_map_matrix.h>
 #include <ddb/core/detail/scalar.h>
 #include <ddb/core/errors.h>
 
@@ -208,29 +208,7 @@ struct LieGroupBase {
         [&](const auto& mu) { return Derived::dexpInvDual(x, mu); });
   }
 
-  /// ∂/∂x [(dcay^{-1}_x)* mu], the kDim × kDim matrix the Legendre Jacobian needs
-  /// (docs/reference/conventions.md §4); fixed-size groups, by Jets through dcayInvDual.
-  template <class A, class D>
-  static auto dcayInvDualJacobian(const A& x, const D& mu) {
-    return jacobianByJets<A::RowsAtCompileTime>(
-        [&](const auto& y) { return Derived::dcayInvDual(y, castTo<decltype(y)>(mu)); }, x);
-  }
-
-  /// ∂/∂x [(dexp^{-1}_x)* mu] (fixed-size groups), by Jets through dexpInvDual.
-  template <class A, class D>
-  static auto dexpInvDualJacobian(const A& x, const D& mu) {
-    return jacobianByJets<A::RowsAtCompileTime>(
-        [&](const auto& y) { return Derived::dexpInvDual(y, castTo<decltype(y)>(mu)); }, x);
-  }
-
  protected:
-  /// v with the scalar of the vector type Like (a plain object, so that T deduces).
-  template <class Like, class V>
-  static auto castTo(const V& v) {
-    using T = typename std::decay_t<Like>::Scalar;
-    return Eigen::Matrix<T, V::RowsAtCompileTime, V::ColsAtCompileTime>(v.template cast<T>());
-  }
-
   /// The group's matrix type for algebra type A (the type hat returns, so that complex
   /// matrix algebras keep their scalar), materialised from an expression.
   template <class A, class Expression>

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <ddb/core/retraction.h>
+#include <ddb/core/retraction_jacobians.h>
 
 namespace ddb {
 
@@ -38,7 +39,7 @@ class Cayley : public Retraction<Cayley<G>, G> {
   }
   template <class A, class D>
   EIGEN_ALWAYS_INLINE auto dTauInverseDualJacobian(const A& x, const D& mu) const {
-    return G::dcayInvDualJacobian(x, mu);
+    return ddb::dcayInvDualJacobian<G>(x, mu);
   }
   /// Ad*_{cay(a) cay(b)} mu through the group, which may apply it without forming the
   /// product (SO3: docs/results/casimir-drift.md); shadows Retraction::transport.

@@ -5,8 +5,10 @@
 
 #include <ddb/core/detail/bernoulli.h>
 #include <ddb/core/detail/jet_jacobian.h>
+#include <ddb/core/detail/linear_map_matrix.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/retraction.h>
+#include <ddb/core/retraction_jacobians.h>
 
 #include <type_traits>
 
@@ -46,7 +48,7 @@ class Exponential : public Retraction<Exponential<G>, G> {
   }
   auto dTauInverseDualMatrix(const Algebra<double>& x) const { return G::dexpInvDualMatrix(x); }
   auto dTauInverseDualJacobian(const Algebra<double>& x, const Dual<double>& mu) const {
-    return G::dexpInvDualJacobian(x, mu);
+    return ddb::dexpInvDualJacobian<G>(x, mu);
   }
 };
 

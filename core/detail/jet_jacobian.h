@@ -1,7 +1,7 @@
-// Jacobians where no closed form is written: of a linear map, column by column; of a
-// scalar-generic map, by one evaluation on ceres::Jet. The generic fallbacks of
-// LieGroupBase's deduced retraction Jacobians and of the symmetric methods' Legendre
-// targets, and the independent check of the closed forms.
+// Jacobians where no closed form is written: of a scalar-generic map, by one evaluation on
+// ceres::Jet (automatic differentiation). The fixed-size groups' deduced retraction Jacobians
+// (core/retraction_jacobians.h) and the symmetric methods' Legendre targets, and the independent
+// check of the closed forms. The one library header of the groups' path that includes Ceres's Jet.
 #pragma once
 
 #include <ceres/jet.h>
@@ -9,15 +9,6 @@
 #include <Eigen/Core>
 
 namespace ddb {
-
-/// The N × N matrix of a linear map on R^N, column j = map(e_j).
-template <int N, class Map>
-Eigen::Matrix<double, N, N> linearMapMatrix(const Map& map) {
-  using V = Eigen::Matrix<double, N, 1>;
-  Eigen::Matrix<double, N, N> matrix;
-  for (int j = 0; j < N; ++j) matrix.col(j) = map(V(V::Unit(j)));
-  return matrix;
-}
 
 /// ∂f/∂x at x for f: R^N → R^M, scalar-generic (called once on Jet<double, N>).
 template <int N, class Function>

@@ -1,11 +1,16 @@
 // Scalar-generic helpers: the same formula runs on double and on ceres::Jet
-// (possibly nested), as in Sophus.
+// (possibly nested), as in Sophus. Jet is only declared here (as Ceres's own jet_fwd.h declares
+// it): a group's header does not include Ceres; a program that differentiates includes
+// <ceres/jet.h> (core/autodiff.h, core/detail/jet_jacobian.h do).
 #pragma once
-
-#include <ceres/jet.h>
 
 #include <cmath>
 #include <complex>
+
+namespace ceres {
+template <typename T, int N>
+struct Jet;
+}  // namespace ceres
 
 namespace ddb {
 

@@ -5,6 +5,7 @@
 // times the horizon exceeds what 1e9 steps can follow (docs/reference/bad-inputs.md).
 #pragma once
 
+#include <ceres/jet.h>
 #include <ddb/core/lie_poisson_system.h>
 
 #include <algorithm>

@@ -347,7 +347,9 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(std::string_view name,
 struct SO3;
 struct SE3;
 struct SON;
-struct SUN;
+template <class X>
+struct SUNOn;
+using SUN = SUNOn<Eigen::MatrixXcd>;
 
 }  // namespace ddb
 

@@ -235,7 +235,8 @@ static_assert(typesAre<SON, Eigen::Dynamic, Eigen::MatrixXd, Eigen::MatrixXd, Ei
                        Eigen::VectorXd>());
 static_assert(typesAre<SUN, Eigen::Dynamic, Eigen::MatrixXcd, Eigen::MatrixXcd, Eigen::MatrixXcd,
                        Eigen::VectorXd>());
-// SUNOn<X>: SU(N) with Algebra and Dual a backend's matrix type X.
+// SUNOn<X>: SU(N) with Algebra and Dual a backend's matrix type X; SUN is the dense one.
+static_assert(std::is_same_v<ddb::SUN, ddb::SUNOn<Eigen::MatrixXcd>>);
 struct SomeBackendMatrix {};
 static_assert(std::is_same_v<ddb::SUNOn<SomeBackendMatrix>::Dual<double>, SomeBackendMatrix>);
 static_assert(std::is_same_v<ddb::SUNOn<SomeBackendMatrix>::Algebra<double>, SomeBackendMatrix>);

@@ -7,6 +7,7 @@
 //   heavy top, the Kirchhoff body and a user system given by its Lagrangian alone.
 #include <ddb/core/autodiff.h>
 #include <ddb/core/legendre_hamiltonian.h>
+#include <ddb/core/retraction_jacobians.h>
 #include <ddb/integrators/methods/symmetric_ddb.h>
 #include <ddb/integrators/solvers/legendre_equation.h>
 #include <ddb/systems/paper_scenarios.h>
@@ -66,25 +67,43 @@ TYPED_TEST(RetractionJacobianTest, MatrixRepresentsTheDual) {
   }
 }
 
-// The closed forms against Jets through the formula they differentiate (the base's versions).
+// The closed forms against Jets through the formula they differentiate
+// (core/retraction_jacobians.h).
 TEST(RetractionJacobian, ClosedFormsMatchJets) {
   Sampler s;
   for (double size : {1e-4, 0.09, 0.11, 0.5, 1.0, 2.0, 3.0}) {
     const Eigen::Vector3d x = size * s.vector<Eigen::Vector3d>().normalized();
     const Eigen::Vector3d mu = s.vector<Eigen::Vector3d>();
-    EXPECT_LT(
-        (SO3::dcayInvDualJacobian(x, mu) - LieGroupBase<SO3>::dcayInvDualJacobian(x, mu)).norm(),
-        1e-14 * (1 + x.squaredNorm()) * mu.norm());
+    EXPECT_LT((SO3::dcayInvDualJacobian(x, mu) - dcayInvDualJacobianByJets<SO3>(x, mu)).norm(),
+              1e-14 * (1 + x.squaredNorm()) * mu.norm());
     // c(θ) of dexp^{-1} loses ~1e-16/θ² to cancellation in either evaluation.
-    EXPECT_LT(
-        (SO3::dexpInvDualJacobian(x, mu) - LieGroupBase<SO3>::dexpInvDualJacobian(x, mu)).norm(),
-        1e-12 * (1 + x.squaredNorm()) * mu.norm())
+    EXPECT_LT((SO3::dexpInvDualJacobian(x, mu) - dexpInvDualJacobianByJets<SO3>(x, mu)).norm(),
+              1e-12 * (1 + x.squaredNorm()) * mu.norm())
         << "|x| = " << size;
     using V6 = Eigen::Matrix<double, 6, 1>;
     const V6 x6 = size * s.vector<V6>().normalized(), mu6 = s.vector<V6>();
-    EXPECT_LT((SE3::dcayInvDualJacobian(x6, mu6) - LieGroupBase<SE3>::dcayInvDualJacobian(x6, mu6))
-                  .norm(),
+    EXPECT_LT((SE3::dcayInvDualJacobian(x6, mu6) - dcayInvDualJacobianByJets<SE3>(x6, mu6)).norm(),
               1e-14 * (1 + x6.squaredNorm()) * mu6.norm());
+  }
+}
+
+// Where a group writes no closed form (SE3's exponential), dexpInvDualJacobian<G> falls back to
+// Jets: against central differences of SE3::dexpInvDual (step 1e-6, error O(1e-10)).
+TEST(RetractionJacobian, TheFallbackByJetsMatchesCentralDifferences) {
+  Sampler s;
+  using V6 = Eigen::Matrix<double, 6, 1>;
+  for (double size : {0.1, 1.0, 2.5}) {
+    const V6 x = size * s.vector<V6>().normalized(), mu = s.vector<V6>();
+    const Eigen::Matrix<double, 6, 6> jets = dexpInvDualJacobian<SE3>(x, mu);
+    Eigen::Matrix<double, 6, 6> differences;
+    const double step = 1e-6;
+    for (int j = 0; j < 6; ++j) {
+      const V6 e = V6::Unit(j) * step;
+      differences.col(j) =
+          (SE3::dexpInvDual(V6(x + e), mu) - SE3::dexpInvDual(V6(x - e), mu)) / (2 * step);
+    }
+    EXPECT_LT((jets - differences).norm(), 1e-8 * (1 + x.squaredNorm()) * mu.norm())
+        << "|x| = " << size;
   }
 }
 

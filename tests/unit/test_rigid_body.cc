@@ -1,5 +1,6 @@
 // The rigid body against the component equations of the paper's Examples 3.1/3.5 and
 // the energy/Casimir rates of Proposition 3.3, by central differences along the flow.
+#include <ceres/jet.h>
 #include <ddb/core/legendre_hamiltonian.h>
 #include <ddb/systems/heavy_top.h>
 #include <ddb/systems/kirchhoff.h>
