@@ -22,6 +22,10 @@
 
 namespace ddb {
 
+// Compiled once, in the library (systems/zeitlin_fluid.cc): a file that includes this header does
+// not instantiate the dense fluid's Hamiltonian again (docs/results/compile-costs.md).
+extern template class ZeitlinHamiltonianOf<SUN, HoppeYauLaplacian>;
+
 /// Zeitlin's Hamiltonian on dense matrices (ZeitlinHamiltonianOf, systems/zeitlin_hamiltonian.h),
 /// with the dense solver's own accessors.
 class ZeitlinHamiltonian final : public ZeitlinHamiltonianOf<SUN, HoppeYauLaplacian> {
@@ -30,25 +34,16 @@ class ZeitlinHamiltonian final : public ZeitlinHamiltonianOf<SUN, HoppeYauLaplac
 
   /// At resolution N on a resting sphere, or with `physics` (rotation, deformation radius;
   /// InvalidArgument naming the parameter if it is out of range).
-  explicit ZeitlinHamiltonian(Eigen::Index n, const ZeitlinPhysics& physics = {})
-      : ZeitlinHamiltonianOf(HoppeYauLaplacian(n, checked(physics).kappaSquared()), n,
-                             zeitlinPlanetaryVorticity(n, physics.rotation)) {}
+  explicit ZeitlinHamiltonian(Eigen::Index n, const ZeitlinPhysics& physics = {});
 
   /// The Poisson solver: Δ_N − κ² (κ = 0: the Laplacian).
   const HoppeYauLaplacian& laplacian() const { return poisson(); }
 
   /// ψ = (Δ − κ²)⁻¹ of the traceless part of Q − F (P = Δ⁻¹W on a resting sphere).
-  Matrix streamMatrix(const Matrix& Q) const {
-    Matrix P(Q.rows(), Q.cols());
-    streamInto(Q, P);
-    return P;
-  }
+  Matrix streamMatrix(const Matrix& Q) const;
 
  private:
-  static const ZeitlinPhysics& checked(const ZeitlinPhysics& physics) {
-    physics.validate();
-    return physics;
-  }
+  static const ZeitlinPhysics& checked(const ZeitlinPhysics& physics);
 };
 
 /// The fluid's diagnostics, in its own units (E, Z as in the header comment), of the state Q
@@ -59,17 +54,11 @@ class ZeitlinDiagnostics {
   explicit ZeitlinDiagnostics(const ZeitlinHamiltonian& hamiltonian) : h_(hamiltonian) {}
 
   /// E = ħ H / N (H = Re tr((Q − F)ψ)/(2ħ), the system's Hamiltonian).
-  double energy(const Matrix& Q) const { return h_.value(Q) * h_.hbar() / double(Q.rows()); }
+  double energy(const Matrix& Q) const;
   /// Z = ‖W‖²_F/(2N) of the relative vorticity W = Q − F.
-  double enstrophy(const Matrix& Q) const {
-    Matrix workspace;
-    return h_.relativeVorticity(Q, workspace).squaredNorm() / (2.0 * Q.rows());
-  }
+  double enstrophy(const Matrix& Q) const;
   /// ‖[ψ, Q]‖_F: zero exactly at steady states of the Euler flow.
-  double commutatorNorm(const Matrix& Q) const {
-    const Matrix P = h_.streamMatrix(Q);
-    return (P * Q - Q * P).norm();
-  }
+  double commutatorNorm(const Matrix& Q) const;
 
  private:
   const ZeitlinHamiltonian& h_;

@@ -20,12 +20,8 @@
 #include <ddb/core/errors.h>
 #include <ddb/core/exact_flow.h>
 #include <ddb/groups/sun.h>
-#include <ddb/systems/hoppe_yau_laplacian.h>
-#include <ddb/systems/spherical_harmonic_basis.h>
-#include <ddb/systems/zeitlin_spectra.h>
 
 #include <Eigen/Core>
-#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdint>
@@ -101,36 +97,13 @@ class ZeitlinForcingBand {
   /// Throws InvalidArgument naming the parameter for a band or rate N refuses
   /// (ZeitlinStochasticForcing::validate).
   ZeitlinForcingBand(Eigen::Index n, const ZeitlinStochasticForcing& forcing,
-                     double kappa_squared = 0.0)
-      : forcing_(forcing) {
-    forcing.validate(n);
-    const SphericalHarmonicBasis basis{HoppeYauLaplacian(n)};
-    const int low = forcing.band_centre - forcing.band_half_width;
-    const int high = forcing.band_centre + forcing.band_half_width;
-    // The energy of unit coefficients on the band, through the spectra's formula.
-    Eigen::VectorXd unit = Eigen::VectorXd::Zero(n * n);
-    for (int l = low; l <= high; ++l) {
-      for (int m = -l; m <= l; ++m) {
-        unit(SphericalHarmonicBasis::index(l, m)) = 1.0;
-        const Eigen::MatrixXcd T = basis.element(l, m);
-        const Eigen::Index d = std::abs(m);
-        modes_.push_back({d, T.diagonal(d), T.diagonal(-d)});
-      }
-    }
-    const double unit_energy = zeitlinSpectra(unit, kappa_squared).energy.sum();
-    sigma_ = std::sqrt(forcing.rate / unit_energy);
-  }
+                     double kappa_squared = 0.0);
 
   const std::vector<Mode>& modes() const { return modes_; }
   /// σ, the noise amplitude that gives the mean injection rate ε.
   double amplitude() const { return sigma_; }
   /// c_j of kick `draw` over a step h into `c` (one per mode, sized by the caller: no allocation).
-  void coefficients(double h, std::uint64_t draw, Eigen::VectorXd& c) const {
-    const double scale = sigma_ * std::sqrt(h);
-    for (std::size_t j = 0; j < modes_.size(); ++j) {
-      c(Eigen::Index(j)) = scale * counterNormal(forcing_.seed, draw, j);
-    }
-  }
+  void coefficients(double h, std::uint64_t draw, Eigen::VectorXd& c) const;
 
  private:
   ZeitlinStochasticForcing forcing_;
@@ -180,15 +153,7 @@ class ZeitlinStochasticForcingFlow final : public ZeitlinStochasticForcingStream
       : ZeitlinStochasticForcingStream<SUN>(n, forcing, kappa_squared) {}
 
   /// W ← W + σ √h Σ g_lm T_lm, the next kick of the stream.
-  void advance(Eigen::MatrixXcd& W, double h) override {
-    const Eigen::VectorXd& c = nextKick(h);
-    const auto& modes = band().modes();
-    for (std::size_t j = 0; j < modes.size(); ++j) {
-      const ZeitlinForcingBand::Mode& mode = modes[j];
-      W.diagonal(mode.offset) += c(Eigen::Index(j)) * mode.upper;
-      if (mode.offset != 0) W.diagonal(-mode.offset) += c(Eigen::Index(j)) * mode.lower;
-    }
-  }
+  void advance(Eigen::MatrixXcd& W, double h) override;
 };
 
 /// The fixed forcing's exact flow: W ← W + h Φ.
@@ -196,22 +161,10 @@ class ZeitlinFixedForcingFlow final : public ExactFlow<SUN> {
  public:
   /// Throws InvalidArgument naming "forcing" unless Φ is N × N, finite, skew-Hermitian and
   /// traceless (to 1e-12 of its norm: a member of su(N)).
-  ZeitlinFixedForcingFlow(Eigen::Index n, Eigen::MatrixXcd forcing) : forcing_(std::move(forcing)) {
-    requireValid(n, forcing_);
-  }
+  ZeitlinFixedForcingFlow(Eigen::Index n, Eigen::MatrixXcd forcing);
 
   /// The constructor's checks of Φ (every placement's: DistributedZeitlinFixedForcingFlow).
-  static void requireValid(Eigen::Index n, const Eigen::MatrixXcd& forcing) {
-    if (forcing.rows() != n || forcing.cols() != n) {
-      throwInvalid("forcing", std::to_string(forcing.rows()) + "x" + std::to_string(forcing.cols()),
-                   "must be N x N, N = " + std::to_string(n));
-    }
-    if (!forcing.allFinite()) throwInvalid("forcing", "a matrix", "must be finite");
-    const double tolerance = 1e-12 * std::max(1.0, forcing.norm());
-    if ((forcing + forcing.adjoint()).norm() > tolerance || std::abs(forcing.trace()) > tolerance) {
-      throwInvalid("forcing", "a matrix", "must be traceless and skew-Hermitian (in su(N))");
-    }
-  }
+  static void requireValid(Eigen::Index n, const Eigen::MatrixXcd& forcing);
 
   std::string name() const override { return "forcing"; }
   void advance(Eigen::MatrixXcd& W, double h) override { W += h * forcing_; }

@@ -10,14 +10,9 @@
 // The ½ makes the spectra sum to the fluid's E and Z (ZeitlinDiagnostics' units).
 #pragma once
 
-#include <ddb/core/errors.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
 
 #include <Eigen/Core>
-#include <Eigen/Eigenvalues>
-#include <cmath>
-#include <complex>
-#include <string>
 
 namespace ddb {
 
@@ -28,46 +23,19 @@ struct ZeitlinSpectra {
 
 /// The spectra of coefficients ω (SphericalHarmonicBasis::coefficients, N² of them) of a fluid
 /// whose stream matrix is (Δ − κ²)⁻¹W (κ² = 0: Euler).
-inline ZeitlinSpectra zeitlinSpectra(const Eigen::VectorXd& omega, double kappa_squared = 0.0) {
-  const auto n = static_cast<Eigen::Index>(std::lround(std::sqrt(double(omega.size()))));
-  if (n * n != omega.size() || n < 1) {
-    throwInvalid("omega", std::to_string(omega.size()) + " coefficients", "must be N^2 of them");
-  }
-  ZeitlinSpectra s{Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)};
-  for (Eigen::Index l = 0; l < n; ++l) {
-    const double squares =
-        omega.segment(SphericalHarmonicBasis::index(l, -l), 2 * l + 1).squaredNorm();
-    s.enstrophy(l) = 0.5 * squares;
-    if (l > 0) s.energy(l) = 0.5 * squares / (double(l) * double(l + 1) + kappa_squared);
-  }
-  return s;
-}
+ZeitlinSpectra zeitlinSpectra(const Eigen::VectorXd& omega, double kappa_squared = 0.0);
 
 /// γ = |(ω_1,−1, ω_1,0, ω_1,1)| / |ω| (0 for ω = 0).
-inline double zeitlinGamma(const Eigen::VectorXd& omega) {
-  if (omega.size() < 4) throwInvalid("omega", std::to_string(omega.size()), "must hold l = 1");
-  const double all = omega.norm();
-  return all > 0 ? omega.segment(SphericalHarmonicBasis::index(1, -1), 3).norm() / all : 0.0;
-}
+double zeitlinGamma(const Eigen::VectorXd& omega);
 
 /// γ of a matrix W directly, from the three l = 1 harmonics: ω_1m = Re tr(T_1mᴴ W)/N and
 /// |ω|² = ‖W‖²_F/N (the T_lm are orthonormal for Re tr(AᴴB)/N). O(N²) a call, where the
 /// coefficients of every degree cost O(N³): for a history row at every step.
 class ZeitlinGammaFromMatrix {
  public:
-  explicit ZeitlinGammaFromMatrix(const SphericalHarmonicBasis& basis)
-      : n_(basis.size()),
-        harmonics_{basis.element(1, -1), basis.element(1, 0), basis.element(1, 1)} {}
+  explicit ZeitlinGammaFromMatrix(const SphericalHarmonicBasis& basis);
 
-  double operator()(const Eigen::MatrixXcd& W) const {
-    double l1 = 0.0;
-    for (const Eigen::MatrixXcd& T : harmonics_) {
-      const double omega = T.cwiseProduct(W.conjugate()).sum().real() / double(n_);
-      l1 += omega * omega;
-    }
-    const double all = W.norm() / std::sqrt(double(n_));
-    return all > 0 ? std::sqrt(l1) / all : 0.0;
-  }
+  double operator()(const Eigen::MatrixXcd& W) const;
 
  private:
   Eigen::Index n_;
@@ -82,20 +50,7 @@ struct ScaleDecomposition {
 /// W = W_s + W_r for the stream matrix ψ (skew-Hermitian: ZeitlinHamiltonian::streamMatrix):
 /// with ψ = U (iΛ) Uᴴ, W_s = U diag(Uᴴ W U) Uᴴ, the part of W that commutes with ψ when ψ's
 /// eigenvalues are distinct. O(N³): an eigendecomposition and four products.
-inline ScaleDecomposition zeitlinScaleDecomposition(const Eigen::MatrixXcd& W,
-                                                    const Eigen::MatrixXcd& psi) {
-  if (W.rows() != W.cols() || psi.rows() != W.rows() || psi.cols() != W.cols()) {
-    throwInvalid("psi", std::to_string(psi.rows()) + "x" + std::to_string(psi.cols()),
-                 "must be square and of W's size");
-  }
-  const Eigen::MatrixXcd hermitian = std::complex<double>(0.0, -1.0) * psi;
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> eigen(hermitian);
-  const Eigen::MatrixXcd& U = eigen.eigenvectors();
-  const Eigen::VectorXcd diagonal = (U.adjoint() * W * U).diagonal();
-  ScaleDecomposition d;
-  d.steady = U * diagonal.asDiagonal() * U.adjoint();
-  d.remainder = W - d.steady;
-  return d;
-}
+ScaleDecomposition zeitlinScaleDecomposition(const Eigen::MatrixXcd& W,
+                                             const Eigen::MatrixXcd& psi);
 
 }  // namespace ddb

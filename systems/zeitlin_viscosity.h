@@ -64,23 +64,7 @@ struct ZeitlinViscosity {
 class ZeitlinViscousFlow final : public ExactFlow<SUN> {
  public:
   ZeitlinViscousFlow(Eigen::Index n, const ZeitlinViscosity& viscosity,
-                     Eigen::MatrixXcd planetary = Eigen::MatrixXcd())
-      : basis_(HoppeYauLaplacian(n)),
-        rates_(n),
-        factors_(n),
-        planetary_(std::move(planetary)),
-        rotating_(planetary_.size() > 0 && !planetary_.isZero(0.0)),
-        keeps_operator_(SphericalHarmonicDegreeOperator::bytes(n) <= kOperatorBytes),
-        diagonals_(viscosity.scheme == ZeitlinViscousScheme::kImplicit ? n * (n + 1) / 2 : 0) {
-    viscosity.validate();
-    for (Eigen::Index l = 0; l < n; ++l) rates_(l) = viscosity.rate(l);
-    if (viscosity.scheme == ZeitlinViscousScheme::kImplicit) {
-      implicit_.emplace(n, viscosity.viscosity, viscosity.order, viscosity.drag,
-                        SphericalHarmonicBasis::allBlocks(n));
-    } else if (!keeps_operator_) {
-      workspace_.emplace(n);
-    }
-  }
+                     Eigen::MatrixXcd planetary = Eigen::MatrixXcd());
 
   /// The memory the flow may keep its operator in (SphericalHarmonicDegreeOperator::bytes:
   /// 179 MB at N = 512, 2 GiB at N = 1172). Up to it a step reads the operator; above it, each
@@ -91,32 +75,7 @@ class ZeitlinViscousFlow final : public ExactFlow<SUN> {
   std::string name() const override { return "viscosity"; }
 
   /// Q ← F + exp(h L)(Q − F), L = ν (−1)^{p+1} Δ^p − γ (the implicit step: F + R(−hL)(Q − F)).
-  void advance(Eigen::MatrixXcd& Q, double h) override {
-    if (implicit_) {
-      advanceImplicitly(Q, h);
-      return;
-    }
-    if (h != h_) {
-      factors_ = (-h * rates_.array()).exp().matrix();
-      h_ = h;
-      // Kept for this h (a fixed step, or Strang splitting's two equal halves): a changing h
-      // rebuilds it, about as costly as a step without it.
-      if (keeps_operator_) {
-        if (operator_) {
-          operator_->setFactors(basis_, factors_);
-        } else {
-          operator_.emplace(basis_, factors_);
-        }
-      }
-    }
-    if (rotating_) Q -= planetary_;
-    if (operator_) {
-      operator_->apply(Q);
-    } else {
-      basis_.applyDegreeFunction(factors_, Q, *workspace_);
-    }
-    if (rotating_) Q += planetary_;
-  }
+  void advance(Eigen::MatrixXcd& Q, double h) override;
 
  private:
   // Each diagonal of Q − F through the implicit step. Q − F is skew-Hermitian and the step real
@@ -125,26 +84,7 @@ class ZeitlinViscousFlow final : public ExactFlow<SUN> {
   // diagonals are taken out and put back walking Q's columns in order (a diagonal read along
   // itself touches one cache line per entry): entry k of diagonal −a at diagonals_[start(a) + k],
   // start(a) = Σ_{b < a} (N − b).
-  void advanceImplicitly(Eigen::MatrixXcd& Q, double h) {
-    if (h != h_) {
-      implicit_->setStep(h);
-      h_ = h;
-    }
-    const Eigen::Index n = Q.rows();
-    if (rotating_) Q -= planetary_;
-    const auto start = [n](Eigen::Index a) { return a * n - a * (a - 1) / 2; };
-    for (Eigen::Index j = 0; j < n; ++j) {
-      for (Eigen::Index i = j; i < n; ++i) diagonals_(start(i - j) + j) = Q(i, j);
-    }
-    for (Eigen::Index a = 0; a < n; ++a) {
-      implicit_->applyToDiagonals(a, diagonals_.data() + start(a));
-    }
-    for (Eigen::Index j = 0; j < n; ++j) {
-      for (Eigen::Index i = j; i < n; ++i) Q(i, j) = diagonals_(start(i - j) + j);
-    }
-    Q.triangularView<Eigen::StrictlyUpper>() = -Q.adjoint();
-    if (rotating_) Q += planetary_;
-  }
+  void advanceImplicitly(Eigen::MatrixXcd& Q, double h);
 
   SphericalHarmonicBasis basis_;
   // The transform's workspace, where neither the operator nor the implicit step is kept (3 N²
