@@ -17,8 +17,11 @@
 #include <ddb/core/solver_options.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/exponential.h>
+#include <ddb/groups/se2.h>
 #include <ddb/groups/se3.h>
+#include <ddb/groups/semidirect_product.h>
 #include <ddb/groups/skew_hermitian_group.h>
+#include <ddb/groups/so2.h>
 #include <ddb/groups/so3.h>
 #include <ddb/groups/son.h>
 #include <ddb/groups/sun.h>
@@ -41,6 +44,7 @@
 #include <ddb/systems/kirchhoff.h>
 #include <ddb/systems/manakov_body.h>
 #include <ddb/systems/paper_scenarios.h>
+#include <ddb/systems/planar_kirchhoff.h>
 #include <ddb/systems/rigid_body.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>

@@ -1,8 +1,9 @@
 // One step (h = 0.1) of every method of the method table on the rigid body of Scenario A and on
 // the default heavy top (systems/paper_scenarios.h), named rigid_body/<method> and
-// heavy_top/<method> (docs/reference/command-lines-and-files.md), with Boost.Odeint's runge_kutta4
-// on the same vector field as the peer `rigid_body/odeint-rk4`, and RK4 written out by hand as the
-// floor `rigid_body/rk4-handwritten`. The counter allocs_per_step counts mallocs per
+// heavy_top/<method> (docs/reference/command-lines-and-files.md), the same heavy top on SE(3)
+// composed from SO(3) (SemidirectProduct<SO3>) as heavy_top_composed/<method>, with Boost.Odeint's
+// runge_kutta4 on the same vector field as the peer `rigid_body/odeint-rk4`, and RK4 written out by
+// hand as the floor `rigid_body/rk4-handwritten`. The counter allocs_per_step counts mallocs per
 // step (tools/malloc_counter.h). The fluid's benchmarks are in zeitlin_bench.cc. Compare methods by
 // ratios of times within one run (scripts/bench_ratios.py).
 #include <benchmark/benchmark.h>
@@ -138,6 +139,10 @@ int main(int argc, char** argv) {
                                a.mu0());
   const HeavyTopSetup top;
   registerMethods<SE3>("heavy_top", top.system(), top.mu0);
+  registerMethods<SemidirectProduct<SO3>>(
+      "heavy_top_composed",
+      makeHeavyTopOn<SemidirectProduct<SO3>>(top.inertia, top.mgl, top.chi, top.alpha, top.metric),
+      top.mu0);
   bench::registerZeitlinBenchmarks();
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();

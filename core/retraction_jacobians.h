@@ -5,6 +5,7 @@
 // header does not pull Ceres's Jet; only the retractions' Legendre Jacobians include this.
 #pragma once
 
+#include <ddb/core/detail/has_retraction_jacobian.h>
 #include <ddb/core/detail/jet_jacobian.h>
 
 #include <Eigen/Core>
@@ -14,22 +15,6 @@
 namespace ddb {
 
 namespace detail {
-
-template <class G, class A, class D, class = void>
-struct HasDcayInvDualJacobian : std::false_type {};
-template <class G, class A, class D>
-struct HasDcayInvDualJacobian<G, A, D,
-                              std::void_t<decltype(G::dcayInvDualJacobian(
-                                  std::declval<const A&>(), std::declval<const D&>()))>>
-    : std::true_type {};
-
-template <class G, class A, class D, class = void>
-struct HasDexpInvDualJacobian : std::false_type {};
-template <class G, class A, class D>
-struct HasDexpInvDualJacobian<G, A, D,
-                              std::void_t<decltype(G::dexpInvDualJacobian(
-                                  std::declval<const A&>(), std::declval<const D&>()))>>
-    : std::true_type {};
 
 /// mu with the scalar of the Jet vector y.
 template <class Y, class D>

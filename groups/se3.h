@@ -5,9 +5,16 @@
 // exp/log use SO(3)'s closed forms (V = dexp_ω of SO(3)); dexp and dexp^{-1} come
 // from LieGroupBase's series summed to round-off. Cayley: closed forms derived from
 // the 4×4 formulas (paper, eqs. (4.15), (4.16)); dcay from the 4×4 matrices.
+//
+// SemidirectProduct<SO3> is the same group composed from SO3's functions
+// (groups/semidirect_product.h; its name and Casimirs at the end of this file). Its trajectories
+// agree with SE3's for every method (tests/unit/test_semidirect_products.cc); SE3 stays as the
+// hand-written specialisation because its step is faster (docs/results/benchmarks.md, "SE(3)
+// composed against SE(3) written out").
 #pragma once
 
 #include <ddb/core/lie_group.h>
+#include <ddb/groups/semidirect_product.h>
 #include <ddb/groups/so3.h>
 
 #include <Eigen/Core>
@@ -212,6 +219,29 @@ struct SE3 : LieGroupBase<SE3> {
     Algebra<T> x;
     x << w, SO3::dexpInv(w, r);
     return x;
+  }
+};
+
+/// SO(3) ⋉ R³ composed (SemidirectProduct<SO3>): SE3's name with its coordinates, its Casimirs
+/// (|γ|², π·γ), and φ(ω̂) = dexp_ω, since ω̂v = ω × v = [ω, v] on so(3).
+template <>
+struct SemidirectProductTraits<SO3> {
+  static constexpr const char* kName = "SO3xR3";
+  static constexpr int kNumCasimirs = 2;
+  template <class T>
+  static Eigen::Matrix<T, 2, 1> casimirs(const Eigen::Matrix<T, 3, 1>& pi,
+                                         const Eigen::Matrix<T, 3, 1>& gamma) {
+    return Eigen::Matrix<T, 2, 1>(gamma.squaredNorm(), pi.dot(gamma));
+  }
+  template <class T>
+  static Eigen::Matrix<T, 3, 1> expIntegral(const Eigen::Matrix<T, 3, 1>& w,
+                                            const Eigen::Matrix<T, 3, 1>& v) {
+    return SO3::dexp(w, v);
+  }
+  template <class T>
+  static Eigen::Matrix<T, 3, 1> expIntegralInverse(const Eigen::Matrix<T, 3, 1>& w,
+                                                   const Eigen::Matrix<T, 3, 1>& r) {
+    return SO3::dexpInv(w, r);
   }
 };
 

@@ -6,9 +6,7 @@ namespace ddb {
 std::shared_ptr<const LiePoissonSystem<SE3>> makeHeavyTop(
     const Eigen::Vector3d& inertia, double mgl, const Eigen::Vector3d& chi, double alpha,
     const Eigen::Matrix<double, 6, 1>& metric) {
-  return makeLiePoissonSystem("heavy-top",
-                              std::make_shared<const HeavyTopHamiltonian>(inertia, mgl, chi),
-                              std::make_shared<const DiagonalMetric<SE3>>(alpha, metric));
+  return makeHeavyTopOn<SE3>(inertia, mgl, chi, alpha, metric);
 }
 
 }  // namespace ddb

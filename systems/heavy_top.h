@@ -1,7 +1,8 @@
 // The heavy top on se(3)* (docs/reference/conventions.md §2): μ = (π, γ), H = ½ π·𝕀^{-1}π + mgℓ
 // χ·γ, so ξ = ∂H/∂μ = (𝕀^{-1}π, mgℓ χ) and μ̇ = ad*_ξ μ gives π̇ = π×Ω + mgℓ γ×χ,
 // γ̇ = γ×Ω. H is linear in γ: there is no regular Lagrangian, so DDB runs in its
-// Hamiltonian form. Dissipation k♯ = α diag(k); Casimirs |γ|², π·γ.
+// Hamiltonian form. Dissipation k♯ = α diag(k); Casimirs |γ|², π·γ. The group is a parameter:
+// SE3, or SO(3) ⋉ R³ composed (SemidirectProduct<SO3>), whose coordinates are the same.
 #pragma once
 
 #include <ddb/core/autodiff.h>
@@ -14,9 +15,14 @@
 
 namespace ddb {
 
-class HeavyTopHamiltonian final : public AutoDiffHamiltonian<HeavyTopHamiltonian, SE3> {
+/// H on G's dual, G any group with μ = (π, γ) ∈ R⁶ and the dot pairing (SE3,
+/// SemidirectProduct<SO3>).
+template <class G>
+class HeavyTopHamiltonianOn final : public AutoDiffHamiltonian<HeavyTopHamiltonianOn<G>, G> {
+  static_assert(G::kDim == 6, "the heavy top's coordinates are (pi, gamma) in R^6");
+
  public:
-  HeavyTopHamiltonian(const Eigen::Vector3d& inertia, double mgl, const Eigen::Vector3d& chi)
+  HeavyTopHamiltonianOn(const Eigen::Vector3d& inertia, double mgl, const Eigen::Vector3d& chi)
       : inverse_inertia_(invertInertia(inertia)),
         mgl_(requireFinite("mgl", mgl)),
         chi_(requireFinite("chi", chi)) {}
@@ -56,7 +62,20 @@ class HeavyTopHamiltonian final : public AutoDiffHamiltonian<HeavyTopHamiltonian
   Eigen::Vector3d chi_;
 };
 
-/// The heavy top; `metric` k (6 entries >= 0) gives k♯ = α diag(k).
+using HeavyTopHamiltonian = HeavyTopHamiltonianOn<SE3>;
+
+/// The heavy top on G (SE3 or SemidirectProduct<SO3>); `metric` k (6 entries >= 0) gives
+/// k♯ = α diag(k).
+template <class G>
+std::shared_ptr<const LiePoissonSystem<G>> makeHeavyTopOn(
+    const Eigen::Vector3d& inertia, double mgl, const Eigen::Vector3d& chi, double alpha,
+    const Eigen::Matrix<double, 6, 1>& metric) {
+  return makeLiePoissonSystem("heavy-top",
+                              std::make_shared<const HeavyTopHamiltonianOn<G>>(inertia, mgl, chi),
+                              std::make_shared<const DiagonalMetric<G>>(alpha, metric));
+}
+
+/// The heavy top on SE3 (makeHeavyTopOn<SE3>, compiled once).
 std::shared_ptr<const LiePoissonSystem<SE3>> makeHeavyTop(
     const Eigen::Vector3d& inertia, double mgl, const Eigen::Vector3d& chi, double alpha,
     const Eigen::Matrix<double, 6, 1>& metric);

@@ -6,10 +6,7 @@ namespace ddb {
 std::shared_ptr<const LiePoissonSystem<SE3>> makeKirchhoffBody(
     const Eigen::Vector3d& inertia, const Eigen::Vector3d& mass, double alpha,
     const Eigen::Matrix<double, 6, 1>& metric) {
-  return makeLiePoissonSystem("kirchhoff",
-                              std::make_shared<const KirchhoffHamiltonian>(inertia, mass),
-                              std::make_shared<const DiagonalMetric<SE3>>(alpha, metric),
-                              std::make_shared<const KirchhoffLagrangian>(inertia, mass));
+  return makeKirchhoffBodyOn<SE3>(inertia, mass, alpha, metric);
 }
 
 }  // namespace ddb

@@ -1,7 +1,8 @@
 // Kirchhoff's equations for a rigid body in ideal fluid, on se(3)*: ξ = (Ω, v),
 // l(ξ) = ½ Ω·𝕀Ω + ½ v·𝕄v (diagonal added-mass tensors), μ = (π, P) = (𝕀Ω, 𝕄v),
 // H = ½ π·𝕀^{-1}π + ½ P·𝕄^{-1}P; μ̇ = ad*_ξ μ gives π̇ = π×Ω + P×v, Ṗ = P×Ω.
-// Dissipation k♯ = α diag(k); Casimirs |P|², π·P.
+// Dissipation k♯ = α diag(k); Casimirs |P|², π·P. The group is a parameter: SE3, or SO(3) ⋉ R³
+// composed (SemidirectProduct<SO3>), whose coordinates are the same.
 #pragma once
 
 #include <ddb/core/autodiff.h>
@@ -22,17 +23,20 @@ inline Eigen::Matrix<double, 6, 1> kirchhoffWeights(const Eigen::Vector3d& inert
       .finished();
 }
 /// ½ Σ_i w_i x_i² in any scalar type (the quadratic form of a diagonal tensor).
-template <class T, class Weights>
-T halfWeightedSquares(const Eigen::Matrix<T, 6, 1>& x, const Weights& w) {
+template <class T, int N, class Weights>
+T halfWeightedSquares(const Eigen::Matrix<T, N, 1>& x, const Weights& w) {
   T sum = constant<T>(0.0);
-  for (int i = 0; i < 6; ++i) sum += constant<T>(w(i)) * x(i) * x(i);
+  for (int i = 0; i < N; ++i) sum += constant<T>(w(i)) * x(i) * x(i);
   return constant<T>(0.5) * sum;
 }
 }  // namespace detail
 
-class KirchhoffLagrangian final : public AutoDiffLagrangian<KirchhoffLagrangian, SE3> {
+template <class G>
+class KirchhoffLagrangianOn final : public AutoDiffLagrangian<KirchhoffLagrangianOn<G>, G> {
+  static_assert(G::kDim == 6, "Kirchhoff's coordinates are (Omega, v) in R^6");
+
  public:
-  KirchhoffLagrangian(const Eigen::Vector3d& inertia, const Eigen::Vector3d& mass)
+  KirchhoffLagrangianOn(const Eigen::Vector3d& inertia, const Eigen::Vector3d& mass)
       : weights_(detail::kirchhoffWeights(inertia, mass)) {}
   template <class T>
   T evaluate(const Eigen::Matrix<T, 6, 1>& xi) const {
@@ -54,9 +58,12 @@ class KirchhoffLagrangian final : public AutoDiffLagrangian<KirchhoffLagrangian,
   Eigen::Matrix<double, 6, 1> weights_;
 };
 
-class KirchhoffHamiltonian final : public AutoDiffHamiltonian<KirchhoffHamiltonian, SE3> {
+template <class G>
+class KirchhoffHamiltonianOn final : public AutoDiffHamiltonian<KirchhoffHamiltonianOn<G>, G> {
+  static_assert(G::kDim == 6, "Kirchhoff's coordinates are (pi, P) in R^6");
+
  public:
-  KirchhoffHamiltonian(const Eigen::Vector3d& inertia, const Eigen::Vector3d& mass)
+  KirchhoffHamiltonianOn(const Eigen::Vector3d& inertia, const Eigen::Vector3d& mass)
       : inverse_weights_(detail::kirchhoffWeights(inertia, mass).cwiseInverse()) {}
   template <class T>
   T evaluate(const Eigen::Matrix<T, 6, 1>& mu) const {
@@ -77,6 +84,21 @@ class KirchhoffHamiltonian final : public AutoDiffHamiltonian<KirchhoffHamiltoni
   Eigen::Matrix<double, 6, 1> inverse_weights_;
 };
 
+using KirchhoffLagrangian = KirchhoffLagrangianOn<SE3>;
+using KirchhoffHamiltonian = KirchhoffHamiltonianOn<SE3>;
+
+/// Kirchhoff's body on G (SE3 or SemidirectProduct<SO3>); `metric` k gives k♯ = α diag(k).
+template <class G>
+std::shared_ptr<const LiePoissonSystem<G>> makeKirchhoffBodyOn(
+    const Eigen::Vector3d& inertia, const Eigen::Vector3d& mass, double alpha,
+    const Eigen::Matrix<double, 6, 1>& metric) {
+  return makeLiePoissonSystem("kirchhoff",
+                              std::make_shared<const KirchhoffHamiltonianOn<G>>(inertia, mass),
+                              std::make_shared<const DiagonalMetric<G>>(alpha, metric),
+                              std::make_shared<const KirchhoffLagrangianOn<G>>(inertia, mass));
+}
+
+/// Kirchhoff's body on SE3 (makeKirchhoffBodyOn<SE3>, compiled once).
 std::shared_ptr<const LiePoissonSystem<SE3>> makeKirchhoffBody(
     const Eigen::Vector3d& inertia, const Eigen::Vector3d& mass, double alpha,
     const Eigen::Matrix<double, 6, 1>& metric);

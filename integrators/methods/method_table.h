@@ -344,6 +344,10 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(std::string_view name,
 // compiling a call of makeMethod costs (docs/results/compile-costs.md). The groups are only
 // named here, as what that compiled part holds; every other group (your own, SUNOn<X> on
 // another backend) instantiates makeMethod where it calls it.
+struct SO2;
+template <class G>
+struct SemidirectProduct;
+using SE2 = SemidirectProduct<SO2>;
 struct SO3;
 struct SE3;
 struct SON;
@@ -361,6 +365,7 @@ using SUN = SUNOn<Eigen::MatrixXcd>;
   PREFIX template std::unique_ptr<::ddb::OneStepMethod<G>> ddb::makeMethod<G>(      \
       std::string_view, std::shared_ptr<const ::ddb::LiePoissonSystem<G>>)
 
+DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SE2);
 DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SO3);
 DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SE3);
 DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SON);

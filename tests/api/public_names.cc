@@ -14,7 +14,10 @@
 #include <ddb/core/solver_options.h>
 #include <ddb/core/thread_pool.h>
 #include <ddb/ddb.h>
+#include <ddb/groups/se2.h>
 #include <ddb/groups/se3.h>
+#include <ddb/groups/semidirect_product.h>
+#include <ddb/groups/so2.h>
 #include <ddb/groups/so3.h>
 #include <ddb/groups/son.h>
 #include <ddb/groups/sun.h>
@@ -42,6 +45,7 @@
 #include <ddb/systems/kirchhoff.h>
 #include <ddb/systems/manakov_body.h>
 #include <ddb/systems/paper_scenarios.h>
+#include <ddb/systems/planar_kirchhoff.h>
 #include <ddb/systems/rigid_body.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/spherical_harmonic_degree_operator.h>
@@ -231,6 +235,34 @@ static_assert(typesAre<SO3, 3, Eigen::Matrix<double, 3, 1>, Eigen::Matrix<double
                        Eigen::Matrix<double, 3, 3>, Eigen::Matrix<double, 1, 1>>());
 static_assert(typesAre<SE3, 6, Eigen::Matrix<double, 6, 1>, Eigen::Matrix<double, 6, 1>,
                        Eigen::Matrix<double, 4, 4>, Eigen::Matrix<double, 2, 1>>());
+static_assert(typesAre<ddb::SO2, 1, Eigen::Matrix<double, 1, 1>, Eigen::Matrix<double, 1, 1>,
+                       Eigen::Matrix<double, 2, 2>, Eigen::Matrix<double, 1, 1>>());
+static_assert(typesAre<ddb::SE2, 3, Eigen::Matrix<double, 3, 1>, Eigen::Matrix<double, 3, 1>,
+                       Eigen::Matrix<double, 3, 3>, Eigen::Matrix<double, 1, 1>>());
+static_assert(typesAre<ddb::SemidirectProduct<SO3>, 6, Eigen::Matrix<double, 6, 1>,
+                       Eigen::Matrix<double, 6, 1>, Eigen::Matrix<double, 4, 4>,
+                       Eigen::Matrix<double, 2, 1>>());
+// A group made of groups: SE2 is SemidirectProduct<SO2>; SemidirectProductTraits<G> states the
+// product's name and Casimirs, and optionally expIntegral and expIntegralInverse.
+static_assert(std::is_same_v<ddb::SE2, ddb::SemidirectProduct<ddb::SO2>>);
+static_assert(ddb::SemidirectProductTraits<ddb::SO2>::kNumCasimirs == 1);
+[[maybe_unused]] constexpr const char* kSE2Name = ddb::SemidirectProductTraits<ddb::SO2>::kName;
+[[maybe_unused]] void groupsMadeOfGroups() {
+  const Eigen::Matrix<double, 1, 1> w(0.3);
+  const Eigen::Vector2d v(1.0, 2.0);
+  use(ddb::SemidirectProductTraits<ddb::SO2>::expIntegral(w, v),
+      ddb::SemidirectProductTraits<ddb::SO2>::expIntegralInverse(w, v),
+      ddb::SemidirectProductTraits<ddb::SO2>::casimirs(w, v));
+  const ddb::HeavyTopSetup top;
+  const ddb::KirchhoffSetup kirchhoff;
+  use(ddb::makeHeavyTopOn<ddb::SemidirectProduct<SO3>>(top.inertia, top.mgl, top.chi, top.alpha,
+                                                       top.metric),
+      ddb::makeKirchhoffBodyOn<ddb::SE3>(kirchhoff.inertia, kirchhoff.mass, kirchhoff.alpha,
+                                         kirchhoff.metric));
+  const auto body =
+      ddb::makePlanarKirchhoffBody(0.5, Eigen::Vector2d(1.0, 3.0), 0.5, Eigen::Vector3d::Ones());
+  use(ddb::makeMethod<ddb::SE2>("sddb-cay", body));
+}
 static_assert(typesAre<SON, Eigen::Dynamic, Eigen::MatrixXd, Eigen::MatrixXd, Eigen::MatrixXd,
                        Eigen::VectorXd>());
 static_assert(typesAre<SUN, Eigen::Dynamic, Eigen::MatrixXcd, Eigen::MatrixXcd, Eigen::MatrixXcd,

@@ -28,12 +28,13 @@ BUILT_NOT_RUN = "built, not yet run on a GPU"
 
 # (column, group family, has a Lagrangian, metric α·I, the mark of a method that runs there):
 # systems/*.h and systems/zeitlin_fluid_on_backend.h; the heavy top has no regular Lagrangian,
-# the heavy top and the Kirchhoff body have k♯ = α diag(k). The GPU's column stays
+# the heavy top and the Kirchhoff bodies have k♯ = α diag(k). The GPU's column stays
 # BUILT_NOT_RUN until the device tests have run on a GPU (docs/results/gpu.md).
 SYSTEMS = [
     ("rigid body", 1, True, True, RUNS),
     ("heavy top", 1, False, False, RUNS),
     ("Kirchhoff", 1, True, False, RUNS),
+    ("planar Kirchhoff, SE(2)", 1, True, False, RUNS),
     ("Manakov, SO(N)", 2, False, True, RUNS),
     ("fluid, SU(N)", 2, False, True, RUNS),
     ("fluid on MPI ranks", 4, False, True, RUNS),

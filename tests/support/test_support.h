@@ -5,7 +5,9 @@
 #include <ddb/core/group_traits.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/exponential.h>
+#include <ddb/groups/se2.h>
 #include <ddb/groups/se3.h>
+#include <ddb/groups/so2.h>
 #include <ddb/groups/so3.h>
 #include <ddb/groups/son.h>
 #include <ddb/groups/sun.h>
@@ -46,10 +48,12 @@ struct GroupAt {
 // ---- Adding a group: include its header above and append it here. Both generic
 // suites (test_groups.cc: every group; test_retractions.cc: every group with the
 // Cayley and exponential retractions) are instantiated from these lists. Matrix
-// groups run at N = 2..6 (Samples::sizes). ----
+// groups run at N = 2..6 (Samples::sizes). SemidirectProduct<SO3> is SE(3) composed from SO(3)'s
+// functions (groups/semidirect_product.h). ----
 template <template <class> class R>
 using GroupsWith =
-    ::testing::Types<GroupAt<SO3, R>, GroupAt<SE3, R>, GroupAt<SON, R>, GroupAt<SUN, R>>;
+    ::testing::Types<GroupAt<SO2, R>, GroupAt<SO3, R>, GroupAt<SE2, R>, GroupAt<SE3, R>,
+                     GroupAt<SemidirectProduct<SO3>, R>, GroupAt<SON, R>, GroupAt<SUN, R>>;
 struct AllGroups {
   using Groups = GroupsWith<Cayley>;
   template <template <class> class R>
@@ -145,14 +149,15 @@ class Samples {
     return points;
   }
 
-  /// The spectral radius of ad_x, where dexp⁻¹'s series has its poles at 2π: |ω| on
-  /// SO(3) and SE(3), the spread of the eigenvalues of −ix for matrix groups.
+  /// The spectral radius of ad_x, where dexp⁻¹'s series has its poles at 2π: the group's
+  /// adRadius for fixed-size groups (|ω| on SO(3), SE(2) and SE(3), 0 on SO(2)), the spread of
+  /// the eigenvalues of −ix for matrix groups.
   static double adRadius(const A& x) {
     if constexpr (kMatrix) {
       const auto spectrum = G::casimirs(x);
       return spectrum.maxCoeff() - spectrum.minCoeff();
     } else {
-      return x.template head<3>().norm();
+      return G::adRadius(x);
     }
   }
 

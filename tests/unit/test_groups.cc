@@ -105,6 +105,23 @@ TYPED_TEST(GroupTest, CoadjointActionsAreDualsOfAdjointActions) {
   });
 }
 
+// d/dt Ad*_{exp(tx)} mu at t = 0 is ad*_x mu (with <ad*_x mu, y> = <mu, [x, y]> and
+// <Ad*_g mu, y> = <mu, Ad_g y>, docs/reference/conventions.md §1), by central differences.
+TYPED_TEST(GroupTest, CoadjointActionDifferentiatesToAdDual) {
+  this->samples.forEachSize([&] {
+    using G = typename TestFixture::G;
+    using A = typename TestFixture::A;
+    using D = typename TestFixture::D;
+    const double eps = 1e-5;
+    for (int i = 0; i < 5; ++i) {
+      const A x = this->algebra(), plus = eps * x, minus = -eps * x;
+      const D mu = this->dual();
+      const D difference = (G::AdDual(G::exp(plus), mu) - G::AdDual(G::exp(minus), mu)) / (2 * eps);
+      EXPECT_LT((difference - G::adDual(x, mu)).norm(), 1e-8 * Samples<TypeParam>::scale(x, mu));
+    }
+  });
+}
+
 TYPED_TEST(GroupTest, CasimirsAreConstantOnCoadjointOrbits) {
   this->samples.forEachSize([&] {
     using G = typename TestFixture::G;

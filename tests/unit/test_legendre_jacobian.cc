@@ -33,8 +33,10 @@ Eigen::Matrix<double, N, N> centralDifferences(const Map& f, const Eigen::Matrix
 
 template <class R>
 class RetractionJacobianTest : public ::testing::Test {};
-using FixedRetractions = ::testing::Types<Cayley<SO3>, Exponential<SO3>, TruncatedExponential<SO3>,
-                                          Cayley<SE3>, Exponential<SE3>, TruncatedExponential<SE3>>;
+using FixedRetractions = ::testing::Types<
+    Cayley<SO2>, Exponential<SO2>, Cayley<SO3>, Exponential<SO3>, TruncatedExponential<SO3>,
+    Cayley<SE2>, Exponential<SE2>, TruncatedExponential<SE2>, Cayley<SE3>, Exponential<SE3>,
+    TruncatedExponential<SE3>, Cayley<SemidirectProduct<SO3>>, Exponential<SemidirectProduct<SO3>>>;
 TYPED_TEST_SUITE(RetractionJacobianTest, FixedRetractions);
 
 TYPED_TEST(RetractionJacobianTest, MatchesCentralDifferences) {
@@ -84,6 +86,15 @@ TEST(RetractionJacobian, ClosedFormsMatchJets) {
     const V6 x6 = size * s.vector<V6>().normalized(), mu6 = s.vector<V6>();
     EXPECT_LT((SE3::dcayInvDualJacobian(x6, mu6) - dcayInvDualJacobianByJets<SE3>(x6, mu6)).norm(),
               1e-14 * (1 + x6.squaredNorm()) * mu6.norm());
+    // The products' block forms (groups/semidirect_product.h), composed from their factor's.
+    using SE3Composed = SemidirectProduct<SO3>;
+    EXPECT_LT((SE3Composed::dcayInvDualJacobian(x6, mu6) -
+               dcayInvDualJacobianByJets<SE3Composed>(x6, mu6))
+                  .norm(),
+              1e-14 * (1 + x6.squaredNorm()) * mu6.norm());
+    const Eigen::Vector3d x3 = size * s.vector<Eigen::Vector3d>().normalized();
+    EXPECT_LT((SE2::dcayInvDualJacobian(x3, mu) - dcayInvDualJacobianByJets<SE2>(x3, mu)).norm(),
+              1e-14 * (1 + x3.squaredNorm()) * mu.norm());
   }
 }
 

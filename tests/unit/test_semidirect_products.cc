@@ -1,0 +1,200 @@
+// Groups made of groups (groups/semidirect_product.h). SE(3) composed from SO(3)'s functions
+// against SE3 written out, for every method of the table on the heavy top and Kirchhoff's body;
+// SE(2)'s planar Kirchhoff body against its textbook equations, its double-bracket energy rate and
+// Casimir by central differences, its relaxed state against the closed-form minimum of the energy
+// on its orbit, and the fitted orders of the DDB family. The groups' defining identities (Jacobi,
+// the duals of ad and Ad, the Cayley map against the block matrices' Cayley map, exp against
+// Eigen's matrix exponential) are the generic suites' (test_groups.cc, test_retractions.cc).
+#include <ddb/integrators/drivers/integrate.h>
+#include <ddb/integrators/methods/method_table.h>
+#include <ddb/integrators/methods/reference.h>
+#include <ddb/systems/heavy_top.h>
+#include <ddb/systems/kirchhoff.h>
+#include <ddb/systems/paper_scenarios.h>
+#include <ddb/systems/planar_kirchhoff.h>
+#include <gmock/gmock.h>
+
+#include <algorithm>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "order_fit.h"
+#include "test_support.h"
+
+namespace ddb::test {
+namespace semidirect_products_tests {
+
+using Vector6 = Eigen::Matrix<double, 6, 1>;
+using SE3Composed = SemidirectProduct<SO3>;
+
+template <class G, class V>
+std::vector<V> trajectory(const MethodInfo& info, std::shared_ptr<const LiePoissonSystem<G>> system,
+                          const V& mu0, double h, long steps) {
+  auto method = makeMethod<G>(info, system);
+  std::vector<V> states;
+  integrate(*method, mu0, 0.0, h, steps, [&](long, double, const V& mu) { states.push_back(mu); });
+  return states;
+}
+
+TEST(SemidirectProduct, SE3ComposedFollowsSE3WrittenOutForEveryMethod) {
+  const HeavyTopSetup top;
+  const KirchhoffSetup body;
+  struct Case {
+    std::string name;
+    std::shared_ptr<const LiePoissonSystem<SE3>> written;
+    std::shared_ptr<const LiePoissonSystem<SE3Composed>> composed;
+    Vector6 mu0;
+  };
+  std::vector<Case> cases;
+  for (double alpha : {0.0, top.alpha}) {
+    cases.push_back({"heavy top, alpha " + std::to_string(alpha),
+                     makeHeavyTop(top.inertia, top.mgl, top.chi, alpha, top.metric),
+                     makeHeavyTopOn<SE3Composed>(top.inertia, top.mgl, top.chi, alpha, top.metric),
+                     top.mu0});
+  }
+  cases.push_back(
+      {"kirchhoff", makeKirchhoffBody(body.inertia, body.mass, body.alpha, body.metric),
+       makeKirchhoffBodyOn<SE3Composed>(body.inertia, body.mass, body.alpha, body.metric),
+       body.mu0});
+  int compared = 0;
+  for (const Case& c : cases) {
+    for (const MethodInfo& info : kMethods) {
+      if (!methodApplies(info, *c.written)) continue;
+      ASSERT_TRUE(methodApplies(info, *c.composed)) << info.name;
+      const auto written = trajectory<SE3>(info, c.written, c.mu0, 0.05, 200);
+      const auto composed = trajectory<SE3Composed>(info, c.composed, c.mu0, 0.05, 200);
+      ASSERT_EQ(written.size(), composed.size());
+      double worst = 0.0;
+      for (size_t k = 0; k < written.size(); ++k) {
+        worst = std::max(worst, (written[k] - composed[k]).norm());
+      }
+      EXPECT_LE(worst, 1e-13) << c.name << ", " << info.name;
+      std::cout << c.name << ", " << info.name << ": largest difference " << worst << "\n";
+      ++compared;
+    }
+  }
+  EXPECT_GE(compared, 30);  // 11 on each heavy top (no Lagrangian, no scalar metric), 13 here
+}
+
+const double kInertia = 0.5;
+const Eigen::Vector2d kMass(1.0, 3.0);
+const Eigen::Vector3d kUnitMetric = Eigen::Vector3d::Ones();
+const Eigen::Vector3d kMu0(0.3, 1.0, 0.2);
+
+/// (P × v, ΩP₂, −ΩP₁): the planar Kirchhoff equations written out, v = P/m, Ω = π/I.
+Eigen::Vector3d planarKirchhoffRate(const Eigen::Vector3d& mu) {
+  const double omega = mu(0) / kInertia;
+  const Eigen::Vector2d P = mu.tail<2>(), v = P.cwiseQuotient(kMass);
+  return Eigen::Vector3d(P(0) * v(1) - P(1) * v(0), omega * P(1), -omega * P(0));
+}
+
+TEST(PlanarKirchhoff, VectorFieldIsThePlanarEquationsAndDissipatesAtTheDoubleBracketRate) {
+  Sampler s(31);
+  for (double alpha : {0.0, 0.4}) {
+    const auto body = makePlanarKirchhoffBody(kInertia, kMass, alpha, kUnitMetric);
+    for (int i = 0; i < 5; ++i) {
+      const Eigen::Vector3d mu = s.vector<Eigen::Vector3d>();
+      const Eigen::Vector3d f = body->vectorField(mu);
+      const Eigen::Vector3d conservative = planarKirchhoffRate(mu);
+      // (m₁ − m₂) v₁v₂, the Munk moment, for the first row.
+      EXPECT_NEAR(conservative(0), (kMass(0) - kMass(1)) * mu(1) / kMass(0) * mu(2) / kMass(1),
+                  1e-15);
+      if (alpha == 0.0) EXPECT_LT((f - conservative).norm(), 1e-15);
+      const double d = 1e-5;
+      const Eigen::Vector3d plus = mu + d * f, minus = mu - d * f;
+      EXPECT_NEAR((body->energy(plus) - body->energy(minus)) / (2 * d),
+                  -alpha * conservative.squaredNorm(), 1e-8);
+      EXPECT_LT(((body->casimirs(plus) - body->casimirs(minus)) / (2 * d)).norm(), 1e-8);
+    }
+  }
+}
+
+TEST(PlanarKirchhoff, AnalyticDerivativesMatchAutodiff) {
+  const PlanarKirchhoffHamiltonian H(kInertia, kMass);
+  const PlanarKirchhoffLagrangian l(kInertia, kMass);
+  using HBase = AutoDiffHamiltonian<PlanarKirchhoffHamiltonian, SE2>;
+  using LBase = AutoDiffLagrangian<PlanarKirchhoffLagrangian, SE2>;
+  Sampler s(32);
+  for (int i = 0; i < 5; ++i) {
+    const Eigen::Vector3d x = s.vector<Eigen::Vector3d>(), v = s.vector<Eigen::Vector3d>();
+    EXPECT_LT((H.gradient(x) - H.HBase::gradient(x)).norm(), 1e-15);
+    EXPECT_LT((H.hessianTimes(x, v) - H.HBase::hessianTimes(x, v)).norm(), 1e-15);
+    EXPECT_LT((l.gradient(x) - l.LBase::gradient(x)).norm(), 1e-15);
+    EXPECT_LT((l.hessianTimes(x, v) - l.LBase::hessianTimes(x, v)).norm(), 1e-15);
+    // l and H are Legendre-dual: ∂H/∂μ at μ = ∂l/∂ξ is ξ.
+    EXPECT_LT((H.gradient(l.gradient(x)) - x).norm(), 1e-15);
+  }
+}
+
+TEST(PlanarKirchhoff, DdbRelaxesToTheEnergyMinimumOnItsOrbit) {
+  // On |P| = c the energy ½π²/I + ½(P₁²/m₁ + P₂²/m₂) is least at π = 0, P along the axis of
+  // the larger added mass: c²/(2 max m).
+  const auto body = makePlanarKirchhoffBody(kInertia, kMass, 0.5, kUnitMetric);
+  const double c2 = kMu0.tail<2>().squaredNorm();
+  const double minimum = c2 / (2 * kMass.maxCoeff());
+  for (const std::string name : {"ddb-cay", "ddb-exp-exact", "sddb-cay"}) {
+    auto method = makeMethod<SE2>(name, body);
+    double previous = body->energy(kMu0), rise = 0.0, casimir_drift = 0.0;
+    Eigen::Vector3d last = kMu0;
+    integrate(*method, kMu0, 0.0, 0.05, 8000, [&](long, double, const Eigen::Vector3d& mu) {
+      const double e = body->energy(mu);
+      rise = std::max(rise, e - previous);
+      previous = e;
+      casimir_drift = std::max(casimir_drift, std::abs(body->casimirs(mu)(0) - c2) / c2);
+      last = mu;
+    });
+    EXPECT_LE(rise, 1e-15) << name;
+    EXPECT_LE(casimir_drift, 1e-14) << name;
+    EXPECT_NEAR(body->energy(last), minimum, 1e-12) << name;
+    EXPECT_LT(std::abs(last(0)) + std::abs(last(1)), 1e-6) << name;
+    std::cout << name << ": E - E_min " << body->energy(last) - minimum << ", Casimir drift "
+              << casimir_drift << "\n";
+  }
+}
+
+Eigen::Vector3d planarFinalState(OneStepMethod<SE2>& method, double h, double t_end) {
+  Eigen::Vector3d last;
+  integrate(method, kMu0, 0.0, h, std::lround(t_end / h),
+            [&](long, double, const Eigen::Vector3d& mu) { last = mu; });
+  return last;
+}
+
+TEST(PlanarKirchhoff, FittedOrdersOfTheDdbFamily) {
+  for (double alpha : {0.0, 0.5}) {
+    const auto body = makePlanarKirchhoffBody(kInertia, kMass, alpha, kUnitMetric);
+    ReferenceSolver<SE2> reference(body);
+    const Eigen::Vector3d exact = planarFinalState(reference, 0.5, 5.0);
+    for (const std::string name : {"ddb-cay", "ddb-exp-exact", "sddb-cay", "ddb4-cay"}) {
+      const MethodInfo& info = *findMethod(name);
+      std::vector<double> hs{0.1, 0.05, 0.025, 0.0125}, errors;
+      for (double h : hs) {
+        auto method = makeMethod<SE2>(name, body);
+        errors.push_back((planarFinalState(*method, h, 5.0) - exact).norm());
+      }
+      const OrderFit fit = fitOrder(hs, errors);
+      ASSERT_GE(fit.points, 4) << name;
+      const int order = alpha == 0.0 ? info.order_without_dissipation : info.order;
+      EXPECT_NEAR(fit.slope, order, 0.25) << name << " alpha " << alpha;
+      std::cout << "planar body " << name << " alpha=" << alpha << " slope=" << fit.slope << "\n";
+    }
+  }
+}
+
+TEST(PlanarKirchhoff, RejectsBadParametersNamingThem) {
+  using ::testing::HasSubstr;
+  using ::testing::ThrowsMessage;
+  EXPECT_THAT([] { makePlanarKirchhoffBody(-1.0, kMass, 0.5, kUnitMetric); },
+              ThrowsMessage<InvalidArgument>(HasSubstr("inertia")));
+  EXPECT_THAT([] { makePlanarKirchhoffBody(kInertia, Eigen::Vector2d(1, 0), 0.5, kUnitMetric); },
+              ThrowsMessage<InvalidArgument>(HasSubstr("mass")));
+  EXPECT_THAT([] { makePlanarKirchhoffBody(kInertia, Eigen::Vector2d(1, NAN), 0.5, kUnitMetric); },
+              ThrowsMessage<InvalidArgument>(HasSubstr("mass")));
+  EXPECT_THAT([] { makePlanarKirchhoffBody(kInertia, kMass, 0.5, -kUnitMetric); },
+              ThrowsMessage<InvalidArgument>(HasSubstr("metric")));
+  EXPECT_THAT([] { makePlanarKirchhoffBody(kInertia, kMass, INFINITY, kUnitMetric); },
+              ThrowsMessage<InvalidArgument>(HasSubstr("alpha")));
+}
+
+}  // namespace semidirect_products_tests
+}  // namespace ddb::test
