@@ -16,6 +16,7 @@
 #include <ddb/core/retraction.h>
 #include <ddb/core/solver_options.h>
 #include <ddb/groups/cayley.h>
+#include <ddb/groups/direct_product.h>
 #include <ddb/groups/exponential.h>
 #include <ddb/groups/se2.h>
 #include <ddb/groups/se3.h>

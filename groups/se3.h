@@ -8,7 +8,7 @@
 //
 // SemidirectProduct<SO3> is the same group composed from SO3's functions
 // (groups/semidirect_product.h; its name and Casimirs at the end of this file). Its trajectories
-// agree with SE3's for every method (tests/unit/test_semidirect_products.cc); SE3 stays as the
+// agree with SE3's for every method (tests/unit/test_group_products.cc); SE3 stays as the
 // hand-written specialisation because its step is faster (docs/results/benchmarks.md, "SE(3)
 // composed against SE(3) written out").
 #pragma once

@@ -14,6 +14,7 @@
 #include <ddb/core/solver_options.h>
 #include <ddb/core/thread_pool.h>
 #include <ddb/ddb.h>
+#include <ddb/groups/direct_product.h>
 #include <ddb/groups/se2.h>
 #include <ddb/groups/se3.h>
 #include <ddb/groups/semidirect_product.h>
@@ -241,6 +242,9 @@ static_assert(typesAre<ddb::SE2, 3, Eigen::Matrix<double, 3, 1>, Eigen::Matrix<d
                        Eigen::Matrix<double, 3, 3>, Eigen::Matrix<double, 1, 1>>());
 static_assert(typesAre<ddb::SemidirectProduct<SO3>, 6, Eigen::Matrix<double, 6, 1>,
                        Eigen::Matrix<double, 6, 1>, Eigen::Matrix<double, 4, 4>,
+                       Eigen::Matrix<double, 2, 1>>());
+static_assert(typesAre<ddb::DirectProduct<SO3, ddb::SE2>, 6, Eigen::Matrix<double, 6, 1>,
+                       Eigen::Matrix<double, 6, 1>, Eigen::Matrix<double, 6, 6>,
                        Eigen::Matrix<double, 2, 1>>());
 // A group made of groups: SE2 is SemidirectProduct<SO2>; SemidirectProductTraits<G> states the
 // product's name and Casimirs, and optionally expIntegral and expIntegralInverse.

@@ -4,6 +4,7 @@
 
 #include <ddb/core/group_traits.h>
 #include <ddb/groups/cayley.h>
+#include <ddb/groups/direct_product.h>
 #include <ddb/groups/exponential.h>
 #include <ddb/groups/se2.h>
 #include <ddb/groups/se3.h>
@@ -49,11 +50,13 @@ struct GroupAt {
 // suites (test_groups.cc: every group; test_retractions.cc: every group with the
 // Cayley and exponential retractions) are instantiated from these lists. Matrix
 // groups run at N = 2..6 (Samples::sizes). SemidirectProduct<SO3> is SE(3) composed from SO(3)'s
-// functions (groups/semidirect_product.h). ----
+// functions (groups/semidirect_product.h); DirectProduct<SO3, SE2> pairs a group with a product
+// (groups/direct_product.h). ----
 template <template <class> class R>
 using GroupsWith =
     ::testing::Types<GroupAt<SO2, R>, GroupAt<SO3, R>, GroupAt<SE2, R>, GroupAt<SE3, R>,
-                     GroupAt<SemidirectProduct<SO3>, R>, GroupAt<SON, R>, GroupAt<SUN, R>>;
+                     GroupAt<SemidirectProduct<SO3>, R>, GroupAt<DirectProduct<SO3, SE2>, R>,
+                     GroupAt<SON, R>, GroupAt<SUN, R>>;
 struct AllGroups {
   using Groups = GroupsWith<Cayley>;
   template <template <class> class R>
