@@ -18,6 +18,7 @@
 #pragma once
 
 #include <ddb/core/detail/has_retraction_jacobian.h>
+#include <ddb/core/detail/is_complete.h>
 #include <ddb/core/lie_group.h>
 
 #include <Eigen/Core>
@@ -61,8 +62,15 @@ template <class G>
 struct SemidirectProduct : LieGroupBase<SemidirectProduct<G>> {
   using Factor = G;
   using Traits = SemidirectProductTraits<G>;
+  static_assert(detail::kIsComplete<Traits>,
+                "SemidirectProduct<G> needs SemidirectProductTraits<G>: specialise it with kName, "
+                "kNumCasimirs and casimirs(pi, gamma) (groups/se2.h has SO(2)'s)");
   static_assert(G::kDim != Eigen::Dynamic,
                 "SemidirectProduct<G> composes a fixed-size group G (static kDim and matrices)");
+  static_assert(G::template Matrix<double>::RowsAtCompileTime ==
+                        G::template Matrix<double>::ColsAtCompileTime &&
+                    std::is_same_v<typename G::template Matrix<double>::Scalar, double>,
+                "SemidirectProduct<G>: G must act on R^n by real n x n matrices");
   /// n: G acts on Rⁿ by its n×n matrices.
   static constexpr int kVectorDim = G::template Matrix<double>::RowsAtCompileTime;
   static constexpr int kFactorDim = G::kDim;

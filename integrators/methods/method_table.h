@@ -6,6 +6,7 @@
 // in makeMethod's switch).
 #pragma once
 
+#include <ddb/core/detail/is_complete.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/group_traits.h>
 #include <ddb/core/matrix_traits.h>
@@ -247,12 +248,6 @@ MethodPointer<G> withRetraction(RetractionKind r, std::shared_ptr<const LiePoiss
   }
   throw std::logic_error("method table: a retraction the group has not");
 }
-
-/// Whether T is a complete type at this point of the translation unit.
-template <class T, class = void>
-inline constexpr bool kIsComplete = false;
-template <class T>
-inline constexpr bool kIsComplete<T, std::void_t<decltype(sizeof(T))>> = true;
 
 /// The adaptive reference on G; its header is Boost.Odeint's, so a program includes it only
 /// where it builds the reference itself.
