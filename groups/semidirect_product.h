@@ -31,12 +31,16 @@
 namespace ddb {
 
 /// What SemidirectProduct<G> takes from its user: specialise it for G with
-///   static constexpr const char* kName;             the product's name
+/// @code
+///   static constexpr const char* kName;             // the product's name
 ///   static constexpr int kNumCasimirs;
 ///   template <class T> static Eigen::Matrix<T, kNumCasimirs, 1> casimirs(pi, gamma);
+/// @endcode
 /// and, optionally, closed forms of φ(Ω)v = Σ_k Ω^k v/(k+1)! and of its inverse:
+/// @code
 ///   template <class T> static Vector<T> expIntegral(omega, v);
 ///   template <class T> static Vector<T> expIntegralInverse(omega, r);
+/// @endcode
 template <class G>
 struct SemidirectProductTraits;
 
