@@ -25,6 +25,8 @@
 #include <ddb/groups/so2.h>
 #include <ddb/groups/so3.h>
 #include <ddb/groups/son.h>
+#include <ddb/groups/special_euclidean.h>
+#include <ddb/groups/special_orthogonal.h>
 #include <ddb/groups/sun.h>
 #include <ddb/integrators/drivers/flow_rate.h>
 #include <ddb/integrators/drivers/integrate.h>
@@ -40,6 +42,7 @@
 #include <ddb/integrators/methods/strang_splitting.h>
 #include <ddb/integrators/methods/symmetric_ddb.h>
 #include <ddb/integrators/solvers/matrix_legendre.h>
+#include <ddb/systems/body_inertia.h>
 #include <ddb/systems/heavy_top.h>
 #include <ddb/systems/hoppe_yau_laplacian.h>
 #include <ddb/systems/kirchhoff.h>

@@ -55,6 +55,14 @@ struct HasExpIntegral<
                     std::declval<const W&>(), std::declval<const V&>()))>> : std::true_type {};
 
 template <class G, class = void>
+struct HasCayAdDual : std::false_type {};
+template <class G>
+struct HasCayAdDual<G, std::void_t<decltype(G::cayAdDual(
+                           std::declval<const typename G::template Algebra<double>&>(),
+                           std::declval<const typename G::template Dual<double>&>()))>>
+    : std::true_type {};
+
+template <class G, class = void>
 struct HasGroupAdRadius : std::false_type {};
 template <class G>
 struct HasGroupAdRadius<G, std::void_t<decltype(G::adRadius(
@@ -178,12 +186,13 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G>> {
     return Traits::casimirs(factor(mu), vector(mu));
   }
 
-  /// cay(ω, v) = [[cay_G(ω), A⁻¹v], [0, 1]], A = I − Ω/2.
+  /// cay(ω, v) = [[cay_G(ω), A⁻¹v], [0, 1]], A = I − Ω/2, A⁻¹ = (cay_G(ω) + I)/2.
   template <class T>
   static Matrix<T> cay(const Algebra<T>& x) {
+    const FactorMatrix<T> rotation = G::cay(factor(x));
     Matrix<T> g = Matrix<T>::Identity();
-    g.template topLeftCorner<kVectorDim, kVectorDim>() = G::cay(factor(x));
-    g.template topRightCorner<kVectorDim, 1>() = cayTranslation(x);
+    g.template topLeftCorner<kVectorDim, kVectorDim>() = rotation;
+    g.template topRightCorner<kVectorDim, 1>() = halfStepInverseOf<T>(rotation) * vector(x);
     return g;
   }
   /// cay^{-1}(g, r) = (cay_G^{-1}(g), A r), with A from ω = cay_G^{-1}(g).
@@ -199,7 +208,8 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G>> {
   template <class T>
   static Algebra<T> dcay(const Algebra<T>& x, const Algebra<T>& y) {
     const FactorAlgebra<T> k = G::dcay(factor(x), factor(y));
-    return join(k, Vector<T>(halfStep(x).inverse() * vector(y) - G::hat(k) * vector(x) * T(0.5)));
+    return join(
+        k, Vector<T>(halfStepInverse<T>(factor(x)) * vector(y) - G::hat(k) * vector(x) * T(0.5)));
   }
   /// dcay^{-1}_(ω,v)(η, u) = (dcay^{-1}_ω η, A(u + H v/2)), H = hat_G(η).
   template <class T>
@@ -225,11 +235,10 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G>> {
     const FactorAlgebra<T> w = factor(x);
     const Vector<T> gamma = vector(mu);
     const FactorMatrix<T> Omega = G::hat(w);
-    // A⁻¹ by its closed form (n ≤ 4: cofactors), once for r and for the γ part.
-    const FactorMatrix<T> A_inverse = (FactorMatrix<T>::Identity() - Omega * T(0.5)).inverse();
+    // A⁻¹ once, for r and for the γ part.
+    const FactorMatrix<T> A_inverse = halfStepInverse<T>(w);
     const Vector<T> r = A_inverse * vector(x);
-    return join(G::cayTransport(w, FactorAlgebra<T>(FactorAlgebra<T>::Zero()),
-                                FactorDual<T>(factor(mu) - diamond<T>(r, gamma))),
+    return join(factorCayAdDual<T>(w, FactorDual<T>(factor(mu) - diamond<T>(r, gamma))),
                 Vector<T>(gamma + A_inverse.transpose() * Vector<T>(Omega.transpose() * gamma)));
   }
   /// Ad*_{cay(a) cay(b)} μ = Ad*_{cay(b)} Ad*_{cay(a)} μ, the DDB update (paper, eq. (4.12)).
@@ -327,15 +336,31 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G>> {
   }
 
  private:
+  /// Ad*_{cay_G(w)} π by G's one-factor closed form where it has one (SO3), else by G's Ad* of
+  /// G's Cayley map: not G's transport of two factors, the second of which would be the identity.
+  template <class T>
+  static FactorDual<T> factorCayAdDual(const FactorAlgebra<T>& w, const FactorDual<T>& pi) {
+    if constexpr (detail::HasCayAdDual<G>::value) {
+      return G::cayAdDual(w, pi);
+    } else {
+      return G::AdDual(FactorMatrix<T>(G::cay(w)), pi);
+    }
+  }
   /// A = I − Ω/2.
   template <class T>
   static FactorMatrix<T> halfStep(const Algebra<T>& x) {
     return FactorMatrix<T>::Identity() - G::hat(factor(x)) * T(0.5);
   }
-  /// A⁻¹v, the translation of cay(ω, v) (A⁻¹ by its closed form for n ≤ 4: cofactors).
+  /// A⁻¹ = (cay_G(ω) + I)/2, as cay_G(ω) = A⁻¹(I + Ω/2) = A⁻¹(2I − A): no inverse where G's
+  /// Cayley map is a closed form (SO2, SO3; else G's one solve).
   template <class T>
-  static Vector<T> cayTranslation(const Algebra<T>& x) {
-    return halfStep(x).inverse() * vector(x);
+  static FactorMatrix<T> halfStepInverse(const FactorAlgebra<T>& w) {
+    return halfStepInverseOf<T>(G::cay(w));
+  }
+  /// The same given cay_G(ω).
+  template <class T>
+  static FactorMatrix<T> halfStepInverseOf(const FactorMatrix<T>& rotation) {
+    return (rotation + FactorMatrix<T>::Identity()) * T(0.5);
   }
   /// The matrix of γ ↦ v ⋄ γ.
   static Eigen::Matrix<double, kFactorDim, kVectorDim> diamondMatrix(const Vector<double>& v) {

@@ -20,7 +20,7 @@ void bindMethods(py::module_& m) {
         for (const MethodInfo& method : kMethods) {
           std::vector<std::string> groups;
           if (method.groups & kFixedSizeGroups) {
-            groups.insert(groups.end(), {SO3::kName, SE3::kName});
+            groups.insert(groups.end(), {SO3::kName, SE2::kName, SE3::kName});
           }
           if (method.groups & kMatrixGroups) groups.insert(groups.end(), {SON::kName, SUN::kName});
           py::dict row;
@@ -37,11 +37,11 @@ void bindMethods(py::module_& m) {
         return rows;
       },
       "Every integrator of the method table, in the paper's order: a list of dicts with "
-      "name (what integrate() takes), description, groups (the groups it runs on: SO3, SE3, "
+      "name (what integrate() takes), description, groups (the groups it runs on: SO3, SE2, SE3, "
       "SO(N), SU(N)), keeps_casimirs (the DDB family: states stay on mu0's coadjoint orbit), "
-      "needs_lagrangian (applies only to a system with a Lagrangian: rigid_body, kirchhoff), "
-      "needs_scalar_metric (applies only with the metric alpha * identity: not heavy_top, "
-      "kirchhoff), "
+      "needs_lagrangian (applies only to a system with a Lagrangian: rigid_body, kirchhoff, "
+      "planar_kirchhoff), needs_scalar_metric (applies only with the metric alpha * identity: not "
+      "heavy_top, kirchhoff, planar_kirchhoff), "
       "order (in mu with alpha != 0; 0 for the adaptive reference) and "
       "order_without_dissipation. System.methods() lists those that apply to a system.");
 }

@@ -73,6 +73,20 @@ void bindScenarios(py::module_& m) {
       .def(
           "system", [](const KirchhoffSetup& s) { return std::make_shared<System>(s.system()); },
           "The Kirchhoff body of these parameters.");
+  py::class_<PlanarKirchhoffSetup>(m, "PlanarKirchhoffSetup",
+                                   "The apps' default planar Kirchhoff body: its parameters (each "
+                                   "may be changed), mu0 and t_end.")
+      .def(py::init<>())
+      .def_readwrite("inertia", &PlanarKirchhoffSetup::inertia)
+      .def_readwrite("mass", &PlanarKirchhoffSetup::mass)
+      .def_readwrite("mu0", &PlanarKirchhoffSetup::mu0)
+      .def_readwrite("metric", &PlanarKirchhoffSetup::metric)
+      .def_readwrite("alpha", &PlanarKirchhoffSetup::alpha)
+      .def_readwrite("t_end", &PlanarKirchhoffSetup::t_end)
+      .def(
+          "system",
+          [](const PlanarKirchhoffSetup& s) { return std::make_shared<System>(s.system()); },
+          "The planar Kirchhoff body of these parameters.");
 }
 
 }  // namespace ddb::python

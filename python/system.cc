@@ -30,13 +30,13 @@ py::object perState(const System& s, py::handle states, bool scalar, F&& f) {
 void bindSystem(py::module_& m) {
   py::class_<System, std::shared_ptr<System>>(
       m, "System",
-      "A Lie-Poisson system with double-bracket dissipation on SO3, SE3, SO(N) or SU(N). "
-      "Built by rigid_body, heavy_top, kirchhoff, manakov, zeitlin, user_system or a "
-      "scenario's system().")
+      "A Lie-Poisson system with double-bracket dissipation on SO3, SE2, SE3, SO(N) or SU(N). "
+      "Built by rigid_body, heavy_top, kirchhoff, planar_kirchhoff, manakov, zeitlin, "
+      "user_system or a scenario's system().")
       .def_property_readonly("name", &System::name)
-      .def_property_readonly("group", &System::group, "SO3, SE3, SO(N) or SU(N)")
+      .def_property_readonly("group", &System::group, "SO3, SE2, SE3, SO(N) or SU(N)")
       .def_property_readonly("n", &System::n,
-                             "N of SO(N), SU(N) (states are N x N); 0 on SO3 and SE3")
+                             "N of SO(N), SU(N) (states are N x N); 0 on SO3, SE2 and SE3")
       .def_property_readonly(
           "state_shape",
           [](const System& s) {
@@ -44,7 +44,7 @@ void bindSystem(py::module_& m) {
               return py::tuple(py::cast(stateShape<GroupOf<decltype(p)>>(s.n())));
             });
           },
-          "the shape of one state: (3,), (6,) or (N, N)")
+          "the shape of one state: (3,) (SO3, SE2), (6,) (SE3) or (N, N)")
       .def(
           "energy",
           [](const System& s, py::handle states) {

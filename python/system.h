@@ -1,8 +1,9 @@
-// ddb.System: a LiePoissonSystem on one of the groups the module binds (SO(3), SE(3),
+// ddb.System: a LiePoissonSystem on one of the groups the module binds (SO(3), SE(2), SE(3),
 // SO(N), SU(N)), with N for the matrix groups; what integrate() and the diagnostics take.
 #pragma once
 
 #include <ddb/core/lie_poisson_system.h>
+#include <ddb/groups/se2.h>
 #include <ddb/groups/se3.h>
 #include <ddb/groups/so3.h>
 #include <ddb/groups/son.h>
@@ -19,8 +20,8 @@ namespace ddb::python {
 template <class G>
 using SystemPointer = std::shared_ptr<const LiePoissonSystem<G>>;
 
-using AnySystem =
-    std::variant<SystemPointer<SO3>, SystemPointer<SE3>, SystemPointer<SON>, SystemPointer<SUN>>;
+using AnySystem = std::variant<SystemPointer<SO3>, SystemPointer<SE2>, SystemPointer<SE3>,
+                               SystemPointer<SON>, SystemPointer<SUN>>;
 
 /// G of a SystemPointer<G> (as a generic lambda given to System::visit sees it).
 template <class P>
@@ -28,7 +29,7 @@ using GroupOf = typename std::decay_t<decltype(*std::declval<P>())>::Group;
 
 class System {
  public:
-  /// `n`: N of a matrix group (unused on SO(3), SE(3)).
+  /// `n`: N of a matrix group (unused on SO(3), SE(2), SE(3)).
   template <class G>
   explicit System(SystemPointer<G> system, Eigen::Index n = 0)
       : system_(std::move(system)), n_(n) {}

@@ -1,5 +1,6 @@
-// The library's systems by their factories (systems/): rigid body, heavy top and Kirchhoff
-// body with the defaults of systems/paper_scenarios.h, and the Manakov body on SO(N).
+// The library's systems by their factories (systems/): rigid body, heavy top, Kirchhoff body and
+// planar Kirchhoff body with the defaults of systems/paper_scenarios.h, and the Manakov body on
+// SO(N).
 #include <ddb/systems/manakov_body.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <pybind11/eigen.h>
@@ -52,6 +53,19 @@ void bindSystems(py::module_& m) {
       py::arg("metric") = body.metric,
       "The Kirchhoff body on SE3 (a rigid body with added masses `mass`), k# = alpha "
       "diag(metric). Defaults: KirchhoffSetup().");
+  const PlanarKirchhoffSetup planar;
+  m.def(
+      "planar_kirchhoff",
+      [](py::handle inertia, py::handle mass, py::handle alpha, py::handle metric) {
+        return std::make_shared<System>(makePlanarKirchhoffBody(
+            realArgument("inertia", inertia), vectorArgument<2>("mass", mass),
+            realArgument("alpha", alpha), vectorArgument<3>("metric", metric)));
+      },
+      py::arg("inertia") = planar.inertia, py::arg("mass") = planar.mass,
+      py::arg("alpha") = planar.alpha, py::arg("metric") = planar.metric,
+      "Kirchhoff's body in the plane on SE2: mu = (pi, P1, P2), H = pi^2/(2 inertia) + "
+      "P1^2/(2 m1) + P2^2/(2 m2) with mass = (m1, m2), k# = alpha diag(metric) (3 numbers >= 0). "
+      "Casimir |P|^2. Defaults: PlanarKirchhoffSetup().");
   m.def(
       "manakov",
       [](py::handle J, py::handle alpha) {

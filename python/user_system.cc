@@ -135,6 +135,9 @@ void bindUserSystem(py::module_& m) {
         if (group == SO3::kName) {
           return userSystem<SO3>(name, hamiltonian, gradient, hessian_times, alpha, metric, n);
         }
+        if (group == SE2::kName) {
+          return userSystem<SE2>(name, hamiltonian, gradient, hessian_times, alpha, metric, n);
+        }
         if (group == SE3::kName) {
           return userSystem<SE3>(name, hamiltonian, gradient, hessian_times, alpha, metric, n);
         }
@@ -144,20 +147,21 @@ void bindUserSystem(py::module_& m) {
         if (group == SUN::kName) {
           return userSystem<SUN>(name, hamiltonian, gradient, hessian_times, alpha, metric, n);
         }
-        throwInvalid("group", group, "expected one of SO3, SE3, SO(N), SU(N)");
+        throwInvalid("group", group, "expected one of SO3, SE2, SE3, SO(N), SU(N)");
       },
       py::arg("group"), py::arg("hamiltonian"), py::arg("gradient"),
       py::arg("hessian_times") = py::none(), py::arg("alpha") = 0.0, py::arg("metric") = py::none(),
       py::arg("N") = 0, py::arg("name") = "user",
       R"doc(A Lie-Poisson system whose Hamiltonian is written in Python.
 
-group: "SO3" (states (3,)), "SE3" ((6,)), "SO(N)" (real (N, N)) or "SU(N)" (complex (N, N)).
+group: "SO3" (states (3,)), "SE2" ((3,)), "SE3" ((6,)), "SO(N)" (real (N, N)) or "SU(N)"
+    (complex (N, N)).
 hamiltonian: H(mu) -> float.
 gradient: dH/dmu(mu) -> array of mu's shape. On SO(N), SU(N) the system hands H the state
     projected onto the algebra and projects the gradient (docs/reference/conventions.md §2).
 hessian_times: optional (mu, v) -> D^2H(mu)[v]; without it a central difference of
     `gradient` (good to ~4e-11 relative: it costs Newton iterations, not accuracy).
-alpha, metric: the dissipation k# = alpha diag(metric) (SO3, SE3; metric: 3 or 6 numbers
+alpha, metric: the dissipation k# = alpha diag(metric) (SO3, SE2, SE3; metric: 3 or 6 numbers
     >= 0), or alpha Id when metric is None (the only choice on SO(N), SU(N)).
 N: the matrix size on SO(N), SU(N).
 name: the system's name.

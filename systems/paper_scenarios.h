@@ -1,5 +1,6 @@
 // The paper's scenario data (Section 5; docs/reference/conventions.md §3) and the default heavy
-// top and Kirchhoff body, written once for the apps, the benchmark and the tests.
+// top, Kirchhoff body and planar Kirchhoff body, written once for the apps, the benchmark and the
+// tests.
 // Each value type holds plain data and builds its system and initial momentum on demand,
 // so that a caller can start from a scenario and override single parameters.
 #pragma once
@@ -7,6 +8,7 @@
 #include <ddb/core/errors.h>
 #include <ddb/systems/heavy_top.h>
 #include <ddb/systems/kirchhoff.h>
+#include <ddb/systems/planar_kirchhoff.h>
 #include <ddb/systems/rigid_body.h>
 
 #include <cmath>
@@ -74,6 +76,26 @@ struct KirchhoffSetup {
     return makeKirchhoffBody(inertia, mass, alpha, metric);
   }
   bool sameParameters(const KirchhoffSetup& o) const {
+    return inertia == o.inertia && mass == o.mass && mu0 == o.mu0 && metric == o.metric &&
+           alpha == o.alpha;
+  }
+};
+
+/// Kirchhoff's planar body (moment of inertia I, added masses (m₁, m₂)) with k♯ = α diag(metric):
+/// from μ₀ it relaxes to the energy's minimum on its orbit |P| = |P₀|, c²/(2 max m)
+/// (docs/guide/defining-a-system.md, "A group made of groups").
+struct PlanarKirchhoffSetup {
+  double inertia = 0.5;
+  Eigen::Vector2d mass = Eigen::Vector2d(1.0, 3.0);
+  Eigen::Vector3d mu0 = Eigen::Vector3d(0.3, 1.0, 0.2);
+  Eigen::Vector3d metric = Eigen::Vector3d::Ones();
+  double alpha = 0.5;
+  double t_end = 30.0;
+
+  std::shared_ptr<const LiePoissonSystem<SE2>> system() const {
+    return makePlanarKirchhoffBody(inertia, mass, alpha, metric);
+  }
+  bool sameParameters(const PlanarKirchhoffSetup& o) const {
     return inertia == o.inertia && mass == o.mass && mu0 == o.mu0 && metric == o.metric &&
            alpha == o.alpha;
   }

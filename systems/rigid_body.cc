@@ -3,12 +3,6 @@
 
 namespace ddb {
 
-Eigen::Vector3d invertInertia(const Eigen::Vector3d& inertia) {
-  const Eigen::Vector3d inverse = requirePositive("inertia", inertia).cwiseInverse();
-  if (!inverse.allFinite()) throwInvalid("inertia", formatValue(inertia), "1/inertia overflows");
-  return inverse;
-}
-
 std::shared_ptr<const LiePoissonSystem<SO3>> makeRigidBody(const Eigen::Vector3d& inertia,
                                                            double alpha) {
   return makeLiePoissonSystem("rigid-body", std::make_shared<const RigidBodyHamiltonian>(inertia),

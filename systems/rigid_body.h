@@ -13,8 +13,14 @@
 namespace ddb {
 
 /// 𝕀⁻¹ of principal moments that must be finite and > 0, with 1/𝕀 finite too (a moment
-/// below ~1e-308 would make it inf).
-Eigen::Vector3d invertInertia(const Eigen::Vector3d& inertia);
+/// below ~1e-308 would make it inf). Any number of moments: the N-dimensional heavy top has
+/// N(N−1)/2 (systems/heavy_top.h).
+template <int D>
+Eigen::Matrix<double, D, 1> invertInertia(const Eigen::Matrix<double, D, 1>& inertia) {
+  const Eigen::Matrix<double, D, 1> inverse = requirePositive("inertia", inertia).cwiseInverse();
+  if (!inverse.allFinite()) throwInvalid("inertia", formatValue(inertia), "1/inertia overflows");
+  return inverse;
+}
 
 class RigidBodyLagrangian final : public AutoDiffLagrangian<RigidBodyLagrangian, SO3> {
  public:

@@ -313,6 +313,7 @@ int runComparison(const Options& o, const Settings& s, const Problem<G>& problem
 }
 
 template int runComparison<SO3>(const Options&, const Settings&, const Problem<SO3>&);
+template int runComparison<SE2>(const Options&, const Settings&, const Problem<SE2>&);
 template int runComparison<SE3>(const Options&, const Settings&, const Problem<SE3>&);
 template int runComparison<SON>(const Options&, const Settings&, const Problem<SON>&);
 template int runComparison<SUN>(const Options&, const Settings&, const Problem<SUN>&);

@@ -4,6 +4,7 @@
 // with --sweep-h, over a range of step sizes.
 #pragma once
 
+#include <ddb/groups/se2.h>
 #include <ddb/groups/se3.h>
 #include <ddb/groups/so3.h>
 #include <ddb/groups/son.h>
@@ -21,6 +22,7 @@ template <class G>
 int runComparison(const Options& o, const Settings& s, const Problem<G>& problem);
 
 extern template int runComparison<SO3>(const Options&, const Settings&, const Problem<SO3>&);
+extern template int runComparison<SE2>(const Options&, const Settings&, const Problem<SE2>&);
 extern template int runComparison<SE3>(const Options&, const Settings&, const Problem<SE3>&);
 extern template int runComparison<SON>(const Options&, const Settings&, const Problem<SON>&);
 extern template int runComparison<SUN>(const Options&, const Settings&, const Problem<SUN>&);

@@ -45,6 +45,7 @@ std::string helpFooter() {
   const RigidBodyScenario& a = rigidBodyScenarios().front();
   const HeavyTopSetup top;
   const KirchhoffSetup kirchhoff;
+  const PlanarKirchhoffSetup planar;
   return "\nSystems (--system):\n" + app::describeChoices(systemDescriptions()) +
          "\nScenarios (--scenario, rigid body only; alpha " + shortList(a.alpha) + ", omega0 " +
          shortList(a.omega0) + ", M0 = inertia * omega0):\n" +
@@ -56,14 +57,17 @@ std::string helpFooter() {
          "\nMethods (--method; default: every method that applies to the system):\n" +
          app::describeChoices(methodDescriptions()) +
          "On manakov and zeitlin: " + methodList(kMatrixGroups) +
-         "\n\nDefaults of the other systems (heavy-top and kirchhoff: t-end " +
+         "\n\nDefaults of the other systems (heavy-top, kirchhoff and planar-kirchhoff: t-end " +
          shortList(top.t_end) + "):\n  heavy-top  inertia " + shortList(top.inertia) + ", mgl " +
          shortList(top.mgl) + ", chi " + shortList(top.chi) + ", mu0 " + shortList(top.mu0) +
          ", metric " + shortList(top.metric) + ", alpha " + shortList(top.alpha) +
          "\n  kirchhoff  inertia " + shortList(kirchhoff.inertia) + ", mass " +
          shortList(kirchhoff.mass) + ", mu0 " + shortList(kirchhoff.mu0) + ", metric " +
          shortList(kirchhoff.metric) + ", alpha " + shortList(kirchhoff.alpha) +
-         "\n  manakov    n " + std::to_string(kManakovDefaultN) +
+         "\n  planar-kirchhoff  inertia " + shortList(planar.inertia) + ", mass " +
+         shortList(planar.mass) + ", mu0 " + shortList(planar.mu0) + ", metric " +
+         shortList(planar.metric) + ", alpha " + shortList(planar.alpha) + "\n  manakov    n " +
+         std::to_string(kManakovDefaultN) +
          ", j_i = 1 + (i-1)/(n-1) (1 to 2), M0 the real part of the seeded random vorticity "
          "scaled to |M0|_F = sqrt(n), alpha " +
          shortList(kMatrixDefaultAlpha) + ", t-end " + shortList(kMatrixDefaultTEnd) +
@@ -111,10 +115,12 @@ void addOptions(CLI::App& cli, Options& o) {
       ->check(app::fitsIn<decltype(o.repeat)>());
   cli.add_option(
       "--inertia", o.inertia,
-      forSystems("--inertia", "principal moments a,b,c (default: scenario A/B " +
-                                  shortList(a.inertia) + ", C " +
-                                  shortList(rigidBodyScenarios().back().inertia) +
-                                  ", other systems " + shortList(HeavyTopSetup().inertia) + ")"));
+      forSystems("--inertia",
+                 "principal moments a,b,c (default: scenario A/B " + shortList(a.inertia) + ", C " +
+                     shortList(rigidBodyScenarios().back().inertia) + ", heavy-top and kirchhoff " +
+                     shortList(HeavyTopSetup().inertia) +
+                     "; planar-kirchhoff: one moment, default " +
+                     shortList(PlanarKirchhoffSetup().inertia) + ")"));
   cli.add_option(
       "--alpha", o.alpha,
       "dissipation scale, K = alpha I or alpha diag(metric) (default " + shortList(a.alpha) + ")");
@@ -126,13 +132,17 @@ void addOptions(CLI::App& cli, Options& o) {
   cli.add_option("--chi", o.chi,
                  forSystems("--chi", "centre-of-mass direction x,y,z (default " +
                                          shortList(HeavyTopSetup().chi) + ")"));
-  cli.add_option("--mu0", o.mu0, forSystems("--mu0", "initial momentum, 6 numbers (below)"));
+  cli.add_option("--mu0", o.mu0,
+                 forSystems("--mu0", "initial momentum, 6 numbers (planar-kirchhoff: 3; below)"));
   cli.add_option("--metric", o.metric,
-                 forSystems("--metric", "k1,...,k6, K = alpha diag(k) (default " +
-                                            shortList(HeavyTopSetup().metric) + ")"));
-  cli.add_option("--mass", o.mass,
-                 forSystems("--mass", "added masses m1,m2,m3 (default " +
-                                          shortList(KirchhoffSetup().mass) + ")"));
+                 forSystems("--metric",
+                            "k1,...,k6 (planar-kirchhoff: k1,k2,k3), K = alpha "
+                            "diag(k) (default all 1)"));
+  cli.add_option(
+      "--mass", o.mass,
+      forSystems("--mass", "added masses m1,m2,m3 (default " + shortList(KirchhoffSetup().mass) +
+                               "; planar-kirchhoff: m1,m2, default " +
+                               shortList(PlanarKirchhoffSetup().mass) + ")"));
   cli.add_option("--n", o.n,
                  forSystems("--n", "N of SO(N) or SU(N), 2 <= N <= " + std::to_string(kMaxMatrixN) +
                                        " (default manakov " + std::to_string(kManakovDefaultN) +

@@ -64,7 +64,7 @@ Setup se3Parameters(const Options& o, Setup setup, Problem<SE3>& p) {
 }
 
 /// These systems have no paper scenario: "none" with the defaults, else "custom".
-const char* se3Scenario(bool custom) { return custom ? "custom" : "none"; }
+const char* noScenario(bool custom) { return custom ? "custom" : "none"; }
 
 }  // namespace
 
@@ -76,7 +76,7 @@ Problem<SE3> heavyTopProblem(const CLI::App&, const Options& o) {
   p.system = s.system();
   p.parameters["mgl"] = s.mgl;
   p.parameters["chi"] = app::jsonArray(s.chi);
-  p.scenario = se3Scenario(!s.sameParameters(HeavyTopSetup()));
+  p.scenario = noScenario(!s.sameParameters(HeavyTopSetup()));
   return p;
 }
 
@@ -87,7 +87,31 @@ Problem<SE3> kirchhoffProblem(const CLI::App&, const Options& o) {
   requirePositiveEntries("--mass", o.mass, s.mass);
   p.system = s.system();
   p.parameters["mass"] = app::jsonArray(s.mass);
-  p.scenario = se3Scenario(!s.sameParameters(KirchhoffSetup()));
+  p.scenario = noScenario(!s.sameParameters(KirchhoffSetup()));
+  return p;
+}
+
+Problem<SE2> planarKirchhoffProblem(const CLI::App&, const Options& o) {
+  const PlanarKirchhoffSetup defaults;
+  PlanarKirchhoffSetup s = defaults;
+  if (o.inertia.find(',') != std::string::npos) {
+    app::usageError("--inertia", o.inertia, "expected 1 number (the body's one moment of inertia)");
+  }
+  s.inertia = optionalNumber("--inertia", o.inertia, defaults.inertia);
+  if (!(s.inertia > 0)) app::usageError("--inertia", o.inertia, "must be > 0");
+  s.mass = optionalVector<2>("--mass", o.mass, defaults.mass);
+  requirePositiveEntries("--mass", o.mass, s.mass);
+  s.alpha = optionalNumber("--alpha", o.alpha, defaults.alpha);
+  s.mu0 = optionalVector<3>("--mu0", o.mu0, defaults.mu0);
+  s.metric = optionalVector<3>("--metric", o.metric, defaults.metric);
+  if ((s.metric.array() < 0).any()) app::usageError("--metric", o.metric, "entries must be >= 0");
+  Problem<SE2> p{s.system(), s.mu0, noScenario(!s.sameParameters(defaults)), "", s.t_end,
+                 s.alpha,    {}};
+  p.parameters["inertia"] = s.inertia;
+  p.parameters["mass"] = app::jsonArray(s.mass);
+  p.parameters["alpha"] = s.alpha;
+  p.parameters["metric"] = app::jsonArray(s.metric);
+  p.parameters["mu0"] = app::jsonArray(s.mu0);
   return p;
 }
 

@@ -1,11 +1,12 @@
 // ddb-compare's problems (docs/reference/command-lines-and-files.md, "ddb-compare"): the rigid body
-// of a paper scenario (docs/reference/conventions.md §3) or the heavy top or Kirchhoff body, with
-// the parameters given on the command line, and the check that the reference can resolve the
-// flow (docs/reference/bad-inputs.md, "Decisions").
+// of a paper scenario (docs/reference/conventions.md §3) or the heavy top, Kirchhoff body or planar
+// Kirchhoff body, with the parameters given on the command line, and the check that the reference
+// can resolve the flow (docs/reference/bad-inputs.md, "Decisions").
 #pragma once
 
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
+#include <ddb/groups/se2.h>
 #include <ddb/groups/se3.h>
 #include <ddb/groups/so3.h>
 #include <ddb/integrators/drivers/flow_rate.h>
@@ -50,6 +51,9 @@ Problem<SE3> heavyTopProblem(const CLI::App& cli, const Options& o);
 
 /// The Kirchhoff body with the given parameters over the defaults (KirchhoffSetup).
 Problem<SE3> kirchhoffProblem(const CLI::App& cli, const Options& o);
+
+/// Kirchhoff's planar body with the given parameters over the defaults (PlanarKirchhoffSetup).
+Problem<SE2> planarKirchhoffProblem(const CLI::App& cli, const Options& o);
 
 /// Why the reference cannot follow the flow from μ₀ to t_end in at most kMaxSteps of
 /// its time scale 1/rate, or "" if it can. An overflowing or extremely stiff problem

@@ -21,6 +21,8 @@
 #include <ddb/groups/so2.h>
 #include <ddb/groups/so3.h>
 #include <ddb/groups/son.h>
+#include <ddb/groups/special_euclidean.h>
+#include <ddb/groups/special_orthogonal.h>
 #include <ddb/groups/sun.h>
 #include <ddb/integrators/drivers/energy_step_control.h>
 #include <ddb/integrators/drivers/integrate.h>
@@ -42,6 +44,7 @@
 #include <ddb/integrators/solvers/matrix_legendre.h>
 #include <ddb/integrators/solvers/orbit_newton.h>
 #include <ddb/integrators/solvers/orbit_preconditioner.h>
+#include <ddb/systems/body_inertia.h>
 #include <ddb/systems/heavy_top.h>
 #include <ddb/systems/kirchhoff.h>
 #include <ddb/systems/manakov_body.h>
@@ -246,6 +249,14 @@ static_assert(typesAre<ddb::SemidirectProduct<SO3>, 6, Eigen::Matrix<double, 6, 
 static_assert(typesAre<ddb::DirectProduct<SO3, ddb::SE2>, 6, Eigen::Matrix<double, 6, 1>,
                        Eigen::Matrix<double, 6, 1>, Eigen::Matrix<double, 6, 6>,
                        Eigen::Matrix<double, 2, 1>>());
+static_assert(
+    typesAre<ddb::SpecialOrthogonal<4>, 6, Eigen::Matrix<double, 6, 1>, Eigen::Matrix<double, 6, 1>,
+             Eigen::Matrix<double, 4, 4>, Eigen::Matrix<double, 2, 1>>());
+static_assert(typesAre<ddb::SpecialEuclidean<4>, 10, Eigen::Matrix<double, 10, 1>,
+                       Eigen::Matrix<double, 10, 1>, Eigen::Matrix<double, 5, 5>,
+                       Eigen::Matrix<double, 2, 1>>());
+static_assert(
+    std::is_same_v<ddb::SpecialEuclidean<4>, ddb::SemidirectProduct<ddb::SpecialOrthogonal<4>>>);
 // A group made of groups: SE2 is SemidirectProduct<SO2>; SemidirectProductTraits<G> states the
 // product's name and Casimirs, and optionally expIntegral and expIntegralInverse.
 static_assert(std::is_same_v<ddb::SE2, ddb::SemidirectProduct<ddb::SO2>>);
@@ -263,6 +274,11 @@ static_assert(ddb::SemidirectProductTraits<ddb::SO2>::kNumCasimirs == 1);
                                                        top.metric),
       ddb::makeKirchhoffBodyOn<ddb::SE3>(kirchhoff.inertia, kirchhoff.mass, kirchhoff.alpha,
                                          kirchhoff.metric));
+  // Ratiu's heavy top on SE(4), from the mass moments of its body.
+  const Eigen::Matrix<double, 6, 1> inertia =
+      ddb::bodyInertiaOf<4>(Eigen::Vector4d(2.0, 1.5, 1.0, 0.5));
+  use(ddb::makeHeavyTopOn<ddb::SpecialEuclidean<4>>(inertia, 0.8, Eigen::Vector4d(0, 0, 0, 1), 0.5,
+                                                    Eigen::Matrix<double, 10, 1>::Ones()));
   const auto body =
       ddb::makePlanarKirchhoffBody(0.5, Eigen::Vector2d(1.0, 3.0), 0.5, Eigen::Vector3d::Ones());
   use(ddb::makeMethod<ddb::SE2>("sddb-cay", body));
@@ -773,6 +789,11 @@ class InPlaceMetric final : public ddb::DissipationMetric<ddb::SON> {
       &ddb::HeavyTopSetup::alpha, &ddb::HeavyTopSetup::metric, &ddb::HeavyTopSetup::mu0,
       &ddb::KirchhoffSetup::inertia, &ddb::KirchhoffSetup::mass, &ddb::KirchhoffSetup::alpha,
       &ddb::KirchhoffSetup::metric, &ddb::KirchhoffSetup::mu0);
+  // ddb.planar_kirchhoff and its defaults, PlanarKirchhoffSetup.
+  const ddb::PlanarKirchhoffSetup planar;
+  use(planar.system(), &ddb::PlanarKirchhoffSetup::inertia, &ddb::PlanarKirchhoffSetup::mass,
+      &ddb::PlanarKirchhoffSetup::alpha, &ddb::PlanarKirchhoffSetup::metric,
+      &ddb::PlanarKirchhoffSetup::mu0, &ddb::PlanarKirchhoffSetup::t_end);
   // ddb.zeitlin: ZeitlinDiagnostics, SphericalHarmonicBasis (fluid_energy, enstrophy,
   // commutator_norm, stream_matrix, omega_lm, vorticity, hbar).
   const ddb::ZeitlinHamiltonian hamiltonian(8);

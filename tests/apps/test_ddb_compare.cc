@@ -7,6 +7,7 @@
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/heavy_top.h>
 #include <ddb/systems/manakov_body.h>
+#include <ddb/systems/planar_kirchhoff.h>
 #include <ddb/systems/rigid_body.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
@@ -176,6 +177,58 @@ TEST(DdbCompare, SE3SystemsWriteTwoCasimirColumns) {
   }
 }
 
+TEST(DdbCompare, PlanarKirchhoffWritesItsStateAndCasimirAndMatchesTheLibrary) {
+  // Kirchhoff's body in the plane on SE(2): three coordinates and one Casimir, |P|²; the final
+  // state against the library called directly with the parameters given.
+  const fs::path out = freshFolder("planar");
+  ASSERT_EQ(runApp("--system planar-kirchhoff --inertia 0.7 --mass 1,2 --mu0 0.3,1,0.2 "
+                   "--t-end 3 --h 0.1 --method ddb-cay,sddb-cay,rk4 --repeat 1 --out " +
+                   out.string()),
+            0);
+  const auto body =
+      ddb::makePlanarKirchhoffBody(0.7, Eigen::Vector2d(1.0, 2.0), 0.5, Eigen::Vector3d::Ones());
+  const Eigen::Vector3d mu0(0.3, 1.0, 0.2);
+  for (const std::string method : {"ddb-cay", "sddb-cay", "rk4"}) {
+    std::string header;
+    const auto rows = readCsv(out / (method + ".csv"), &header);
+    EXPECT_EQ(header, "t,m1,m2,m3,energy,casimir,h,residual");
+    ASSERT_EQ(rows.size(), 31u);
+    auto integrator = ddb::makeMethod<ddb::SE2>(method, body);
+    Eigen::Vector3d last;
+    ddb::integrate(*integrator, mu0, 0.0, 0.1, 30,
+                   [&](long, double, const Eigen::Vector3d& mu) { last = mu; });
+    for (int i = 0; i < 3; ++i) EXPECT_DOUBLE_EQ(rows.back()[1 + i], last(i)) << method;
+    EXPECT_DOUBLE_EQ(rows.back()[4], body->energy(last)) << method;
+    // |P|² = 1.04 on every row of the DDB methods, and their energy never rises.
+    if (method == "rk4") continue;
+    for (size_t k = 0; k < rows.size(); ++k) {
+      EXPECT_NEAR(rows[k][5], 1.04, 1e-14) << method << " row " << k;
+      if (k > 0) EXPECT_LE(rows[k][4], rows[k - 1][4]) << method << " row " << k;
+    }
+  }
+  Json summary = readJson(out / "summary.json");
+  EXPECT_EQ(summary["system"], "planar-kirchhoff");
+  EXPECT_EQ(summary["scenario"], "custom");
+  EXPECT_EQ(summary["parameters"]["inertia"], 0.7);
+  EXPECT_EQ(summary["parameters"]["mass"], Json::array({1.0, 2.0}));
+}
+
+TEST(DdbCompare, PlanarKirchhoffRefusesTheShapesOfTheOtherSystems) {
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"--inertia 1,2,3", "--inertia"}, {"--inertia 0", "--inertia"},
+      {"--mass 1,2,3", "--mass"},       {"--mass 1,-2", "--mass"},
+      {"--mu0 1,2,3,4,5,6", "--mu0"},   {"--metric 1,1,1,1,1,1", "--metric"},
+      {"--metric 1,-1,1", "--metric"},  {"--mgl 2", "--mgl"}};
+  for (const auto& [arguments, flag] : cases) {
+    const fs::path out = freshFolder("planar_bad");
+    const AppResult r =
+        run("--system planar-kirchhoff " + arguments + " --t-end 1 --out " + out.string());
+    EXPECT_EQ(r.status, 2) << arguments;
+    EXPECT_THAT(r.output, ::testing::HasSubstr(flag + " = ")) << arguments;
+    EXPECT_FALSE(fs::exists(out)) << arguments;
+  }
+}
+
 TEST(DdbCompare, FailedSolveKeepsThePrefixAndExitsOne) {
   // Energy ascent (α = −0.5) from Ω₀ near the slow axis: |Ω| grows until an exp step of
   // h = 4 passes the injectivity limit h|ξ| = π (docs/reference/guarantees.md §2) after some good
@@ -237,7 +290,8 @@ TEST(DdbCompare, HelpListsEveryMethodSystemScenarioAndDefault) {
     return std::regex_search(r.output, std::regex("\n  " + name + " +[A-Za-z(]"));
   };
   for (const auto& method : ddb::methodNames()) EXPECT_TRUE(hasLine(method)) << method;
-  for (const std::string system : {"rigid-body", "heavy-top", "kirchhoff", "manakov", "zeitlin"}) {
+  for (const std::string system :
+       {"rigid-body", "heavy-top", "kirchhoff", "planar-kirchhoff", "manakov", "zeitlin"}) {
     EXPECT_TRUE(hasLine(system)) << system;
   }
   for (const std::string init : {"random", "l1", "zonal"}) EXPECT_TRUE(hasLine(init)) << init;
@@ -246,7 +300,8 @@ TEST(DdbCompare, HelpListsEveryMethodSystemScenarioAndDefault) {
   for (const std::string text :
        {"--h TEXT=0.1", "--out TEXT=results", "--system TEXT=rigid-body", "--scenario TEXT=A",
         "--every INT=1", "--repeat INT=5", "A 30", "B and C 250", "1,1.3,0.5", "C 1,1,0.5",
-        "0,0.05,1", "(default 0.5)", "mass 1,2,3", "mgl 1", "chi 0,0,1", "metric 1,1,1,1,1,1"}) {
+        "0,0.05,1", "(default 0.5)", "mass 1,2,3", "mgl 1", "chi 0,0,1", "metric 1,1,1,1,1,1",
+        "planar-kirchhoff  inertia 0.5, mass 1,3, mu0 0.3,1,0.2, metric 1,1,1"}) {
     EXPECT_THAT(r.output, ::testing::HasSubstr(text));
   }
 }

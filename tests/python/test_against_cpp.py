@@ -60,6 +60,21 @@ def test_kirchhoff(ddb_compare, tmp_path):
     check_methods(summary, ddb.kirchhoff(), ddb.KirchhoffSetup().mu0)
 
 
+def test_planar_kirchhoff(ddb_compare, tmp_path):
+    summary = ddb_compare(tmp_path, "--system", "planar-kirchhoff", "--h", "0.1", "--t-end", "2")
+    setup = ddb.PlanarKirchhoffSetup()
+    check_methods(summary, ddb.planar_kirchhoff(), setup.mu0)
+    assert setup.system().group == "SE2"
+
+
+def test_planar_kirchhoff_custom_parameters(ddb_compare, tmp_path):
+    summary = ddb_compare(tmp_path, "--system", "planar-kirchhoff", "--inertia", "0.7",
+                          "--mass", "2,1.5", "--alpha", "0.2", "--metric", "1,0.5,2",
+                          "--mu0", "0.1,-0.4,0.8", "--h", "0.05", "--t-end", "1")
+    system = ddb.planar_kirchhoff(0.7, [2, 1.5], 0.2, [1, 0.5, 2])
+    check_methods(summary, system, np.array([0.1, -0.4, 0.8]))
+
+
 def test_manakov_from_a_file(ddb_compare, tmp_path):
     rng = np.random.default_rng(7)
     a = rng.standard_normal((4, 4))

@@ -158,3 +158,21 @@ def test_a_diagonal_metric_on_se3_equals_the_heavy_top():
     _, expected = ddb.integrate(ddb.heavy_top(metric=k), "sddb-cay", setup.mu0, 0.1, 30)
     _, got = ddb.integrate(user, "sddb-cay", setup.mu0, 0.1, 30)
     np.testing.assert_allclose(got, expected, rtol=0, atol=1e-13)
+
+
+def test_python_planar_body_equals_the_library_one():
+    # Kirchhoff's planar body, H = pi^2/(2 I) + P1^2/(2 m1) + P2^2/(2 m2), on SE2 with a diagonal
+    # metric: every method but the Lagrangian-only ones follows the library's system.
+    setup = ddb.PlanarKirchhoffSetup()
+    weights = 1.0 / np.array([setup.inertia, setup.mass[0], setup.mass[1]])
+    user = ddb.user_system(
+        "SE2",
+        hamiltonian=lambda mu: 0.5 * float(np.sum(weights * mu * mu)),
+        gradient=lambda mu: weights * mu,
+        hessian_times=lambda mu, v: weights * v,
+        alpha=setup.alpha, metric=setup.metric, name="python-planar-body")
+    assert user.group == "SE2" and user.state_shape == (3,)
+    for method in user.methods():
+        _, expected = ddb.integrate(setup.system(), method, setup.mu0, 0.1, 50)
+        _, got = ddb.integrate(user, method, setup.mu0, 0.1, 50)
+        np.testing.assert_allclose(got, expected, rtol=0, atol=1e-13, err_msg=method)

@@ -3,13 +3,18 @@
 // against SE3 written out, for every method of the table on the heavy top and Kirchhoff's body;
 // SE(2)'s planar Kirchhoff body against its textbook equations, its double-bracket energy rate and
 // Casimir by central differences, its relaxed state against the closed-form minimum of the energy
-// on its orbit, and the fitted orders of the DDB family. The groups' defining identities (Jacobi,
-// the duals of ad and Ad, the Cayley map against the block matrices' Cayley map, exp against
-// Eigen's matrix exponential) are the generic suites' (test_groups.cc, test_retractions.cc).
+// on its orbit, and the fitted orders of the DDB family. Ratiu's heavy top on SE(N): at N = 3
+// against SE3's in SpecialOrthogonal<3>'s coordinates for every method; at N = 4 its vector field
+// against the Euler–Poisson equations in matrix form, its Casimirs, and its relaxed energy against
+// the closed-form minimum on its orbit. The groups' defining identities (Jacobi, the duals of ad
+// and Ad, the Cayley map against the block matrices' Cayley map, exp against Eigen's matrix
+// exponential) are the generic suites' (test_groups.cc, test_retractions.cc).
 #include <ddb/groups/direct_product.h>
+#include <ddb/groups/special_euclidean.h>
 #include <ddb/integrators/drivers/integrate.h>
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/integrators/methods/reference.h>
+#include <ddb/systems/body_inertia.h>
 #include <ddb/systems/heavy_top.h>
 #include <ddb/systems/kirchhoff.h>
 #include <ddb/systems/paper_scenarios.h>
@@ -19,6 +24,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -103,7 +109,9 @@ TEST(PlanarKirchhoff, VectorFieldIsThePlanarEquationsAndDissipatesAtTheDoubleBra
       // (m₁ − m₂) v₁v₂, the Munk moment, for the first row.
       EXPECT_NEAR(conservative(0), (kMass(0) - kMass(1)) * mu(1) / kMass(0) * mu(2) / kMass(1),
                   1e-15);
-      if (alpha == 0.0) EXPECT_LT((f - conservative).norm(), 1e-15);
+      if (alpha == 0.0) {
+        EXPECT_LT((f - conservative).norm(), 1e-15);
+      }
       const double d = 1e-5;
       const Eigen::Vector3d plus = mu + d * f, minus = mu - d * f;
       EXPECT_NEAR((body->energy(plus) - body->energy(minus)) / (2 * d),
@@ -156,32 +164,43 @@ TEST(PlanarKirchhoff, DdbRelaxesToTheEnergyMinimumOnItsOrbit) {
   }
 }
 
-Eigen::Vector3d planarFinalState(OneStepMethod<SE2>& method, double h, double t_end) {
-  Eigen::Vector3d last;
-  integrate(method, kMu0, 0.0, h, std::lround(t_end / h),
-            [&](long, double, const Eigen::Vector3d& mu) { last = mu; });
-  return last;
-}
-
-TEST(PlanarKirchhoff, FittedOrdersOfTheDdbFamily) {
+/// The fitted orders of ddb-cay, ddb-exp-exact, sddb-cay and ddb4-cay on the system that
+/// `systemAt(α)` makes, at α = 0 and 0.5, from μ₀ to t_end against the reference method.
+template <class G, class SystemAt>
+void expectFittedOrdersOfTheDdbFamily(const std::string& label, const SystemAt& systemAt,
+                                      const typename G::template Dual<double>& mu0, double t_end) {
+  using V = typename G::template Dual<double>;
+  const auto finalState = [&](OneStepMethod<G>& method, double h) {
+    V last;
+    integrate(method, mu0, 0.0, h, std::lround(t_end / h),
+              [&](long, double, const V& mu) { last = mu; });
+    return last;
+  };
   for (double alpha : {0.0, 0.5}) {
-    const auto body = makePlanarKirchhoffBody(kInertia, kMass, alpha, kUnitMetric);
-    ReferenceSolver<SE2> reference(body);
-    const Eigen::Vector3d exact = planarFinalState(reference, 0.5, 5.0);
+    const std::shared_ptr<const LiePoissonSystem<G>> system = systemAt(alpha);
+    ReferenceSolver<G> reference(system);
+    const V exact = finalState(reference, 0.5);
     for (const std::string name : {"ddb-cay", "ddb-exp-exact", "sddb-cay", "ddb4-cay"}) {
       const MethodInfo& info = *findMethod(name);
       std::vector<double> hs{0.1, 0.05, 0.025, 0.0125}, errors;
       for (double h : hs) {
-        auto method = makeMethod<SE2>(name, body);
-        errors.push_back((planarFinalState(*method, h, 5.0) - exact).norm());
+        auto method = makeMethod<G>(name, system);
+        errors.push_back((finalState(*method, h) - exact).norm());
       }
       const OrderFit fit = fitOrder(hs, errors);
-      ASSERT_GE(fit.points, 4) << name;
+      ASSERT_GE(fit.points, 4) << label << " " << name;
       const int order = alpha == 0.0 ? info.order_without_dissipation : info.order;
-      EXPECT_NEAR(fit.slope, order, 0.25) << name << " alpha " << alpha;
-      std::cout << "planar body " << name << " alpha=" << alpha << " slope=" << fit.slope << "\n";
+      EXPECT_NEAR(fit.slope, order, 0.25) << label << " " << name << " alpha " << alpha;
+      std::cout << label << " " << name << " alpha=" << alpha << " slope=" << fit.slope << "\n";
     }
   }
+}
+
+TEST(PlanarKirchhoff, FittedOrdersOfTheDdbFamily) {
+  expectFittedOrdersOfTheDdbFamily<SE2>(
+      "planar body",
+      [](double alpha) { return makePlanarKirchhoffBody(kInertia, kMass, alpha, kUnitMetric); },
+      kMu0, 5.0);
 }
 
 TEST(PlanarKirchhoff, RejectsBadParametersNamingThem) {
@@ -256,6 +275,162 @@ TEST(DirectProduct, TwoSystemsSideBySideFollowTheirOwnTrajectories) {
     ++compared;
   }
   EXPECT_EQ(compared, 11);
+}
+
+// ---- Ratiu's heavy top on SE(N) (groups/special_euclidean.h, systems/heavy_top.h) ----
+
+using SE3Fixed = SpecialEuclidean<3>;
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+using SE4 = SpecialEuclidean<4>;
+using Vector10 = Eigen::Matrix<double, 10, 1>;
+
+/// SO3's coordinates of so(3) from SpecialOrthogonal<3>'s (x₀₁, x₀₂, x₁₂): (x₁₂, −x₀₂, x₀₁). The
+/// map is its own inverse.
+Eigen::Vector3d so3Coordinates(const Eigen::Vector3d& p) { return {p(2), -p(1), p(0)}; }
+Vector6 se3Coordinates(const Vector6& mu) {
+  return (Vector6() << so3Coordinates(mu.head<3>()), mu.tail<3>()).finished();
+}
+
+TEST(SpecialEuclidean, HeavyTopInThreeDimensionsIsSE3sForEveryMethod) {
+  const HeavyTopSetup top;
+  // The same top in SpecialOrthogonal<3>'s coordinates: the principal moments and the metric's
+  // rotational weights in the order of the pairs (the signs drop out of a diagonal).
+  const Eigen::Vector3d inertia = so3Coordinates(top.inertia).cwiseAbs();
+  const Vector6 metric = se3Coordinates(top.metric).cwiseAbs();
+  const Vector6 mu0 = se3Coordinates(top.mu0);
+  int compared = 0;
+  for (double alpha : {0.0, top.alpha}) {
+    const auto written = makeHeavyTop(top.inertia, top.mgl, top.chi, alpha, top.metric);
+    const auto fixed = makeHeavyTopOn<SE3Fixed>(inertia, top.mgl, top.chi, alpha, metric);
+    for (const MethodInfo& info : kMethods) {
+      if (!methodApplies(info, *written)) continue;
+      ASSERT_TRUE(methodApplies(info, *fixed)) << info.name;
+      const auto a = trajectory<SE3>(info, written, top.mu0, 0.05, 200);
+      const auto b = trajectory<SE3Fixed>(info, fixed, mu0, 0.05, 200);
+      ASSERT_EQ(a.size(), b.size());
+      double worst = 0.0;
+      for (size_t k = 0; k < a.size(); ++k) {
+        worst = std::max(worst, (se3Coordinates(a[k]) - b[k]).norm());
+      }
+      // SpecialOrthogonal<3> runs LieGroupBase's matrix formulas where SO3 has cross products: a
+      // rounding apart per step, which α = 0 does not damp. Bound: 4 ulp of |μ| per step.
+      EXPECT_LE(worst, 200 * 4 * kEpsilon * mu0.norm()) << "alpha " << alpha << ", " << info.name;
+      std::cout << "SE(3) fixed, alpha " << alpha << ", " << info.name << ": largest difference "
+                << worst << "\n";
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 22);
+}
+
+// A four-dimensional top: mass moments J, so that the largest principal moment J₀ + J₁ is one of
+// the block {0, 1, 2} orthogonal to χ = e₃ (the closed-form minimum below needs it).
+const Eigen::Vector4d kMassMoments(2.0, 1.5, 1.0, 0.5);
+const Eigen::Vector4d kChi(0.0, 0.0, 0.0, 1.0);
+const double kMgl = 0.8;
+
+Vector10 topState() {
+  Vector10 mu;
+  mu << 0.4, -0.3, 0.2, 0.5, -0.1, 0.3, 0.6, -0.4, 0.2, 0.7;
+  return mu;
+}
+
+TEST(SpecialEuclidean, HeavyTopVectorFieldIsTheEulerPoissonEquations) {
+  // Ratiu's equations in matrix form, M = hat(π), Ω = hat(𝕀⁻¹π):
+  //   Ṁ = [M, Ω] + mgℓ(χγᵀ − γχᵀ),  γ̇ = −Ωγ
+  // (at N = 3, π̇ = π × Ω + mgℓ γ × χ and γ̇ = γ × Ω), and E decreases at the double bracket's rate
+  // −α‖ad*_{∂H/∂μ} μ‖² for the unit metric.
+  using SO4 = SpecialOrthogonal<4>;
+  const Eigen::Matrix<double, 6, 1> inertia = bodyInertiaOf<4>(kMassMoments);
+  Sampler s(41);
+  for (double alpha : {0.0, 0.3}) {
+    const auto top = makeHeavyTopOn<SE4>(inertia, kMgl, kChi, alpha, Vector10::Ones());
+    for (int i = 0; i < 5; ++i) {
+      const Vector10 mu = s.vector<Vector10>();
+      const Eigen::Matrix4d M = SO4::hat<double>(mu.head<6>());
+      const Eigen::Matrix4d Omega = SO4::hat<double>(mu.head<6>().cwiseQuotient(inertia).eval());
+      const Eigen::Vector4d gamma = mu.tail<4>();
+      const Eigen::Matrix4d Mdot =
+          M * Omega - Omega * M + kMgl * (kChi * gamma.transpose() - gamma * kChi.transpose());
+      Vector10 conservative;
+      conservative << SO4::vee<double>(Mdot), -Omega * gamma;
+      const Vector10 f = top->vectorField(mu);
+      if (alpha == 0.0) {
+        EXPECT_LT((f - conservative).norm(), 1e-14);
+      }
+      const double d = 1e-5;
+      const Vector10 plus = mu + d * f, minus = mu - d * f;
+      EXPECT_NEAR((top->energy(plus) - top->energy(minus)) / (2 * d),
+                  -alpha * conservative.squaredNorm(), 1e-8);
+      const Eigen::VectorXd rate = (top->casimirs(plus) - top->casimirs(minus)) / (2 * d);
+      EXPECT_LT(rate.norm(), 1e-8);
+    }
+  }
+}
+
+TEST(SpecialEuclidean, HeavyTopRelaxesToTheEnergyMinimumOnItsOrbit) {
+  // On the orbit of |γ| = r and c₁ = r⁴‖P M P‖²_F = 2r⁴s² (s² the squared norm of π's block
+  // orthogonal to γ), E ≥ s²/(2 max 𝕀) − mgℓ r|χ|: the kinetic part is at least ½|π|²/max 𝕀 and
+  // |π|² ≥ s²; the bound is reached at γ = −rχ/|χ| with π all on the largest moment of the block
+  // orthogonal to χ. (The top's orbit has this point since max 𝕀 = J₀ + J₁ is in that block.)
+  // The last mode to settle, π's exchange between the pairs (0, 1) and (0, 3), decays by about e
+  // in t = 100: E is at its minimum to 1e-10 from t ≈ 1500 on.
+  const Eigen::Matrix<double, 6, 1> inertia = bodyInertiaOf<4>(kMassMoments);
+  const auto top = makeHeavyTopOn<SE4>(inertia, kMgl, kChi, 0.5, Vector10::Ones());
+  const Vector10 mu0 = topState();
+  const Eigen::VectorXd c0 = top->casimirs(mu0);
+  const double r = std::sqrt(c0(0));
+  const double s2 = c0(1) / (2 * std::pow(r, 4));
+  const double minimum = s2 / (2 * inertia.maxCoeff()) - kMgl * r * kChi.norm();
+  for (const std::string name : {"ddb-cay", "ddb-exp-exact", "sddb-cay"}) {
+    auto method = makeMethod<SE4>(name, top);
+    double previous = top->energy(mu0), rise = 0.0, casimir_drift = 0.0;
+    Vector10 last = mu0;
+    integrate(*method, mu0, 0.0, 0.05, 32000, [&](long, double, const Vector10& mu) {
+      const double e = top->energy(mu);
+      rise = std::max(rise, e - previous);
+      previous = e;
+      const Eigen::VectorXd c = top->casimirs(mu);
+      casimir_drift = std::max(casimir_drift, (c - c0).cwiseQuotient(c0).cwiseAbs().maxCoeff());
+      last = mu;
+    });
+    EXPECT_LE(rise, 1e-15) << name;
+    // c₁ is of degree 6 in μ: one rounding of the state per step moves it by at most about 6 ulp,
+    // and over 32000 steps such roundings may add up.
+    EXPECT_LE(casimir_drift, 6 * 32000 * kEpsilon) << name;
+    EXPECT_NEAR(top->energy(last), minimum, 1e-10) << name;
+    std::cout << "SE(4) heavy top, " << name << ": E - E_min " << top->energy(last) - minimum
+              << ", Casimir drift " << casimir_drift << "\n";
+  }
+}
+
+TEST(SpecialEuclidean, FittedOrdersOfTheDdbFamilyOnTheHeavyTop) {
+  const Eigen::Matrix<double, 6, 1> inertia = bodyInertiaOf<4>(kMassMoments);
+  expectFittedOrdersOfTheDdbFamily<SE4>(
+      "SE(4) heavy top",
+      [&](double alpha) {
+        return makeHeavyTopOn<SE4>(inertia, kMgl, kChi, alpha, Vector10::Ones());
+      },
+      topState(), 2.0);
+}
+
+TEST(SpecialEuclidean, HeavyTopRejectsBadParametersNamingThem) {
+  using ::testing::HasSubstr;
+  using ::testing::ThrowsMessage;
+  const Eigen::Matrix<double, 6, 1> inertia = bodyInertiaOf<4>(kMassMoments);
+  EXPECT_THAT([] { bodyInertiaOf<4>(Eigen::Vector4d(1.0, 0.0, 1.0, 1.0)); },
+              ThrowsMessage<InvalidArgument>(HasSubstr("mass_moments")));
+  EXPECT_THAT([&] { makeHeavyTopOn<SE4>(-inertia, kMgl, kChi, 0.5, Vector10::Ones()); },
+              ThrowsMessage<InvalidArgument>(HasSubstr("inertia")));
+  EXPECT_THAT(
+      [&] {
+        makeHeavyTopOn<SE4>(inertia, kMgl, Eigen::Vector4d(0, NAN, 0, 1), 0.5, Vector10::Ones());
+      },
+      ThrowsMessage<InvalidArgument>(HasSubstr("chi")));
+  EXPECT_THAT([&] { makeHeavyTopOn<SE4>(inertia, NAN, kChi, 0.5, Vector10::Ones()); },
+              ThrowsMessage<InvalidArgument>(HasSubstr("mgl")));
+  EXPECT_THAT([&] { makeHeavyTopOn<SE4>(inertia, kMgl, kChi, 0.5, -Vector10::Ones()); },
+              ThrowsMessage<InvalidArgument>(HasSubstr("metric")));
 }
 
 }  // namespace group_products_tests

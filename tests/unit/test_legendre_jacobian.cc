@@ -37,7 +37,8 @@ using FixedRetractions = ::testing::Types<
     Cayley<SO2>, Exponential<SO2>, Cayley<SO3>, Exponential<SO3>, TruncatedExponential<SO3>,
     Cayley<SE2>, Exponential<SE2>, TruncatedExponential<SE2>, Cayley<SE3>, Exponential<SE3>,
     TruncatedExponential<SE3>, Cayley<SemidirectProduct<SO3>>, Exponential<SemidirectProduct<SO3>>,
-    Cayley<DirectProduct<SO3, SE2>>, Exponential<DirectProduct<SO3, SE2>>>;
+    Cayley<DirectProduct<SO3, SE2>>, Exponential<DirectProduct<SO3, SE2>>,
+    Cayley<SpecialEuclidean<4>>, Exponential<SpecialEuclidean<4>>>;
 TYPED_TEST_SUITE(RetractionJacobianTest, FixedRetractions);
 
 TYPED_TEST(RetractionJacobianTest, MatchesCentralDifferences) {
