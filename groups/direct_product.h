@@ -3,7 +3,8 @@
 // stacked vectors, ⟨μ, ξ⟩ = ⟨μ₁, ξ₁⟩ + ⟨μ₂, ξ₂⟩, elements the block-diagonal matrices
 // diag(g₁, g₂), and the bracket, ad*, Ad*, exp, log, the retractions, their tangents and Legendre
 // Jacobians act block by block, each through its factor's closed form. The Casimirs are both
-// factors', stacked. A product of three is DirectProduct<G1, DirectProduct<G2, G3>>.
+// factors', stacked. A product of three, DirectProduct<G1, G2, G3>, is the product of G1 and
+// DirectProduct<G2, G3>.
 #pragma once
 
 #include <ddb/core/detail/has_retraction_jacobian.h>
@@ -44,8 +45,14 @@ struct HasDirectAdRadius<G, std::void_t<decltype(G::adRadius(
     : std::true_type {};
 }  // namespace detail
 
+/// G₁ × G₂ × … for two or more fixed-size groups. Three or more are the two-factor product of the
+/// first and the product of the rest, DirectProduct<G1, DirectProduct<G2, G3, …>>, whose functions
+/// this type inherits: its name is "G1xG2xG3", its states the factors' stacked in order.
+template <class G1, class G2, class... Rest>
+struct DirectProduct : DirectProduct<G1, DirectProduct<G2, Rest...>> {};
+
 template <class G1, class G2>
-struct DirectProduct : LieGroupBase<DirectProduct<G1, G2>> {
+struct DirectProduct<G1, G2> : LieGroupBase<DirectProduct<G1, G2>> {
   static_assert(G1::kDim != Eigen::Dynamic && G2::kDim != Eigen::Dynamic,
                 "DirectProduct<G1, G2> composes fixed-size groups (static kDim and matrices)");
   using First = G1;

@@ -249,6 +249,12 @@ static_assert(typesAre<ddb::SemidirectProduct<SO3>, 6, Eigen::Matrix<double, 6, 
 static_assert(typesAre<ddb::DirectProduct<SO3, ddb::SE2>, 6, Eigen::Matrix<double, 6, 1>,
                        Eigen::Matrix<double, 6, 1>, Eigen::Matrix<double, 6, 6>,
                        Eigen::Matrix<double, 2, 1>>());
+// Three factors or more: the product of the first and the product of the rest.
+static_assert(typesAre<ddb::DirectProduct<ddb::SO2, SO3, ddb::SE2>, 7, Eigen::Matrix<double, 7, 1>,
+                       Eigen::Matrix<double, 7, 1>, Eigen::Matrix<double, 8, 8>,
+                       Eigen::Matrix<double, 3, 1>>());
+static_assert(std::is_base_of_v<ddb::DirectProduct<ddb::SO2, ddb::DirectProduct<SO3, ddb::SE2>>,
+                                ddb::DirectProduct<ddb::SO2, SO3, ddb::SE2>>);
 static_assert(
     typesAre<ddb::SpecialOrthogonal<4>, 6, Eigen::Matrix<double, 6, 1>, Eigen::Matrix<double, 6, 1>,
              Eigen::Matrix<double, 4, 4>, Eigen::Matrix<double, 2, 1>>());

@@ -52,13 +52,14 @@ struct GroupAt {
 // suites (test_groups.cc: every group; test_retractions.cc: every group with the
 // Cayley and exponential retractions) are instantiated from these lists. Matrix
 // groups run at N = 2..6 (Samples::sizes). SemidirectProduct<SO3> is SE(3) composed from SO(3)'s
-// functions (groups/semidirect_product.h); DirectProduct<SO3, SE2> pairs a group with a product
-// (groups/direct_product.h); SpecialOrthogonal<4> and SpecialEuclidean<4> are SO(4) and SE(4) of
-// a fixed size, through LieGroupBase's deduced functions (groups/special_orthogonal.h). ----
+// functions (groups/semidirect_product.h); DirectProduct<SO2, SO3, SE2> is the product of SO2
+// and DirectProduct<SO3, SE2>, which pairs a group with a product (groups/direct_product.h);
+// SpecialOrthogonal<4> and SpecialEuclidean<4> are SO(4) and SE(4) of a fixed size, through
+// LieGroupBase's deduced functions (groups/special_orthogonal.h). ----
 template <template <class> class R>
 using GroupsWith =
     ::testing::Types<GroupAt<SO2, R>, GroupAt<SO3, R>, GroupAt<SE2, R>, GroupAt<SE3, R>,
-                     GroupAt<SemidirectProduct<SO3>, R>, GroupAt<DirectProduct<SO3, SE2>, R>,
+                     GroupAt<SemidirectProduct<SO3>, R>, GroupAt<DirectProduct<SO2, SO3, SE2>, R>,
                      GroupAt<SpecialOrthogonal<4>, R>, GroupAt<SpecialEuclidean<4>, R>,
                      GroupAt<SON, R>, GroupAt<SUN, R>>;
 struct AllGroups {

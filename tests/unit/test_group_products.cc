@@ -1,14 +1,15 @@
-// Groups made of groups (groups/semidirect_product.h, groups/direct_product.h). Two systems on a
-// direct product follow their own trajectories; SE(3) composed from SO(3)'s functions
+// Groups made of groups (groups/semidirect_product.h, groups/direct_product.h). Two and three
+// systems on direct products follow their own trajectories; SE(3) composed from SO(3)'s functions
 // against SE3 written out, for every method of the table on the heavy top and Kirchhoff's body;
 // SE(2)'s planar Kirchhoff body against its textbook equations, its double-bracket energy rate and
 // Casimir by central differences, its relaxed state against the closed-form minimum of the energy
 // on its orbit, and the fitted orders of the DDB family. Ratiu's heavy top on SE(N): at N = 3
 // against SE3's in SpecialOrthogonal<3>'s coordinates for every method; at N = 4 its vector field
 // against the Euler–Poisson equations in matrix form, its Casimirs, and its relaxed energy against
-// the closed-form minimum on its orbit. The groups' defining identities (Jacobi, the duals of ad
-// and Ad, the Cayley map against the block matrices' Cayley map, exp against Eigen's matrix
-// exponential) are the generic suites' (test_groups.cc, test_retractions.cc).
+// the closed-form minimum on its orbit, and the fitted orders. The groups' defining identities
+// (Jacobi, the duals of ad and Ad, the Cayley map against the block matrices' Cayley map, exp
+// against Eigen's matrix exponential) are the generic suites' (test_groups.cc,
+// test_retractions.cc).
 #include <ddb/groups/direct_product.h>
 #include <ddb/groups/special_euclidean.h>
 #include <ddb/integrators/drivers/integrate.h>
@@ -26,6 +27,7 @@
 #include <iostream>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "order_fit.h"
@@ -218,43 +220,54 @@ TEST(PlanarKirchhoff, RejectsBadParametersNamingThem) {
               ThrowsMessage<InvalidArgument>(HasSubstr("alpha")));
 }
 
-// The rigid body of Scenario A and the planar body side by side on SO(3) × SE(2): H = H₁ + H₂ and
-// k♯ = α I, each block delegated to the system's own Hamiltonian, so that the product's flow is
-// both flows at once.
-using SO3xSE2 = DirectProduct<SO3, SE2>;
-using Vector6Product = SO3xSE2::Dual<double>;
-
-class SideBySideHamiltonian final : public Hamiltonian<SO3xSE2> {
+// Systems side by side on a direct product P = First × Second: H = H₁ + H₂ and k♯ = α I, each
+// block delegated to its system's own Hamiltonian, so that the product's flow is both flows at
+// once.
+template <class P>
+class SideBySideHamiltonian final : public Hamiltonian<P> {
  public:
-  SideBySideHamiltonian(std::shared_ptr<const LiePoissonSystem<SO3>> a,
-                        std::shared_ptr<const LiePoissonSystem<SE2>> b)
+  using A = typename P::First;
+  using B = typename P::Second;
+  using V = typename P::template Dual<double>;
+  SideBySideHamiltonian(std::shared_ptr<const LiePoissonSystem<A>> a,
+                        std::shared_ptr<const LiePoissonSystem<B>> b)
       : a_(std::move(a)), b_(std::move(b)) {}
-  double value(const Vector6Product& mu) const override {
-    return a_->energy(SO3xSE2::first(mu)) + b_->energy(SO3xSE2::second(mu));
+  double value(const V& mu) const override {
+    return a_->energy(P::first(mu)) + b_->energy(P::second(mu));
   }
-  Vector6Product gradient(const Vector6Product& mu) const override {
-    return SO3xSE2::join<double>(a_->hamiltonian().gradient(SO3xSE2::first(mu)),
-                                 b_->hamiltonian().gradient(SO3xSE2::second(mu)));
+  V gradient(const V& mu) const override {
+    return P::template join<double>(a_->hamiltonian().gradient(P::first(mu)),
+                                    b_->hamiltonian().gradient(P::second(mu)));
   }
-  Vector6Product hessianTimes(const Vector6Product& mu, const Vector6Product& v) const override {
-    return SO3xSE2::join<double>(
-        a_->hamiltonian().hessianTimes(SO3xSE2::first(mu), SO3xSE2::first(v)),
-        b_->hamiltonian().hessianTimes(SO3xSE2::second(mu), SO3xSE2::second(v)));
+  V hessianTimes(const V& mu, const V& v) const override {
+    return P::template join<double>(a_->hamiltonian().hessianTimes(P::first(mu), P::first(v)),
+                                    b_->hamiltonian().hessianTimes(P::second(mu), P::second(v)));
   }
 
  private:
-  std::shared_ptr<const LiePoissonSystem<SO3>> a_;
-  std::shared_ptr<const LiePoissonSystem<SE2>> b_;
+  std::shared_ptr<const LiePoissonSystem<A>> a_;
+  std::shared_ptr<const LiePoissonSystem<B>> b_;
 };
+
+template <class P>
+std::shared_ptr<const LiePoissonSystem<P>> sideBySide(
+    std::shared_ptr<const LiePoissonSystem<typename P::First>> a,
+    std::shared_ptr<const LiePoissonSystem<typename P::Second>> b, double alpha) {
+  return makeLiePoissonSystem(
+      "side-by-side", std::make_shared<const SideBySideHamiltonian<P>>(std::move(a), std::move(b)),
+      std::make_shared<const ScaledIdentityMetric<P>>(alpha));
+}
+
+// The rigid body of Scenario A and the planar body side by side on SO(3) × SE(2).
+using SO3xSE2 = DirectProduct<SO3, SE2>;
+using Vector6Product = SO3xSE2::Dual<double>;
 
 TEST(DirectProduct, TwoSystemsSideBySideFollowTheirOwnTrajectories) {
   const RigidBodyScenario& scenario = rigidBodyScenario("A");
   const double alpha = scenario.alpha;
   const auto body = makeRigidBody(scenario.inertia, alpha);
   const auto planar = makePlanarKirchhoffBody(kInertia, kMass, alpha, kUnitMetric);
-  const auto both = makeLiePoissonSystem(
-      "side-by-side", std::make_shared<const SideBySideHamiltonian>(body, planar),
-      std::make_shared<const ScaledIdentityMetric<SO3xSE2>>(alpha));
+  const auto both = sideBySide<SO3xSE2>(body, planar, alpha);
   const Vector6Product mu0 = SO3xSE2::join<double>(scenario.mu0(), kMu0);
   int compared = 0;
   for (const MethodInfo& info : kMethods) {
@@ -272,6 +285,43 @@ TEST(DirectProduct, TwoSystemsSideBySideFollowTheirOwnTrajectories) {
     // where the separate runs stop each block's solve at its own: solve errors of 1e-15 per step.
     EXPECT_LE(worst, info.kind == MethodKind::kExplicitRk4 ? 0.0 : 1e-13) << info.name;
     std::cout << "side by side, " << info.name << ": largest difference " << worst << "\n";
+    ++compared;
+  }
+  EXPECT_EQ(compared, 11);
+}
+
+TEST(DirectProduct, ThreeSystemsSideBySideFollowTheirOwnTrajectories) {
+  // SO(3) × SE(2) × SO(3), the product of three factors, is SO(3) × (SE(2) × SO(3)): the rigid
+  // bodies of Scenarios A and C and the planar body between them.
+  using Triple = DirectProduct<SO3, SE2, SO3>;
+  using Pair = Triple::Second;
+  static_assert(std::is_same_v<Pair, DirectProduct<SE2, SO3>>);
+  const double alpha = rigidBodyScenario("A").alpha;
+  const RigidBodyScenario& a = rigidBodyScenario("A");
+  const RigidBodyScenario& c = rigidBodyScenario("C");
+  const auto bodyA = makeRigidBody(a.inertia, alpha);
+  const auto bodyC = makeRigidBody(c.inertia, alpha);
+  const auto planar = makePlanarKirchhoffBody(kInertia, kMass, alpha, kUnitMetric);
+  const auto all = sideBySide<Triple>(bodyA, sideBySide<Pair>(planar, bodyC, alpha), alpha);
+  EXPECT_STREQ(Triple::kName, "SO3xSE2xSO3");
+  const Triple::Dual<double> mu0 = Triple::join<double>(a.mu0(), Pair::join<double>(kMu0, c.mu0()));
+  int compared = 0;
+  for (const MethodInfo& info : kMethods) {
+    if (!methodApplies(info, *all) || !methodApplies(info, *planar)) continue;
+    const auto product = trajectory<Triple>(info, all, mu0, 0.05, 200);
+    const auto first = trajectory<SO3>(info, bodyA, a.mu0(), 0.05, 200);
+    const auto second = trajectory<SE2>(info, planar, kMu0, 0.05, 200);
+    const auto third = trajectory<SO3>(info, bodyC, c.mu0(), 0.05, 200);
+    ASSERT_EQ(product.size(), first.size());
+    double worst = 0.0;
+    for (size_t k = 0; k < product.size(); ++k) {
+      const Triple::Dual<double> separate =
+          Triple::join<double>(first[k], Pair::join<double>(second[k], third[k]));
+      worst = std::max(worst, (separate - product[k]).norm());
+    }
+    // As for two systems: the implicit solves stop on the joint residual.
+    EXPECT_LE(worst, info.kind == MethodKind::kExplicitRk4 ? 0.0 : 1e-13) << info.name;
+    std::cout << "three side by side, " << info.name << ": largest difference " << worst << "\n";
     ++compared;
   }
   EXPECT_EQ(compared, 11);
