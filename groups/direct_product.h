@@ -47,10 +47,18 @@ struct HasDirectAdRadius<G, std::void_t<decltype(G::adRadius(
 
 /// G₁ × G₂ × … for two or more fixed-size groups. Three or more are the two-factor product of the
 /// first and the product of the rest, DirectProduct<G1, DirectProduct<G2, G3, …>>, whose functions
-/// this type inherits: its name is "G1xG2xG3", its states the factors' stacked in order.
+/// the type inherits: its name is "G1xG2xG3", its states the factors' stacked in order.
 template <class G1, class G2, class... Rest>
-struct DirectProduct : DirectProduct<G1, DirectProduct<G2, Rest...>> {};
+struct DirectProduct;
 
+/// @cond
+// Doxygen takes the base of a recursive specialisation for a cycle: it documents the two-factor
+// product only.
+template <class G1, class G2, class G3, class... Rest>
+struct DirectProduct<G1, G2, G3, Rest...> : DirectProduct<G1, DirectProduct<G2, G3, Rest...>> {};
+/// @endcond
+
+/// G₁ × G₂.
 template <class G1, class G2>
 struct DirectProduct<G1, G2> : LieGroupBase<DirectProduct<G1, G2>> {
   static_assert(G1::kDim != Eigen::Dynamic && G2::kDim != Eigen::Dynamic,
