@@ -13,7 +13,6 @@
 // (SE2's).
 #pragma once
 
-#include <ddb/core/detail/scalar.h>
 #include <ddb/groups/semidirect_product.h>
 #include <ddb/groups/special_orthogonal.h>
 
@@ -41,12 +40,8 @@ struct SemidirectProductTraits<SpecialOrthogonal<N>> {
     const Matrix Q = M * gamma2 + gamma * Mgamma.transpose() - Mgamma * gamma.transpose();
     Eigen::Matrix<T, kNumCasimirs, 1> c;
     c(0) = gamma2;
-    const Matrix Q2 = Q * Q;
-    Matrix power = Q2;
-    for (int k = 1; k < kNumCasimirs; ++k) {
-      c(k) = power.trace() * constant<T>(k % 2 == 0 ? 1.0 : -1.0);
-      if (k + 1 < kNumCasimirs) power = Matrix(power * Q2);
-    }
+    c.template tail<kNumCasimirs - 1>() =
+        SpecialOrthogonal<N>::template evenPowerTraces<kNumCasimirs - 1, T>(Q);
     return c;
   }
 };

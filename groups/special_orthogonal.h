@@ -151,13 +151,19 @@ struct SpecialOrthogonal : LieGroupBase<SpecialOrthogonal<N>> {
   /// invariant under μ ↦ Ad*_R μ = dualVee-conjugation hat(μ) ↦ Rᵀ hat(μ) R.
   template <class T>
   static Casimirs<T> casimirs(const Dual<T>& mu) {
-    const Matrix<T> M = hat(mu);
-    const Matrix<T> M2 = M * M;
-    Matrix<T> power = M2;
-    Casimirs<T> c;
-    for (int k = 1; k <= kNumCasimirs; ++k) {
+    return evenPowerTraces<kNumCasimirs, T>(hat(mu));
+  }
+
+  /// (−1)^k tr(X^{2k}) = Σ_a λ_a^{2k} for k = 1 … K, λ the eigenvalues of −iX, X skew: the spectral
+  /// invariants of so(N)'s Casimirs and of se(N)'s (groups/special_euclidean.h).
+  template <int K, class T>
+  static Eigen::Matrix<T, K, 1> evenPowerTraces(const Matrix<T>& X) {
+    const Matrix<T> X2 = X * X;
+    Matrix<T> power = X2;
+    Eigen::Matrix<T, K, 1> c;
+    for (int k = 1; k <= K; ++k) {
       c(k - 1) = power.trace() * constant<T>(k % 2 == 0 ? 1.0 : -1.0);
-      if (k < kNumCasimirs) power = Matrix<T>(power * M2);
+      if (k < K) power = Matrix<T>(power * X2);
     }
     return c;
   }
