@@ -7,6 +7,7 @@
 
 #include <ddb/core/autodiff.h>
 #include <ddb/core/dissipation_metric.h>
+#include <ddb/core/dual_matrix.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lagrangian.h>
@@ -17,6 +18,7 @@
 #include <ddb/core/solver_options.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/direct_product.h>
+#include <ddb/groups/dual_number_sun.h>
 #include <ddb/groups/exponential.h>
 #include <ddb/groups/se2.h>
 #include <ddb/groups/se3.h>
@@ -28,6 +30,7 @@
 #include <ddb/groups/special_euclidean.h>
 #include <ddb/groups/special_orthogonal.h>
 #include <ddb/groups/sun.h>
+#include <ddb/groups/swapped_parts_metric.h>
 #include <ddb/integrators/drivers/flow_rate.h>
 #include <ddb/integrators/drivers/integrate.h>
 #include <ddb/integrators/drivers/relax.h>
@@ -53,6 +56,7 @@
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
+#include <ddb/systems/zeitlin_mhd.h>
 #include <ddb/systems/zeitlin_spectra.h>
 #include <ddb/systems/zeitlin_step_size.h>
 #include <ddb/systems/zeitlin_viscosity.h>

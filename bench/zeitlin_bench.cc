@@ -15,6 +15,8 @@
 // sphere), zeitlin-viscosity-implicit/<N> the same by the implicit scheme, zeitlin-forcing/<N> one
 // ZeitlinStochasticForcingFlow::advance (band 10:2, or 2:1 at N = 32); a Strang step takes two of
 // each.
+// Magnetohydrodynamics on the sphere (systems/zeitlin_mhd.h) beside them: zeitlin-mhd/<method>/<N>,
+// one step of ddb-cay, sddb-cay or rk4 (α = 0.5) on the magnetic fluid (stepMhd).
 #include "zeitlin_bench.h"
 
 #include <benchmark/benchmark.h>
@@ -24,6 +26,7 @@
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_forcing.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
+#include <ddb/systems/zeitlin_mhd.h>
 #include <ddb/systems/zeitlin_step_size.h>
 #include <ddb/systems/zeitlin_viscosity.h>
 
@@ -46,43 +49,46 @@ constexpr long kWarmUp = 10;
 constexpr long kWindow = 100;
 constexpr long kLargeWindow = 20;
 
-std::unique_ptr<OneStepMethod<SUN>> makeBenchMethod(
-    const std::string& name, std::shared_ptr<const LiePoissonSystem<SUN>> fluid) {
+template <class G>
+std::unique_ptr<OneStepMethod<G>> makeBenchMethod(
+    const std::string& name, std::shared_ptr<const LiePoissonSystem<G>> system) {
   SolverOptions options;
   options.relative_tolerance = kTolerance;
   if (name == "ddb-cay") {
-    return std::make_unique<Ddb<Cayley<SUN>>>(fluid, Cayley<SUN>(), LegendreForm::kHamiltonian,
-                                              options);
+    return std::make_unique<Ddb<Cayley<G>>>(system, Cayley<G>(), LegendreForm::kHamiltonian,
+                                            options);
   }
   if (name == "sddb-cay") {
-    return std::make_unique<SymmetricDdb<Cayley<SUN>>>(fluid, Cayley<SUN>(),
-                                                       LegendreForm::kHamiltonian, options);
+    return std::make_unique<SymmetricDdb<Cayley<G>>>(system, Cayley<G>(),
+                                                     LegendreForm::kHamiltonian, options);
   }
-  return makeMethod<SUN>(name, fluid);
+  return makeMethod<G>(name, system);
 }
 
 // The Legendre statistics of the method's last step, for the single-step DDB methods of
 // each retraction (nullptr for explicit methods and compositions).
-const LegendreStats* legendreStats(const OneStepMethod<SUN>& method) {
-  if (const auto* m = dynamic_cast<const LegendreMethod<Cayley<SUN>>*>(&method)) {
+template <class G>
+const LegendreStats* legendreStats(const OneStepMethod<G>& method) {
+  if (const auto* m = dynamic_cast<const LegendreMethod<Cayley<G>>*>(&method)) {
     return &m->legendreSolver().stats();
   }
-  if (const auto* m = dynamic_cast<const LegendreMethod<Exponential<SUN>>*>(&method)) {
-    return &m->legendreSolver().stats();
-  }
-  if (const auto* m = dynamic_cast<const LegendreMethod<TruncatedExponential<SUN>>*>(&method)) {
-    return &m->legendreSolver().stats();
+  if constexpr (groupHasEigenbasis<G>()) {
+    if (const auto* m = dynamic_cast<const LegendreMethod<Exponential<G>>*>(&method)) {
+      return &m->legendreSolver().stats();
+    }
+    if (const auto* m = dynamic_cast<const LegendreMethod<TruncatedExponential<G>>*>(&method)) {
+      return &m->legendreSolver().stats();
+    }
   }
   return nullptr;
 }
 
-void stepFluid(benchmark::State& state, const std::string& method_name, double alpha, int n,
-               long window, bool resolved) {
-  const auto fluid = makeZeitlinFluid(n, alpha);
-  const Matrix W0 = randomVorticity(n, 1);
-  const double h = resolved ? zeitlinDefaultStep(W0, alpha) : zeitlinContractionStep(W0);
-  auto method = makeBenchMethod(method_name, fluid);
-  Matrix W = W0;
+template <class G>
+void stepOn(benchmark::State& state, std::shared_ptr<const LiePoissonSystem<G>> system,
+            const typename G::template Dual<double>& W0, double h, const std::string& method_name,
+            long window) {
+  auto method = makeBenchMethod<G>(method_name, system);
+  typename G::template Dual<double> W = W0;
   long k = 0;  // the step of the trajectory from W0
   // Untimed steps from W0: the first sizes the workspaces, the others fill the Legendre
   // predictor's history (its six corrections), as in every run longer than kWarmUp steps.
@@ -108,7 +114,7 @@ void stepFluid(benchmark::State& state, const std::string& method_name, double a
         return;
       }
       allocated += tools::mallocCount() - mallocs;
-      benchmark::DoNotOptimize(W.data());
+      benchmark::DoNotOptimize(&W);
       ++timed;
       if (const LegendreStats* stats = legendreStats(*method)) {
         iterations += stats->fixed_point + stats->newton;
@@ -122,6 +128,30 @@ void stepFluid(benchmark::State& state, const std::string& method_name, double a
   state.counters["krylov_per_step"] = static_cast<double>(krylov) * per_step;
   state.counters["refinements_per_step"] = static_cast<double>(refinements) * per_step;
   state.counters["allocs_per_step"] = static_cast<double>(allocated) * per_step;
+}
+
+void stepFluid(benchmark::State& state, const std::string& method_name, double alpha, int n,
+               long window, bool resolved) {
+  const Matrix W0 = randomVorticity(n, 1);
+  const double h = resolved ? zeitlinDefaultStep(W0, alpha) : zeitlinContractionStep(W0);
+  stepOn<SUN>(state, makeZeitlinFluid(n, alpha), W0, h, method_name, window);
+}
+
+// The magnetic fluid (systems/zeitlin_mhd.h) from W0, the fluid's seeded vorticity, and Θ0 the
+// seeded random potential scaled so that ‖ΔΘ0‖₂ = ‖Δ⁻¹W0‖₂ (ξ's two parts alike), at half the
+// fluid's h: zeitlin-mhd/<method>/<N>, products per step beside the fluid's (issue 57).
+void stepMhd(benchmark::State& state, const std::string& method_name, double alpha, int n) {
+  const Matrix W0 = randomVorticity(n, 1), T = randomVorticity(n, 2);
+  const HoppeYauLaplacian laplacian(n);
+  Matrix P(n, n), B(n, n);
+  laplacian.solve(W0, P);
+  laplacian.apply(T, B);
+  const auto spectral = [](const Matrix& x) {
+    return Eigen::JacobiSVD<Matrix>(x).singularValues()(0);
+  };
+  const DualMatrix<Matrix> mu0 = zeitlinMhdState(W0, spectral(P) / spectral(B) * T);
+  stepOn<DualNumberSUN>(state, makeZeitlinMhd(n, alpha), mu0, 0.5 * zeitlinContractionStep(W0),
+                        method_name, kWindow);
 }
 
 void product(benchmark::State& state, int n) {
@@ -206,6 +236,11 @@ void registerZeitlinBenchmarks() {
     benchmark::RegisterBenchmark(("zeitlin-euler/ddb-cay" + size).c_str(), stepFluid,
                                  std::string("ddb-cay"), 0.0, n, kWindow, false)
         ->Unit(benchmark::kMicrosecond);
+    for (const std::string method : {"ddb-cay", "sddb-cay", "rk4"}) {
+      benchmark::RegisterBenchmark(("zeitlin-mhd/" + method + size).c_str(), stepMhd, method, 0.5,
+                                   n)
+          ->Unit(benchmark::kMicrosecond);
+    }
     registerExactFlows(n);
   }
   // One window each: a window outlasts Google Benchmark's minimum time.

@@ -50,6 +50,13 @@ DDB_DETECT_STATIC(HasExp, G::exp(std::declval<const A<G>&>()))
 DDB_DETECT_STATIC(HasLog, G::log(std::declval<const M<G>&>()))
 DDB_DETECT_STATIC(HasCasimirs, G::casimirs(std::declval<const D<G>&>()))
 #undef DDB_DETECT_STATIC
+
+/// Whether G says that its pairing is not the inner product of its coordinates
+/// (`static constexpr bool kIndefinitePairing = true`: SU(N) ⋉ su(N)*, groups/dual_number_sun.h).
+template <class, class = void>
+struct HasIndefinitePairing : std::false_type {};
+template <class G>
+struct HasIndefinitePairing<G, std::enable_if_t<G::kIndefinitePairing>> : std::true_type {};
 }  // namespace detail
 /// \endcond
 

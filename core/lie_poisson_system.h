@@ -37,6 +37,18 @@ struct MatrixFieldWorkspace {
   }
 };
 
+/// ⟨μ, ξ⟩, the pairing of g* with g: the backend's innerProduct (the Euclidean inner product of
+/// the coordinates, or Re tr(μᴴξ): docs/reference/conventions.md §1), or G::pairing where G says
+/// its pairing is another (kIndefinitePairing: SU(N) ⋉ su(N)*, groups/dual_number_sun.h).
+template <class G, class Dual, class Algebra>
+double dualPairing(const Dual& mu, const Algebra& xi) {
+  if constexpr (detail::HasIndefinitePairing<G>::value) {
+    return G::pairing(mu, xi);
+  } else {
+    return MatrixBackend<Dual>::innerProduct(mu, xi);
+  }
+}
+
 /// The small (fixed-size) groups' workspace of vectorFieldInto: the same parts as
 /// MatrixFieldWorkspace's at μ, as coordinate vectors (nothing to size).
 template <class G>
@@ -136,7 +148,8 @@ class LiePoissonSystem {
   /// §2, "Systems on matrix groups").
   template <class T>
   AlgebraT<T> velocity(const DualT<T>& mu) const {
-    return velocityOf(*hamiltonian_, mu);
+    // T named: a backend's Dual<T> does not depend on T, so it cannot be deduced from mu.
+    return velocityOf<Hamiltonian<G>, T>(*hamiltonian_, mu);
   }
 
   /// In place: ξ = ∂H/∂μ at p into xi and the argument H saw into `argument` (matrix groups:

@@ -29,6 +29,7 @@
 #include <complex>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 namespace ddb {
@@ -350,6 +351,13 @@ struct MatrixBackend {
     }
   }
 };
+
+/// Whether X's backend has the spectral calculus `Eigenbasis`, which the exponential methods and
+/// the Newton search need (method_table.h; a backend may go without it: core/dual_matrix.h).
+template <class X, class = void>
+struct HasEigenbasis : std::false_type {};
+template <class X>
+struct HasEigenbasis<X, std::void_t<typename MatrixBackend<X>::Eigenbasis>> : std::true_type {};
 
 /// requireFinite (errors.h) for a state of any backend: InvalidArgument naming `name` unless
 /// every entry of x is finite.

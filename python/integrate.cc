@@ -61,7 +61,11 @@ py::tuple integrateOn(const System& owner, const SystemPointer<G>& system, Eigen
   auto method = makeMethod<G>(name, system);
   if constexpr (std::is_same_v<G, SUN>) method = owner.withExactFlows(std::move(method));
   Dual<G> mu0 = stateFromArray<G>("mu0", mu0_object, n);
-  if constexpr (isDynamicGroup<G>) G::requireState("mu0", mu0);
+  if constexpr (kTwoParts<G>) {
+    G::requireState("mu0[1] (Theta)", "mu0[0] (W)", mu0);
+  } else if constexpr (isDynamicGroup<G>) {
+    G::requireState("mu0", mu0);
+  }
   requirePositive("h", h);
   // States 0, every, 2 every, ... and the last one (EveryKth).
   const py::ssize_t kept = steps / every + 1 + (steps % every != 0 ? 1 : 0);
@@ -130,18 +134,18 @@ void bindIntegrate(py::module_& m) {
       R"doc(Integrates `system` from mu0 at t = 0 with `method` and returns (t, states).
 
 system: a ddb.System (rigid_body, heavy_top, kirchhoff, planar_kirchhoff, manakov, zeitlin,
-    user_system).
+    zeitlin_mhd, user_system).
 method: a name of ddb.methods() that applies to the system (system.methods()), e.g.
     "ddb-cay", "sddb-exp", "ddb4-cay", "rk4", "reference".
 mu0: the initial state, array-like of the system's state_shape: (3,) on SO3 and SE2, (6,) on SE3,
     a real skew-symmetric (N, N) matrix on SO(N), a complex skew-Hermitian traceless one on
-    SU(N); finite. Copied once.
+    SU(N), two such, (2, N, N) [W, Theta], on zeitlin_mhd's SU(N) x| su(N)*; finite. Copied once.
 h: the step size, finite and > 0.
 steps: the number of steps, >= 0; the run ends at t = steps * h.
 every: keep every `every`-th state (k = 0, every, 2 every, ...) and the last one; >= 1.
 
-Returns t, an array (k,) of times, and states, an array (k, 3), (k, 6) or (k, N, N)
-(real on SO3, SE2, SE3, SO(N), complex on SU(N)), each state written straight from the C++ loop
+Returns t, an array (k,) of times, and states, an array (k, 3), (k, 6), (k, N, N) or
+(k, 2, N, N) (real on SO3, SE2, SE3, SO(N), complex on SU(N) and SU(N) x| su(N)*), each state written straight from the C++ loop
 into it (one copy per kept state, none per step). The GIL is released during the loop
 (a system defined in Python takes it back for each call of its functions).
 

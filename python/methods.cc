@@ -23,6 +23,9 @@ void bindMethods(py::module_& m) {
             groups.insert(groups.end(), {SO3::kName, SE2::kName, SE3::kName});
           }
           if (method.groups & kMatrixGroups) groups.insert(groups.end(), {SON::kName, SUN::kName});
+          if ((method.groups & kBackendMatrixGroups) && !needsEigenbasis(method)) {
+            groups.emplace_back(DualNumberSUN::kName);
+          }
           py::dict row;
           row["name"] = std::string(method.name);
           row["description"] = std::string(method.description);
@@ -38,7 +41,8 @@ void bindMethods(py::module_& m) {
       },
       "Every integrator of the method table, in the paper's order: a list of dicts with "
       "name (what integrate() takes), description, groups (the groups it runs on: SO3, SE2, SE3, "
-      "SO(N), SU(N)), keeps_casimirs (the DDB family: states stay on mu0's coadjoint orbit), "
+      "SO(N), SU(N), SU(N) x| su(N)*), keeps_casimirs (the DDB family: states stay on mu0's "
+      "coadjoint orbit), "
       "needs_lagrangian (applies only to a system with a Lagrangian: rigid_body, kirchhoff, "
       "planar_kirchhoff), needs_scalar_metric (applies only with the metric alpha * identity: not "
       "heavy_top, kirchhoff, planar_kirchhoff), "

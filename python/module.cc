@@ -11,7 +11,8 @@ PYBIND11_MODULE(ddb, m) {
   m.doc() =
       "Lie-Poisson systems with double-bracket dissipation, integrated by the DDB methods "
       "(energy decays, Casimirs kept) and their peers, at C++ speed. Build a system "
-      "(rigid_body, heavy_top, kirchhoff, manakov, zeitlin, user_system), pick a method by "
+      "(rigid_body, heavy_top, kirchhoff, manakov, zeitlin, zeitlin_mhd, user_system), pick a "
+      "method by "
       "its name (methods()) and call integrate(). See docs/guide/python.md.";
   m.attr("__version__") = DDB_VERSION;
   ddb::python::bindErrors(m);
@@ -19,6 +20,7 @@ PYBIND11_MODULE(ddb, m) {
   ddb::python::bindSystems(m);
   ddb::python::bindScenarios(m);
   ddb::python::bindZeitlin(m);
+  ddb::python::bindZeitlinMhd(m);
   ddb::python::bindUserSystem(m);
   ddb::python::bindMethods(m);
   ddb::python::bindIntegrate(m);

@@ -1,10 +1,12 @@
 // States between NumPy and Eigen (docs/guide/python.md, "Copies"). A state of SO(3) is an array
 // of shape (3,), of SE(3) (6,), of SO(N) a real (N, N) array, of SU(N) a complex (N, N)
-// one; a stack of k states has a leading axis k. Every conversion copies: into an Eigen
-// object that the integrator owns and steps in place, and out into NumPy's row-major
-// layout from Eigen's column-major one.
+// one, of SU(N) ⋉ su(N)* (the magnetic fluid) a complex (2, N, N) one, [W, Θ] as quflow's MHD
+// state (DualMatrix's ε-part, then its 1-part); a stack of k states has a leading axis k. Every
+// conversion copies: into an Eigen object that the integrator owns and steps in place, and out into
+// NumPy's row-major layout from Eigen's column-major one.
 #pragma once
 
+#include <ddb/core/dual_matrix.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/group_traits.h>
 #include <pybind11/complex.h>
@@ -14,6 +16,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace ddb::python {
@@ -25,11 +28,34 @@ using ScalarOf = typename Dual<G>::Scalar;
 template <class G>
 using RowMajorState = Eigen::Matrix<ScalarOf<G>, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
-/// The shape of one state: (d,) on a fixed-size group, (N, N) on a matrix group.
+/// Whether G's states are dual-number matrices (SU(N) ⋉ su(N)*): two N x N parts.
+template <class G>
+inline constexpr bool kTwoParts = std::is_same_v<Dual<G>, DualMatrix<Eigen::MatrixXcd>>;
+
+/// The shape of one state: (d,) on a fixed-size group, (N, N) on a matrix group, (2, N, N) on
+/// SU(N) ⋉ su(N)*.
 template <class G>
 std::vector<pybind11::ssize_t> stateShape(Eigen::Index n) {
-  if constexpr (isDynamicGroup<G>) return {n, n};
-  return {Dual<G>::RowsAtCompileTime};
+  if constexpr (kTwoParts<G>) {
+    return {2, n, n};
+  } else if constexpr (isDynamicGroup<G>) {
+    return {n, n};
+  } else {
+    return {Dual<G>::RowsAtCompileTime};
+  }
+}
+
+/// The state whose entries start at `data` in stateShape<G>(n)'s row-major order (a copy).
+template <class G>
+Dual<G> stateAt(const ScalarOf<G>* data, Eigen::Index n) {
+  using Parts = Eigen::Map<const RowMajorState<G>>;
+  if constexpr (kTwoParts<G>) {
+    return {Parts(data + n * n, n, n), Parts(data, n, n)};  // [W, Θ]: ε-part first
+  } else if constexpr (isDynamicGroup<G>) {
+    return Parts(data, n, n);
+  } else {
+    return Eigen::Map<const Dual<G>>(data);
+  }
 }
 
 /// "(3,)", "(4, 4)": a shape as NumPy prints it; a negative extent prints as k.
@@ -67,19 +93,20 @@ Dual<G> stateOfShape(const std::string& name, pybind11::handle object, Eigen::In
     throwInvalid(name, "an array of shape " + shapeText(shape),
                  "must have shape " + shapeText(stateShape<G>(n)));
   }
-  Dual<G> state;
-  if constexpr (isDynamicGroup<G>) {
-    state = Eigen::Map<const RowMajorState<G>>(array.data(), n, n);
-  } else {
-    state = Eigen::Map<const Dual<G>>(array.data());
-  }
-  return state;
+  return stateAt<G>(array.data(), n);
 }
 
 /// One state from `object`, of shape stateShape<G>(n), finite (a copy).
 template <class G>
 Dual<G> stateFromArray(const std::string& name, pybind11::handle object, Eigen::Index n) {
-  return requireFinite(name, stateOfShape<G>(name, object, n));
+  Dual<G> state = stateOfShape<G>(name, object, n);
+  if constexpr (kTwoParts<G>) {
+    requireFinite(name + "[0] (W)", state.eps);
+    requireFinite(name + "[1] (Theta)", state.real);
+    return state;
+  } else {
+    return requireFinite(name, state);
+  }
 }
 
 /// Calls f(state) for one state or each of a stack (shape stateShape<G>(n) or (k, ...)),
@@ -100,12 +127,7 @@ bool forEachState(const std::string& name, pybind11::handle object, Eigen::Index
   const Eigen::Index size =
       stack ? array.size() / std::max<pybind11::ssize_t>(count, 1) : array.size();
   for (pybind11::ssize_t k = 0; k < count; ++k) {
-    const ScalarOf<G>* data = array.data() + k * size;
-    if constexpr (isDynamicGroup<G>) {
-      f(Dual<G>(Eigen::Map<const RowMajorState<G>>(data, n, n)));
-    } else {
-      f(Dual<G>(Eigen::Map<const Dual<G>>(data)));
-    }
+    f(stateAt<G>(array.data() + k * size, n));
   }
   return stack;
 }
@@ -121,7 +143,10 @@ pybind11::array_t<ScalarOf<G>> stateStack(pybind11::ssize_t count, Eigen::Index 
 /// Writes `state` as entry k of a stack whose data starts at `data` (no GIL needed).
 template <class G>
 void writeState(ScalarOf<G>* data, pybind11::ssize_t k, Eigen::Index n, const Dual<G>& state) {
-  if constexpr (isDynamicGroup<G>) {
+  if constexpr (kTwoParts<G>) {
+    Eigen::Map<RowMajorState<G>>(data + 2 * k * n * n, n, n) = state.eps;
+    Eigen::Map<RowMajorState<G>>(data + (2 * k + 1) * n * n, n, n) = state.real;
+  } else if constexpr (isDynamicGroup<G>) {
     Eigen::Map<RowMajorState<G>>(data + k * n * n, n, n) = state;
   } else {
     Eigen::Map<Dual<G>>(data + k * Dual<G>::RowsAtCompileTime) = state;
@@ -131,7 +156,12 @@ void writeState(ScalarOf<G>* data, pybind11::ssize_t k, Eigen::Index n, const Du
 /// One state as a new array (a copy).
 template <class G>
 pybind11::array_t<ScalarOf<G>> stateToArray(const Dual<G>& state) {
-  const Eigen::Index n = isDynamicGroup<G> ? state.rows() : 0;
+  Eigen::Index n = 0;
+  if constexpr (kTwoParts<G>) {
+    n = state.real.rows();
+  } else if constexpr (isDynamicGroup<G>) {
+    n = state.rows();
+  }
   pybind11::array_t<ScalarOf<G>> array(stateShape<G>(n));
   writeState<G>(array.mutable_data(), 0, n, state);
   return array;

@@ -30,13 +30,16 @@ py::object perState(const System& s, py::handle states, bool scalar, F&& f) {
 void bindSystem(py::module_& m) {
   py::class_<System, std::shared_ptr<System>>(
       m, "System",
-      "A Lie-Poisson system with double-bracket dissipation on SO3, SE2, SE3, SO(N) or SU(N). "
-      "Built by rigid_body, heavy_top, kirchhoff, planar_kirchhoff, manakov, zeitlin, "
+      "A Lie-Poisson system with double-bracket dissipation on SO3, SE2, SE3, SO(N), SU(N) or "
+      "SU(N) x| su(N)*. Built by rigid_body, heavy_top, kirchhoff, planar_kirchhoff, manakov, "
+      "zeitlin, zeitlin_mhd, "
       "user_system or a scenario's system().")
       .def_property_readonly("name", &System::name)
-      .def_property_readonly("group", &System::group, "SO3, SE2, SE3, SO(N) or SU(N)")
-      .def_property_readonly("n", &System::n,
-                             "N of SO(N), SU(N) (states are N x N); 0 on SO3, SE2 and SE3")
+      .def_property_readonly("group", &System::group,
+                             "SO3, SE2, SE3, SO(N), SU(N) or SU(N) x| su(N)*")
+      .def_property_readonly(
+          "n", &System::n,
+          "N of SO(N), SU(N), SU(N) x| su(N)* (states N x N, or 2 x N x N); 0 on SO3, SE2 and SE3")
       .def_property_readonly(
           "state_shape",
           [](const System& s) {
@@ -44,7 +47,7 @@ void bindSystem(py::module_& m) {
               return py::tuple(py::cast(stateShape<GroupOf<decltype(p)>>(s.n())));
             });
           },
-          "the shape of one state: (3,) (SO3, SE2), (6,) (SE3) or (N, N)")
+          "the shape of one state: (3,) (SO3, SE2), (6,) (SE3), (N, N) or (2, N, N) (zeitlin_mhd)")
       .def(
           "energy",
           [](const System& s, py::handle states) {
@@ -64,8 +67,9 @@ void bindSystem(py::module_& m) {
           },
           py::arg("states"),
           "The Casimirs of one state or of each of a stack: |m| on SO3; (|gamma|^2, pi.gamma) "
-          "on SE3; on SO(N), SU(N) the spectrum, the eigenvalues of -i mu, ascending. One "
-          "state: an array (c,); a stack of k: an array (k, c).")
+          "on SE3; on SO(N), SU(N) the spectrum, the eigenvalues of -i mu, ascending; on "
+          "zeitlin_mhd's group tr H^k (k = 2..N) then tr(H^k K) (k = 0..N-1), H = -i Theta, "
+          "K = -i W. One state: an array (c,); a stack of k: an array (k, c).")
       .def(
           "methods",
           [](const System& s) {

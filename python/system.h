@@ -1,8 +1,10 @@
 // ddb.System: a LiePoissonSystem on one of the groups the module binds (SO(3), SE(2), SE(3),
-// SO(N), SU(N)), with N for the matrix groups; what integrate() and the diagnostics take.
+// SO(N), SU(N), SU(N) ⋉ su(N)*), with N for the matrix groups; what integrate() and the diagnostics
+// take.
 #pragma once
 
 #include <ddb/core/lie_poisson_system.h>
+#include <ddb/groups/dual_number_sun.h>
 #include <ddb/groups/se2.h>
 #include <ddb/groups/se3.h>
 #include <ddb/groups/so3.h>
@@ -20,8 +22,9 @@ namespace ddb::python {
 template <class G>
 using SystemPointer = std::shared_ptr<const LiePoissonSystem<G>>;
 
-using AnySystem = std::variant<SystemPointer<SO3>, SystemPointer<SE2>, SystemPointer<SE3>,
-                               SystemPointer<SON>, SystemPointer<SUN>>;
+using AnySystem =
+    std::variant<SystemPointer<SO3>, SystemPointer<SE2>, SystemPointer<SE3>, SystemPointer<SON>,
+                 SystemPointer<SUN>, SystemPointer<DualNumberSUN>>;
 
 /// G of a SystemPointer<G> (as a generic lambda given to System::visit sees it).
 template <class P>

@@ -10,6 +10,7 @@
 // with `solve(const X& W, X& out)`, out = (Δ_N − κ²)⁻¹ of W's traceless part, out may be W.
 #pragma once
 
+#include <ddb/core/detail/evaluation_scratch.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/lagrangian.h>
 #include <ddb/core/matrix_backend.h>
@@ -156,18 +157,8 @@ class ZeitlinHamiltonianOf : public Hamiltonian<G> {
   struct Scratch {
     X relative, stream;
   };
-  // value()'s workspaces: per thread for dense matrices (a system is shared by threads, and
-  // OrbitNewton's line searches evaluate H inside a step, which does not allocate:
-  // tests/unit/test_allocations.cc); in the object for other backends, whose evaluations are
-  // collective and so one at a time.
-  Scratch& scratch() const {
-    if constexpr (isEigenMatrix<X>) {
-      thread_local Scratch s;
-      return s;
-    } else {
-      return scratch_;
-    }
-  }
+  // value()'s workspaces (core/detail/evaluation_scratch.h).
+  Scratch& scratch() const { return detail::evaluationScratch<X>(scratch_); }
 
   mutable Poisson poisson_;  // keeps workspaces
   double hbar_;

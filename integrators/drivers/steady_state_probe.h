@@ -5,7 +5,8 @@
 //   dH/dt(μ) = −⟨ad*_ξ μ, k♯(ad*_ξ μ)⟩      (Proposition 3.3).
 // r is dimensionless: invariant under scaling μ, H or time. On the fluid, ξ = −P/ħ and
 // ad*_ξ W = −[W, P]/ħ, so r = ‖[P, W]‖_F/(‖P‖_F ‖W‖_F). The norms are the Euclidean norms
-// of the coordinates (fixed-size groups) or Frobenius (matrix groups), the pairing's.
+// of the coordinates (fixed-size groups) or Frobenius (matrix groups; both parts together on
+// SU(N) ⋉ su(N)*, whose pairing is not their inner product).
 #pragma once
 
 #include <ddb/core/lie_poisson_system.h>
@@ -26,11 +27,12 @@ class SteadyStateProbe {
     w_.resize(mu);
     if (!B::sameShape(field_, mu)) B::zeroLike(field_, mu);
     system_.fieldPartsInto(mu, w_, field_);
-    // ad*_ξ μ is w_.commutator (matrix groups: [Pμ, ξ]); the pairing is Re tr(AᴴB).
+    // ad*_ξ μ is w_.commutator (matrix groups: [Pμ, ξ]); the rate pairs it with φ by the
+    // group's pairing (dualPairing: Re tr(AᴴB) on matrix groups).
     const double scale =
         MatrixBackend<Algebra>::frobeniusNorm(w_.xi) * B::frobeniusNorm(w_.argument);
     residual_ = scale > 0 ? B::frobeniusNorm(w_.commutator) / scale : 0.0;
-    energy_rate_ = -B::innerProduct(w_.commutator, w_.phi);
+    energy_rate_ = -dualPairing<G>(w_.commutator, w_.phi);
   }
 
   /// r(μ) = ‖ad*_ξ μ‖/(‖ξ‖ ‖μ‖); 0 where ξ or μ vanishes (the flow is at rest there).

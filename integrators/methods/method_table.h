@@ -9,6 +9,7 @@
 #include <ddb/core/detail/is_complete.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/group_traits.h>
+#include <ddb/core/matrix_backend.h>
 #include <ddb/core/matrix_traits.h>
 #include <ddb/groups/cayley.h>
 #include <ddb/groups/exponential.h>
@@ -141,6 +142,22 @@ inline constexpr std::array<MethodInfo, 15> kMethods{{
 }};
 // clang-format on
 
+/// Whether the entry needs the matrices' spectral calculus (MatrixBackend<X>::Eigenbasis): the
+/// exponential retractions' sweeps and conjugations, the linearly implicit factor's Newton search
+/// (its preconditioner), and compositions of such entries.
+inline bool needsEigenbasis(const MethodInfo& method);
+
+/// Whether G's states have the spectral calculus: the small groups need none (their exponential
+/// is a closed form), a matrix group's backend may lack it (SU(N) ⋉ su(N)*, core/dual_matrix.h).
+template <class G>
+constexpr bool groupHasEigenbasis() {
+  if constexpr (!isDynamicGroup<G>) {
+    return true;
+  } else {
+    return HasEigenbasis<typename G::template Dual<double>>::value;
+  }
+}
+
 /// The families G belongs to.
 template <class G>
 constexpr unsigned groupFamilyOf() {
@@ -157,6 +174,16 @@ inline const MethodInfo* findMethod(std::string_view name) {
     if (m.name == name) return &m;
   }
   return nullptr;
+}
+
+inline bool needsEigenbasis(const MethodInfo& method) {
+  if (method.kind == MethodKind::kComposition) {
+    const MethodInfo* base = findMethod(method.base);
+    return base != nullptr && needsEigenbasis(*base);
+  }
+  return method.kind == MethodKind::kLinearlyImplicitDdb ||
+         method.retraction == RetractionKind::kExponential ||
+         method.retraction == RetractionKind::kTruncatedExponential2;
 }
 
 /// The names of the entries that run on any of `families`, in table order.
@@ -198,6 +225,7 @@ inline std::vector<std::pair<std::string, std::string>> methodDescriptions(
 template <class G>
 bool methodApplies(const MethodInfo& method, const LiePoissonSystem<G>& system) {
   return (method.groups & groupFamilyOf<G>()) != 0 &&
+         (groupHasEigenbasis<G>() || !needsEigenbasis(method)) &&
          (!method.needs_lagrangian || system.lagrangian() != nullptr) &&
          (!method.needs_scalar_metric || asScalarMetric(system.metric()) != nullptr);
 }
@@ -229,6 +257,21 @@ template <class G>
   }
 }
 
+/// The message of an entry that needs the spectral calculus on a group whose matrices lack it.
+template <class G>
+[[noreturn]] void throwNeedsEigenbasis(const std::string& name) {
+  std::string list;
+  for (const MethodInfo& m : kMethods) {
+    if ((m.groups & groupFamilyOf<G>()) != 0 && !needsEigenbasis(m)) {
+      list += (list.empty() ? "" : ", ") + std::string(m.name);
+    }
+  }
+  throwInvalid("method", name,
+               "needs the spectral calculus of the matrices (the exponential map, or the Newton "
+               "search's preconditioner), which " +
+                   std::string(G::kName) + "'s have not; these run on it: " + list);
+}
+
 template <class G>
 using MethodPointer = std::unique_ptr<OneStepMethod<G>>;
 
@@ -239,12 +282,14 @@ MethodPointer<G> withRetraction(RetractionKind r, std::shared_ptr<const LiePoiss
   if (r == RetractionKind::kCayley) {
     return std::make_unique<M<Cayley<G>>>(system, Cayley<G>(), args...);
   }
-  if (r == RetractionKind::kExponential) {
-    return std::make_unique<M<Exponential<G>>>(system, Exponential<G>(), args...);
-  }
-  if (r == RetractionKind::kTruncatedExponential2) {
-    return std::make_unique<M<TruncatedExponential<G>>>(system, TruncatedExponential<G>(2),
-                                                        args...);
+  if constexpr (groupHasEigenbasis<G>()) {  // else makeMethod refused the row already
+    if (r == RetractionKind::kExponential) {
+      return std::make_unique<M<Exponential<G>>>(system, Exponential<G>(), args...);
+    }
+    if (r == RetractionKind::kTruncatedExponential2) {
+      return std::make_unique<M<TruncatedExponential<G>>>(system, TruncatedExponential<G>(2),
+                                                          args...);
+    }
   }
   throw std::logic_error("method table: a retraction the group has not");
 }
@@ -278,6 +323,7 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(const MethodInfo& method,
                                              std::shared_ptr<const LiePoissonSystem<G>> system) {
   const std::string name(method.name);
   if ((method.groups & groupFamilyOf<G>()) == 0) detail::throwNotAMethod<G>(name);
+  if (!groupHasEigenbasis<G>() && needsEigenbasis(method)) detail::throwNeedsEigenbasis<G>(name);
   if (method.needs_lagrangian && system->lagrangian() == nullptr) {
     throwInvalid("method", name, "needs a Lagrangian, which '" + system->name() + "' has not");
   }
@@ -296,7 +342,10 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(const MethodInfo& method,
     case MethodKind::kDdb:
       return detail::withRetraction<G, Ddb>(method.retraction, system, form);
     case MethodKind::kLinearlyImplicitDdb:
-      return detail::withRetraction<G, LinearlyImplicitDdb>(method.retraction, system, form);
+      if constexpr (groupHasEigenbasis<G>()) {
+        return detail::withRetraction<G, LinearlyImplicitDdb>(method.retraction, system, form);
+      }
+      break;
     case MethodKind::kSymmetricDdb:
       return detail::withRetraction<G, SymmetricDdb>(method.retraction, system, form);
     case MethodKind::kPaperSymmetricDdb:
@@ -349,6 +398,9 @@ struct SON;
 template <class X>
 struct SUNOn;
 using SUN = SUNOn<Eigen::MatrixXcd>;
+template <class X>
+struct DualNumberSUNOn;
+using DualNumberSUN = DualNumberSUNOn<Eigen::MatrixXcd>;
 
 }  // namespace ddb
 
@@ -365,3 +417,4 @@ DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SO3);
 DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SE3);
 DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SON);
 DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SUN);
+DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::DualNumberSUN);

@@ -54,9 +54,22 @@
 #include <limits>
 #include <string>
 #include <type_traits>
+#include <variant>
 #include <vector>
 
 namespace ddb {
+
+namespace detail {
+/// B's Eigenbasis where a solver sweeps in it, else nothing (a backend may have none).
+template <class B, bool kNeeded>
+struct EigenbasisSlot {
+  using type = typename B::Eigenbasis;
+};
+template <class B>
+struct EigenbasisSlot<B, false> {
+  using type = std::monostate;
+};
+}  // namespace detail
 
 /// How the matrix-free solver proceeds: kAuto is the fixed point with Newton–Krylov as
 /// the fallback; the others force one path (for tests and comparisons). kExternal is set by
@@ -345,7 +358,7 @@ class MatrixLegendreSolver {
   /// last solve could not certify it (the update then forms cay(2a)).
   const Dual* frozenSolution() const { return frozen_exact_ ? &frozen_ : nullptr; }
   /// The exponential: the eigenbasis of ξ = velocity() after a solve.
-  typename B::Eigenbasis& eigenbasis() { return eigenbasis_; }
+  auto& eigenbasis() { return eigenbasis_; }
 
  private:
   /// Sweeps past the tolerance, at most, to certify the frozen solution.
@@ -527,7 +540,9 @@ class MatrixLegendreSolver {
   Dual argument_, direction_;  // the algebra parts of p and of a Newton direction
 
   MatrixFreeGmres<Dual> gmres_;
-  typename B::Eigenbasis eigenbasis_;
+  // ξ's eigenbasis, for the exponential's sweeps only: the Cayley map's product form needs none,
+  // so a backend without the spectral calculus runs it (core/dual_matrix.h).
+  typename detail::EigenbasisSlot<B, !kProductForm>::type eigenbasis_;
 };
 
 }  // namespace ddb

@@ -5,6 +5,7 @@
 // Every header the docs show, as <ddb/...> or as a path of the library's folders.
 #include <ddb/core/autodiff.h>
 #include <ddb/core/dissipation_metric.h>
+#include <ddb/core/dual_matrix.h>
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lagrangian.h>
 #include <ddb/core/lie_group.h>
@@ -15,6 +16,7 @@
 #include <ddb/core/thread_pool.h>
 #include <ddb/ddb.h>
 #include <ddb/groups/direct_product.h>
+#include <ddb/groups/dual_number_sun.h>
 #include <ddb/groups/se2.h>
 #include <ddb/groups/se3.h>
 #include <ddb/groups/semidirect_product.h>
@@ -24,6 +26,7 @@
 #include <ddb/groups/special_euclidean.h>
 #include <ddb/groups/special_orthogonal.h>
 #include <ddb/groups/sun.h>
+#include <ddb/groups/swapped_parts_metric.h>
 #include <ddb/integrators/drivers/energy_step_control.h>
 #include <ddb/integrators/drivers/integrate.h>
 #include <ddb/integrators/drivers/relax.h>
@@ -59,6 +62,7 @@
 #include <ddb/systems/zeitlin_forcing.h>
 #include <ddb/systems/zeitlin_implicit_viscous_step.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
+#include <ddb/systems/zeitlin_mhd.h>
 #include <ddb/systems/zeitlin_spectra.h>
 #include <ddb/systems/zeitlin_step_size.h>
 #include <ddb/systems/zeitlin_viscosity.h>
@@ -844,6 +848,26 @@ static_assert(std::is_constructible_v<EveryKthSO3, long, Observer<SO3>&>);
   use(&EveryKthSO3::finish, &ddb::SolveFailure::whatFailed, &ddb::SolveFailure::tolerance);
   static_assert(std::is_base_of_v<ddb::SolveFailure, ddb::NonFiniteState>);
   static_assert(std::is_base_of_v<ddb::SolveFailure, ddb::BudgetExhausted>);
+}
+
+// Magnetohydrodynamics on the sphere (docs/guide/matrix-groups-and-the-fluid.md): the group,
+// its states, metric, system, diagnostics and methods.
+static_assert(std::is_same_v<ddb::DualNumberSUN, ddb::DualNumberSUNOn<Eigen::MatrixXcd>>);
+static_assert(std::is_same_v<Dual<ddb::DualNumberSUN>, ddb::DualMatrix<Eigen::MatrixXcd>>);
+static_assert(std::is_base_of_v<ddb::DissipationMetric<ddb::DualNumberSUN>,
+                                ddb::SwappedPartsMetric<Eigen::MatrixXcd>>);
+[[maybe_unused]] void magnetohydrodynamics() {
+  const SystemPtr<ddb::DualNumberSUN> mhd = ddb::makeZeitlinMhd(8, 0.5);
+  const auto& h = dynamic_cast<const ddb::ZeitlinMhdHamiltonian&>(mhd->hamiltonian());
+  const ddb::ZeitlinMhdDiagnostics diagnostics(h);
+  ddb::DualMatrix<Eigen::MatrixXcd> mu =
+      ddb::zeitlinMhdState(ddb::l1Vorticity(8, 1), ddb::randomVorticity(8, 2));
+  ddb::DualNumberSUN::requireState("Theta", "W", mu);
+  MethodPtr<ddb::DualNumberSUN> method = ddb::makeMethod<ddb::DualNumberSUN>("ddb-cay", mhd);
+  method->advance(mu, 0.0, 0.01);
+  use(mu.real, mu.eps, diagnostics.kineticEnergy(mu), diagnostics.magneticEnergy(mu),
+      diagnostics.crossHelicity(mu), diagnostics.equilibriumResidual(mu),
+      ddb::DualNumberSUN::casimirs(mu), ddb::needsEigenbasis(ddb::kMethods[0]));
 }
 
 }  // namespace

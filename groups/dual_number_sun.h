@@ -1,0 +1,99 @@
+// SU(N) ⋉ su(N)*, the group of magnetohydrodynamics on the sphere, as SU(N) over the dual numbers
+// R[ε], ε² = 0 (docs/reference/conventions.md §1, "SU(N) over the dual numbers"): its algebra is
+// su(N) ⊗ R[ε], ξ = ξ₀ + εξ₁ with [ξ, η] = [ξ₀, η₀] + ε([ξ₀, η₁] + [ξ₁, η₀]), the semidirect
+// product of su(N) with su(N) by the adjoint action. With the pairing
+//   ⟨μ, ξ⟩ = the ε-coefficient of Re tr(μᴴξ) = Re tr(μ₀ᴴξ₁) + Re tr(μ₁ᴴξ₀)
+// the dual is su(N) ⊗ R[ε] again, and every formula of SkewHermitianGroup holds verbatim in
+// dual-number arithmetic (trace cyclicity holds over the commutative R[ε]): ad*_ξ μ = [μ, ξ],
+// Ad*_g μ = gᴴμg, (dcay⁻¹_x)*μ = (I + x/2)μ(I − x/2) and the Cayley step's kernels. So the group
+// is SkewHermitianGroup on DualMatrix<X> (core/dual_matrix.h), whose backend does the arithmetic.
+// For the magnetic fluid the state is μ = Θ + εW (magnetic potential, vorticity): ξ₀ = ∂H/∂W
+// pairs with W and ξ₁ = ∂H/∂Θ with Θ (systems/zeitlin_mhd.h).
+// Casimirs: tr μᵏ = tr Θᵏ + ε k tr(Θᵏ⁻¹W), both parts of every power trace (casimirs below).
+#pragma once
+
+#include <ddb/core/dual_matrix.h>
+#include <ddb/core/errors.h>
+#include <ddb/groups/skew_hermitian_group.h>
+#include <ddb/groups/sun.h>
+
+#include <Eigen/Core>
+#include <complex>
+#include <string>
+
+namespace ddb {
+
+/// SU(N) ⋉ su(N)* with its states in two of a backend's matrices X (DualMatrix<X>): the closed
+/// forms of SkewHermitianGroup in dual-number arithmetic. As for SUNOn<X>, what runs is what is
+/// written against the matrix backend: the system's in-place evaluations, integrate(), and the
+/// methods of the method table that need no spectral calculus (the Cayley family, rk4,
+/// lobatto3c; method_table.h). The Casimirs need dense parts.
+template <class X>
+struct DualNumberSUNOn : SkewHermitianGroup<DualNumberSUNOn<X>, detail::ComplexScalar> {
+  using Base = SkewHermitianGroup<DualNumberSUNOn<X>, detail::ComplexScalar>;
+  static constexpr const char* kName = "SU(N) x| su(N)*";
+  static constexpr const char* kAlgebraName = "skew-Hermitian";
+  template <class T>
+  using Algebra = DualMatrix<X>;
+  template <class T>
+  using Dual = DualMatrix<X>;
+
+  /// The pairing is not the backend's inner product (dualPairing, core/lie_poisson_system.h).
+  static constexpr bool kIndefinitePairing = true;
+  /// ⟨μ, ξ⟩ = Re tr(μ₀ᴴξ₁) + Re tr(μ₁ᴴξ₀), the ε-coefficient of Re tr(μᴴξ): indefinite, unlike
+  /// the backend's innerProduct, which the solvers use to measure iterates.
+  static double pairing(const DualMatrix<X>& mu, const DualMatrix<X>& xi) {
+    using P = MatrixBackend<X>;
+    return P::innerProduct(mu.real, xi.eps) + P::innerProduct(mu.eps, xi.real);
+  }
+
+  /// The orthogonal projection onto su(N) ⊗ R[ε], part by part, in place (SUNOn's on each).
+  static void projectToAlgebra(DualMatrix<X>& x) {
+    Base::projectToAlgebra(x.real);
+    Base::projectToAlgebra(x.eps);
+  }
+
+  /// With H = −iμ₀ and K = −iμ₁ (Hermitian; for the magnetic fluid H = −iΘ, K = −iW), the real
+  /// numbers tr Hᵏ for k = 2, …, N, then tr(HᵏK) for k = 0, …, N − 1: up to the factors iᵏ, the
+  /// 1- and ε-parts of tr μᵏ (tr Θᵏ and tr(Θᵏ⁻¹W) up to i^k), which are invariant under every
+  /// Ad*_g. Dense parts only; O(N⁴).
+  static Eigen::VectorXd casimirs(const DualMatrix<X>& mu) {
+    static_assert(isEigenMatrix<X>, "the Casimirs of SU(N) x| su(N)* need dense matrices");
+    const Eigen::Index n = mu.real.rows();
+    const Eigen::MatrixXcd H = mu.real * std::complex<double>(0, -1);
+    const Eigen::MatrixXcd K = mu.eps * std::complex<double>(0, -1);
+    Eigen::VectorXd out(2 * n - 1);
+    Eigen::MatrixXcd power = Eigen::MatrixXcd::Identity(n, n);  // Hᵏ
+    for (Eigen::Index k = 0; k < n; ++k) {
+      out(n - 1 + k) = traceOfProduct(power, K);
+      power = (power * H).eval();
+      if (k + 2 <= n) out(k) = traceOfProduct(power, H);
+    }
+    return out;
+  }
+
+  /// Re tr(AB) = Σ A_ij B_ji, without forming AB.
+  static double traceOfProduct(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b) {
+    return a.cwiseProduct(b.transpose()).sum().real();
+  }
+
+  /// Checks a state: two N×N parts, 2 ≤ N ≤ kMaxN, each finite, skew-Hermitian and traceless to
+  /// 1e-12 relative; `real_name` and `eps_name` are what the message calls the parts.
+  static void requireState(const std::string& real_name, const std::string& eps_name,
+                           const DualMatrix<X>& mu) {
+    static_assert(isEigenMatrix<X>, "requireState reads dense matrices");
+    SUNOn<X>::requireState(real_name, mu.real);
+    SUNOn<X>::requireState(eps_name, mu.eps);
+    if (mu.real.rows() != mu.eps.rows()) {
+      throwInvalid(eps_name,
+                   std::to_string(mu.eps.rows()) + "x" + std::to_string(mu.eps.cols()) + " matrix",
+                   "must have the size of " + real_name + " (" + std::to_string(mu.real.rows()) +
+                       "x" + std::to_string(mu.real.cols()) + ")");
+    }
+  }
+};
+
+/// SU(N) ⋉ su(N)* on dense matrices.
+using DualNumberSUN = DualNumberSUNOn<Eigen::MatrixXcd>;
+
+}  // namespace ddb
