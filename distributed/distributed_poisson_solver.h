@@ -1,4 +1,5 @@
-// The Poisson solve P = Δ⁻¹(W − tr(W)/N · I) of Zeitlin's fluid on a block-cyclic W
+// The Poisson solve P = Δ⁻¹(W − tr(W)/N · I) of Zeitlin's fluid on a block-cyclic W, and the
+// Laplacian itself (apply: the magnetic fluid's current B = ΔΘ, systems/zeitlin_mhd.h)
 // (docs/design/distributed.md): whole diagonals are gathered on their owners
 // (DiagonalRedistribution), each is solved there by the serial HoppeYauLaplacian's
 // per-diagonal sweep, and the result goes back to the block-cyclic layout. Each rank keeps
@@ -26,28 +27,27 @@ class DistributedPoissonSolver {
     HoppeYauLaplacian::requireShift(kappa_squared);
     const Eigen::Index entries = redistribution_.ownedEntries();
     diagonals_.resize(entries);
+    applied_.resize(entries);
     lower_.resize(entries);
     inverse_pivot_.resize(entries);
+    shifted_diagonal_.resize(entries);
+    off_.resize(entries);
     const auto& owned = redistribution_.diagonals();
+    Eigen::VectorXd diagonal, off;
     for (std::size_t d = 0; d < owned.size(); ++d) {
       Eigen::VectorBlock<Eigen::VectorXd> lower = ownedSegment(lower_, d),
                                           inverse_pivot = ownedSegment(inverse_pivot_, d);
       HoppeYauLaplacian::factorDiagonal(n_, owned[d], kappa_squared, lower, inverse_pivot);
+      HoppeYauLaplacian::blockCoefficients(n_, owned[d], diagonal, off);
+      ownedSegment(shifted_diagonal_, d) = diagonal.array() - kappa_squared;
+      ownedSegment(off_, d) = off;
     }
   }
 
   /// out = (Δ − κ²)⁻¹(W − tr(W)/N · I); collective. out may be W; both have this solver's grid, N
   /// and block size.
   void solve(const DistributedMatrix& W, DistributedMatrix& out) {
-    for (const DistributedMatrix* m : {&W, static_cast<const DistributedMatrix*>(&out)}) {
-      if (m->size() != n_ || m->layout().block() != block_ || &m->layout().grid() != grid_) {
-        throwInvalid(
-            "matrix",
-            "N = " + std::to_string(m->size()) + ", block " + std::to_string(m->layout().block()),
-            "must have N = " + std::to_string(n_) + " and block " + std::to_string(block_) +
-                " for this solver");
-      }
-    }
+    requireLayout(W, out);
     redistribution_.toDiagonals(W.local(), diagonals_);
     const auto& owned = redistribution_.diagonals();
     for (std::size_t d = 0; d < owned.size(); ++d) {
@@ -58,12 +58,46 @@ class DistributedPoissonSolver {
     redistribution_.toBlockCyclic(diagonals_, out.local());
   }
 
+  /// out = (Δ − κ²) P, each owned diagonal by its tridiagonal block in HoppeYauLaplacian::apply's
+  /// order of operations (so the dense apply's bits); collective. out is not P.
+  void apply(const DistributedMatrix& P, DistributedMatrix& out) {
+    requireLayout(P, out);
+    redistribution_.toDiagonals(P.local(), diagonals_);
+    const auto& owned = redistribution_.diagonals();
+    for (std::size_t d = 0; d < owned.size(); ++d) {
+      const auto in = ownedSegment(diagonals_, d);
+      auto result = ownedSegment(applied_, d);
+      const auto diagonal = ownedSegment(shifted_diagonal_, d);
+      const auto off = ownedSegment(off_, d);
+      const Eigen::Index length = in.size();
+      for (Eigen::Index k = 0; k < length; ++k) {
+        auto value = diagonal(k) * in(k);
+        if (k > 0) value += off(k) * in(k - 1);
+        if (k + 1 < length) value += off(k + 1) * in(k + 1);
+        result(k) = value;
+      }
+    }
+    redistribution_.toBlockCyclic(applied_, out.local());
+  }
+
   /// Bytes this rank sends to other ranks in one solve (both exchanges).
   std::int64_t bytesSentPerSolve() const {
     return redistribution_.bytesSentToDiagonals() + redistribution_.bytesSentToBlockCyclic();
   }
 
  private:
+  void requireLayout(const DistributedMatrix& in, const DistributedMatrix& out) const {
+    for (const DistributedMatrix* m : {&in, &out}) {
+      if (m->size() != n_ || m->layout().block() != block_ || &m->layout().grid() != grid_) {
+        throwInvalid(
+            "matrix",
+            "N = " + std::to_string(m->size()) + ", block " + std::to_string(m->layout().block()),
+            "must have N = " + std::to_string(n_) + " and block " + std::to_string(block_) +
+                " for this solver");
+      }
+    }
+  }
+
   // The entries of this rank's d-th diagonal in a vector packed like diagonals_.
   template <class Vector>
   Eigen::VectorBlock<Vector> ownedSegment(Vector& packed, std::size_t d) const {
@@ -75,8 +109,9 @@ class DistributedPoissonSolver {
   const ProcessGrid* grid_;
   int block_;
   DiagonalRedistribution redistribution_;
-  Eigen::VectorXcd diagonals_;
-  Eigen::VectorXd lower_, inverse_pivot_;  // the factors of the owned diagonals, packed
+  Eigen::VectorXcd diagonals_, applied_;
+  Eigen::VectorXd lower_, inverse_pivot_;   // the factors of the owned diagonals, packed
+  Eigen::VectorXd shifted_diagonal_, off_;  // their blocks of Δ − κ² (apply), packed
 };
 
 }  // namespace ddb

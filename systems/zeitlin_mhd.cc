@@ -15,9 +15,7 @@ std::shared_ptr<const LiePoissonSystem<DualNumberSUN>> makeZeitlinMhd(Eigen::Ind
     throwInvalid("N", std::to_string(n),
                  "must be >= 2 and <= " + std::to_string(DualNumberSUN::kMaxN));
   }
-  return makeLiePoissonSystem(
-      "zeitlin-mhd", std::make_shared<const ZeitlinMhdHamiltonian>(HoppeYauLaplacian(n), n),
-      std::make_shared<const SwappedPartsMetric<Eigen::MatrixXcd>>(alpha));
+  return makeZeitlinMhdOn<Eigen::MatrixXcd>(HoppeYauLaplacian(n), n, alpha);
 }
 
 double ZeitlinMhdDiagnostics::kineticEnergy(const State& mu) const {

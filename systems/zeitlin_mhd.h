@@ -106,6 +106,18 @@ inline DualMatrix<Eigen::MatrixXcd> zeitlinMhdState(Eigen::MatrixXcd W, Eigen::M
 /// k♯ = α·swap (SwappedPartsMetric). InvalidArgument naming N or alpha if out of range.
 std::shared_ptr<const LiePoissonSystem<DualNumberSUN>> makeZeitlinMhd(Eigen::Index n, double alpha);
 
+/// ... on matrices X given X's Poisson solver (solve and apply; on MPI ranks
+/// DistributedPoissonSolver, distributed/distributed_zeitlin_mhd.h). InvalidArgument naming alpha.
+template <class X, class Poisson>
+std::shared_ptr<const LiePoissonSystem<DualNumberSUNOn<X>>> makeZeitlinMhdOn(Poisson poisson,
+                                                                             Eigen::Index n,
+                                                                             double alpha) {
+  return makeLiePoissonSystem(
+      "zeitlin-mhd",
+      std::make_shared<const ZeitlinMhdHamiltonianOf<X, Poisson>>(std::move(poisson), n),
+      std::make_shared<const SwappedPartsMetric<X>>(alpha));
+}
+
 /// The magnetic fluid's diagnostics in the fluid's units (ZeitlinDiagnostics: E = ħH/N).
 class ZeitlinMhdDiagnostics {
  public:

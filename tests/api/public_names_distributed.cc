@@ -8,6 +8,7 @@
 #include <ddb/distributed/distributed_matrix.h>
 #include <ddb/distributed/distributed_zeitlin_exact_flows.h>
 #include <ddb/distributed/distributed_zeitlin_fluid.h>
+#include <ddb/distributed/distributed_zeitlin_mhd.h>
 #include <ddb/distributed/process_grid.h>
 #include <ddb/groups/sun.h>
 #include <ddb/integrators/drivers/relax.h>
@@ -64,6 +65,16 @@ static_assert(std::is_same_v<ddb::DistributedSUN::Algebra<double>, ddb::Distribu
   const Eigen::MatrixXcd final_state = run.current().gather();
   use(gathered, final_state, grid.rank(),
       ddb::MatrixBackend<ddb::DistributedMatrix>::frobeniusNorm(W));
+}
+
+// docs/guide/matrix-groups-and-the-fluid.md: magnetohydrodynamics on MPI ranks.
+[[maybe_unused]] void magnetohydrodynamicsOnRanks(const ddb::ProcessGrid& grid) {
+  ddb::DualMatrix<ddb::DistributedMatrix> mu{ddb::DistributedMatrix(grid, 16, 4),
+                                             ddb::DistributedMatrix(grid, 16, 4)};
+  const auto mhd = ddb::makeDistributedZeitlinMhd(mu.real.layout(), 0.5);
+  const auto step = ddb::makeMethod<ddb::DistributedDualNumberSUN>("ddb-cay", mhd);
+  step->advance(mu, 0.0, 0.01);
+  use(mhd->energy(mu));
 }
 
 // docs/guide/matrix-groups-and-the-fluid.md: the damping and forcing on MPI ranks.

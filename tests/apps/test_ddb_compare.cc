@@ -203,7 +203,9 @@ TEST(DdbCompare, PlanarKirchhoffWritesItsStateAndCasimirAndMatchesTheLibrary) {
     if (method == "rk4") continue;
     for (size_t k = 0; k < rows.size(); ++k) {
       EXPECT_NEAR(rows[k][5], 1.04, 1e-14) << method << " row " << k;
-      if (k > 0) EXPECT_LE(rows[k][4], rows[k - 1][4]) << method << " row " << k;
+      if (k > 0) {
+        EXPECT_LE(rows[k][4], rows[k - 1][4]) << method << " row " << k;
+      }
     }
   }
   Json summary = readJson(out / "summary.json");
