@@ -12,6 +12,7 @@
 #include <ddb/systems/hoppe_yau_laplacian.h>
 
 #include <Eigen/Core>
+#include <complex>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
@@ -22,7 +23,11 @@ class DistributedPoissonSolver {
  public:
   /// The solver of Δ_N − κ² (κ² = 0: the Laplacian; HoppeYauLaplacian) on `layout`.
   explicit DistributedPoissonSolver(const BlockCyclicLayout& layout, double kappa_squared = 0.0)
-      : n_(layout.size()), grid_(&layout.grid()), block_(layout.block()), redistribution_(layout) {
+      : n_(layout.size()),
+        grid_(&layout.grid()),
+        block_(layout.block()),
+        kappa_squared_(kappa_squared),
+        redistribution_(layout) {
     if (n_ < 2) throwInvalid("N", std::to_string(n_), "must be >= 2");
     HoppeYauLaplacian::requireShift(kappa_squared);
     const Eigen::Index entries = redistribution_.ownedEntries();
@@ -30,7 +35,7 @@ class DistributedPoissonSolver {
     applied_.resize(entries);
     lower_.resize(entries);
     inverse_pivot_.resize(entries);
-    shifted_diagonal_.resize(entries);
+    block_diagonal_.resize(entries);
     off_.resize(entries);
     const auto& owned = redistribution_.diagonals();
     Eigen::VectorXd diagonal, off;
@@ -39,7 +44,7 @@ class DistributedPoissonSolver {
                                           inverse_pivot = ownedSegment(inverse_pivot_, d);
       HoppeYauLaplacian::factorDiagonal(n_, owned[d], kappa_squared, lower, inverse_pivot);
       HoppeYauLaplacian::blockCoefficients(n_, owned[d], diagonal, off);
-      ownedSegment(shifted_diagonal_, d) = diagonal.array() - kappa_squared;
+      ownedSegment(block_diagonal_, d) = diagonal;
       ownedSegment(off_, d) = off;
     }
   }
@@ -58,8 +63,8 @@ class DistributedPoissonSolver {
     redistribution_.toBlockCyclic(diagonals_, out.local());
   }
 
-  /// out = (Δ − κ²) P, each owned diagonal by its tridiagonal block in HoppeYauLaplacian::apply's
-  /// order of operations (so the dense apply's bits); collective. out is not P.
+  /// out = (Δ − κ²) P, each owned diagonal by its block (HoppeYauLaplacian::applyBlock, so the
+  /// dense apply's bits); collective. out is not P.
   void apply(const DistributedMatrix& P, DistributedMatrix& out) {
     requireLayout(P, out);
     redistribution_.toDiagonals(P.local(), diagonals_);
@@ -67,15 +72,10 @@ class DistributedPoissonSolver {
     for (std::size_t d = 0; d < owned.size(); ++d) {
       const auto in = ownedSegment(diagonals_, d);
       auto result = ownedSegment(applied_, d);
-      const auto diagonal = ownedSegment(shifted_diagonal_, d);
-      const auto off = ownedSegment(off_, d);
-      const Eigen::Index length = in.size();
-      for (Eigen::Index k = 0; k < length; ++k) {
-        auto value = diagonal(k) * in(k);
-        if (k > 0) value += off(k) * in(k - 1);
-        if (k + 1 < length) value += off(k + 1) * in(k + 1);
-        result(k) = value;
-      }
+      HoppeYauLaplacian::applyBlock(
+          ownedSegment(block_diagonal_, d), ownedSegment(off_, d), kappa_squared_,
+          [&](Eigen::Index k) { return in(k); },
+          [&](Eigen::Index k, const std::complex<double>& value) { result(k) = value; });
     }
     redistribution_.toBlockCyclic(applied_, out.local());
   }
@@ -108,10 +108,11 @@ class DistributedPoissonSolver {
   int n_;
   const ProcessGrid* grid_;
   int block_;
+  double kappa_squared_;
   DiagonalRedistribution redistribution_;
   Eigen::VectorXcd diagonals_, applied_;
-  Eigen::VectorXd lower_, inverse_pivot_;   // the factors of the owned diagonals, packed
-  Eigen::VectorXd shifted_diagonal_, off_;  // their blocks of Δ − κ² (apply), packed
+  Eigen::VectorXd lower_, inverse_pivot_;  // the factors of the owned diagonals, packed
+  Eigen::VectorXd block_diagonal_, off_;   // their blocks of Δ (apply), packed
 };
 
 }  // namespace ddb

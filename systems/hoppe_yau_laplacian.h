@@ -144,13 +144,25 @@ class HoppeYauLaplacian {
     out.resize(n_, n_);
     for (Eigen::Index m = -(n_ - 1); m < n_; ++m) {
       const Block& b = block(m);
-      const Eigen::Index length = n_ - std::abs(m);
-      for (Eigen::Index k = 0; k < length; ++k) {
-        auto value = (b.diagonal(k) - kappa_squared_) * at(P, m, k);
-        if (k > 0) value += b.off(k) * at(P, m, k - 1);
-        if (k + 1 < length) value += b.off(k + 1) * at(P, m, k + 1);
-        at(out, m, k) = value;
-      }
+      applyBlock(
+          b.diagonal, b.off, kappa_squared_, [&](Eigen::Index k) { return at(P, m, k); },
+          [&](Eigen::Index k, const auto& value) { at(out, m, k) = value; });
+    }
+  }
+
+  /// One diagonal's block of Δ − κ² (blockCoefficients' diagonal and off) applied to the entries
+  /// in(k), k < diagonal.size(), into out(k, value): value = (d_k − κ²) in(k) + off(k) in(k − 1)
+  /// + off(k + 1) in(k + 1), in that order (apply's, and the distributed apply's,
+  /// DistributedPoissonSolver: the same bits).
+  template <class Diagonal, class Off, class In, class Out>
+  static void applyBlock(const Diagonal& diagonal, const Off& off, double kappa_squared,
+                         const In& in, const Out& out) {
+    const Eigen::Index length = diagonal.size();
+    for (Eigen::Index k = 0; k < length; ++k) {
+      auto value = (diagonal(k) - kappa_squared) * in(k);
+      if (k > 0) value += off(k) * in(k - 1);
+      if (k + 1 < length) value += off(k + 1) * in(k + 1);
+      out(k, value);
     }
   }
 
