@@ -24,6 +24,7 @@
 #include <ddb/core/matrix_backend.h>
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 
 namespace ddb {
@@ -179,17 +180,18 @@ struct MatrixBackend<DualMatrix<X>, void> {
 
   /// out(s) = x₀(i) + x₁(i), i = indices(s): a linear sketch of both parts at once (the
   /// predictor fits its coefficients on it, correction_predictor.h), which is x₁'s entries
-  /// exactly where x₀ is zero.
+  /// exactly where x₀ is zero. x₁'s entries are sampled by chunks into a buffer on the stack: one
+  /// call of the part's sampleEntries (on MPI ranks, one reduction) per kChunk entries.
   template <class Indices, class Out>
   static void sampleEntries(const D& x, const Indices& indices, Out& out) {
+    constexpr Eigen::Index kChunk = 64;
     Part::sampleEntries(x.real, indices, out);
-    for (Eigen::Index s = 0; s < indices.size(); ++s) {
-      // One entry at a time through the part's backend: the sample is small (≤ a few
-      // thousand entries) and this is once per step.
-      Eigen::Matrix<Eigen::Index, 1, 1> one(indices(s));
-      Eigen::Matrix<Scalar, 1, 1> value;
-      Part::sampleEntries(x.eps, one, value);
-      out(s) = out(s) + value(0);
+    Eigen::Matrix<Scalar, kChunk, 1> buffer;
+    for (Eigen::Index first = 0; first < indices.size(); first += kChunk) {
+      const Eigen::Index count = std::min(kChunk, indices.size() - first);
+      auto values = buffer.head(count);
+      Part::sampleEntries(x.eps, indices.segment(first, count), values);
+      for (Eigen::Index k = 0; k < count; ++k) out(first + k) = out(first + k) + values(k);
     }
   }
 
