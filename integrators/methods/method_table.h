@@ -390,8 +390,10 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(std::string_view name,
 // another backend) instantiates makeMethod where it calls it.
 struct SO2;
 template <class G>
+struct DefiningRepresentation;
+template <class G, class Representation>
 struct SemidirectProduct;
-using SE2 = SemidirectProduct<SO2>;
+using SE2 = SemidirectProduct<SO2, DefiningRepresentation<SO2>>;
 struct SO3;
 struct SE3;
 struct SON;

@@ -272,6 +272,26 @@ static_assert(
 static_assert(std::is_same_v<ddb::SE2, ddb::SemidirectProduct<ddb::SO2>>);
 static_assert(ddb::SemidirectProductTraits<ddb::SO2>::kNumCasimirs == 1);
 [[maybe_unused]] constexpr const char* kSE2Name = ddb::SemidirectProductTraits<ddb::SO2>::kName;
+// A semidirect product by another action than G's own matrices (groups/representation.h): the
+// ready-made representations, and SemidirectProduct's second parameter, which defaults to G's own.
+static_assert(std::is_same_v<
+              ddb::SE2, ddb::SemidirectProduct<ddb::SO2, ddb::DefiningRepresentation<ddb::SO2>>>);
+static_assert(ddb::AdjointRepresentation<SO3>::kDim == 3 &&
+              ddb::CoadjointRepresentation<SO3>::kDim == 3 &&
+              ddb::DefiningRepresentation<ddb::SpecialOrthogonal<4>>::kDim == 4);
+static_assert(ddb::SemidirectProduct<SO3>::kOwnMatrices &&
+              ddb::SemidirectProduct<SO3>::kCayleyOfBlocks);
+template <class Representation>
+using ActingOnByRepresentation = ddb::SemidirectProduct<SO3, Representation>;
+static_assert(std::is_same_v<ActingOnByRepresentation<ddb::DefiningRepresentation<SO3>>,
+                             ddb::SemidirectProduct<SO3>>);
+[[maybe_unused]] void representations() {
+  const Eigen::Matrix3d R = SO3::exp(Eigen::Vector3d(0.1, 0.2, 0.3));
+  use(ddb::AdjointRepresentation<SO3>::ofGroup<double>(R),
+      ddb::CoadjointRepresentation<SO3>::ofAlgebra<double>(Eigen::Vector3d(0.1, 0.2, 0.3)),
+      ddb::DefiningRepresentation<SO3>::ofGroup<double>(R),
+      ddb::SemidirectProduct<SO3>::element<double>(R, Eigen::Vector3d(1, 2, 3)));
+}
 [[maybe_unused]] void groupsMadeOfGroups() {
   const Eigen::Matrix<double, 1, 1> w(0.3);
   const Eigen::Vector2d v(1.0, 2.0);

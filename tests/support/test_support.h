@@ -23,7 +23,10 @@
 #include <numeric>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
+
+#include "symmetric_matrices_representation.h"
 
 namespace ddb::test {
 
@@ -55,13 +58,16 @@ struct GroupAt {
 // functions (groups/semidirect_product.h); DirectProduct<SO2, SO3, SE2> is the product of SO2
 // and DirectProduct<SO3, SE2>, which pairs a group with a product (groups/direct_product.h);
 // SpecialOrthogonal<4> and SpecialEuclidean<4> are SO(4) and SE(4) of a fixed size, through
-// LieGroupBase's deduced functions (groups/special_orthogonal.h). ----
+// LieGroupBase's deduced functions (groups/special_orthogonal.h). SemidirectProduct<SO3,
+// SymmetricMatrices> is SO(3) acting on symmetric 3×3 matrices, a representation of the user's
+// own (symmetric_matrices_representation.h). ----
 template <template <class> class R>
 using GroupsWith =
     ::testing::Types<GroupAt<SO2, R>, GroupAt<SO3, R>, GroupAt<SE2, R>, GroupAt<SE3, R>,
-                     GroupAt<SemidirectProduct<SO3>, R>, GroupAt<DirectProduct<SO2, SO3, SE2>, R>,
-                     GroupAt<SpecialOrthogonal<4>, R>, GroupAt<SpecialEuclidean<4>, R>,
-                     GroupAt<SON, R>, GroupAt<SUN, R>>;
+                     GroupAt<SemidirectProduct<SO3>, R>,
+                     GroupAt<SemidirectProduct<SO3, SymmetricMatrices>, R>,
+                     GroupAt<DirectProduct<SO2, SO3, SE2>, R>, GroupAt<SpecialOrthogonal<4>, R>,
+                     GroupAt<SpecialEuclidean<4>, R>, GroupAt<SON, R>, GroupAt<SUN, R>>;
 struct AllGroups {
   using Groups = GroupsWith<Cayley>;
   template <template <class> class R>
@@ -198,6 +204,15 @@ class Samples {
   Sampler& s_;
   int n_ = 0;
 };
+
+/// Whether G's Cayley map is the matrix Cayley map of its hat (LieGroupBase::cay, which the
+/// closed forms are checked against): every group but a semidirect product by a representation
+/// other than G's own matrices (SemidirectProduct::kCayleyOfBlocks).
+template <class G, class = void>
+struct CayleyOfBlocks : std::true_type {};
+template <class G>
+struct CayleyOfBlocks<G, std::void_t<decltype(G::kCayleyOfBlocks)>>
+    : std::bool_constant<G::kCayleyOfBlocks> {};
 
 /// Tolerance for identities on O(1) data; matrix groups scale it by Samples::scale.
 inline constexpr double kTight = 1e-13;

@@ -33,7 +33,11 @@ TYPED_TEST(GroupTest, ExpMatchesEigenMatrixExponential) {
   this->samples.forEachSize([&] {
     using G = typename TestFixture::G;
     for (const auto& x : this->points()) {
-      const typename TestFixture::M expected = G::hat(x).exp();
+      // Eigen's exponential of the dynamic-size matrix: one instantiation of its Padé
+      // approximants for every group, not one per fixed size (docs/results/compile-costs.md).
+      using Scalar = typename TestFixture::M::Scalar;
+      const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> hat = G::hat(x);
+      const typename TestFixture::M expected = hat.exp();
       EXPECT_LT((G::exp(x) - expected).norm(), this->tol(x)) << "x = " << x.transpose();
     }
   });
@@ -150,11 +154,15 @@ TYPED_TEST(GroupTest, ClosedFormsAgreeWithGenericBase) {
       EXPECT_LT((G::Ad(g, y) - Base::Ad(g, y)).norm(), tol);
       EXPECT_LT((G::AdDual(g, mu) - Base::AdDual(g, mu)).norm(), tol);
       EXPECT_LT((G::inverse(g) - g.inverse()).norm(), tol);
-      EXPECT_LT((G::cay(x) - Base::cay(x)).norm(), tol);
-      EXPECT_LT((G::dcay(x, y) - Base::dcay(x, y)).norm(), tol);
-      EXPECT_LT((G::dcayInv(x, y) - Base::dcayInv(x, y)).norm(), tol);
-      EXPECT_LT((G::dcayInvDual(x, mu) - Base::dcayInvDual(x, mu)).norm(), tol);
-      EXPECT_LT((G::cayTransport(x, y, mu) - Base::cayTransport(x, y, mu)).norm(), tol);
+      // Where G's Cayley map is not the block one, the retraction suite checks it by its
+      // defining identities (test_retractions.cc).
+      if constexpr (CayleyOfBlocks<G>::value) {
+        EXPECT_LT((G::cay(x) - Base::cay(x)).norm(), tol);
+        EXPECT_LT((G::dcay(x, y) - Base::dcay(x, y)).norm(), tol);
+        EXPECT_LT((G::dcayInv(x, y) - Base::dcayInv(x, y)).norm(), tol);
+        EXPECT_LT((G::dcayInvDual(x, mu) - Base::dcayInvDual(x, mu)).norm(), tol);
+        EXPECT_LT((G::cayTransport(x, y, mu) - Base::cayTransport(x, y, mu)).norm(), tol);
+      }
       if (x.norm() < 3.0) {  // the series converge for |x| < 2π; near π they need ~100 terms
         EXPECT_LT((G::dexp(x, y) - Base::dexp(x, y)).norm(), 1e-12);
         EXPECT_LT((G::dexpInv(x, y) - Base::dexpInv(x, y)).norm(), 1e-12);

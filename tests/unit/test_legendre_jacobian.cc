@@ -38,7 +38,9 @@ using FixedRetractions = ::testing::Types<
     Cayley<SE2>, Exponential<SE2>, TruncatedExponential<SE2>, Cayley<SE3>, Exponential<SE3>,
     TruncatedExponential<SE3>, Cayley<SemidirectProduct<SO3>>, Exponential<SemidirectProduct<SO3>>,
     Cayley<DirectProduct<SO3, SE2>>, Exponential<DirectProduct<SO3, SE2>>,
-    Cayley<SpecialEuclidean<4>>, Exponential<SpecialEuclidean<4>>>;
+    Cayley<SpecialEuclidean<4>>, Exponential<SpecialEuclidean<4>>,
+    Cayley<SemidirectProduct<SO3, SymmetricMatrices>>,
+    Exponential<SemidirectProduct<SO3, SymmetricMatrices>>>;
 TYPED_TEST_SUITE(RetractionJacobianTest, FixedRetractions);
 
 TYPED_TEST(RetractionJacobianTest, MatchesCentralDifferences) {
