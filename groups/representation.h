@@ -9,6 +9,8 @@
 // (the action of SU(N) ⋉ su(N)*, which the magnetic fluid has in groups/dual_number_sun.h).
 #pragma once
 
+#include <ddb/core/detail/linear_map_matrix.h>
+
 #include <Eigen/Core>
 #include <type_traits>
 
@@ -41,21 +43,13 @@ struct AdjointRepresentation {
 
   template <class T>
   static Map<T> ofGroup(const typename G::template Matrix<T>& g) {
-    Map<T> m;
-    for (int j = 0; j < kDim; ++j) m.col(j) = G::Ad(g, unit<T>(j));
-    return m;
+    using A = typename G::template Algebra<T>;
+    return linearMapMatrix<kDim, T>([&](const A& y) -> A { return G::Ad(g, y); });
   }
   template <class T>
   static Map<T> ofAlgebra(const typename G::template Algebra<T>& w) {
-    Map<T> m;
-    for (int j = 0; j < kDim; ++j) m.col(j) = G::bracket(w, unit<T>(j));
-    return m;
-  }
-
- private:
-  template <class T>
-  static typename G::template Algebra<T> unit(int j) {
-    return G::template Algebra<T>::Unit(j);
+    using A = typename G::template Algebra<T>;
+    return linearMapMatrix<kDim, T>([&](const A& y) -> A { return G::bracket(w, y); });
   }
 };
 
@@ -73,22 +67,14 @@ struct CoadjointRepresentation {
 
   template <class T>
   static Map<T> ofGroup(const typename G::template Matrix<T>& g) {
+    using D = typename G::template Dual<T>;
     const typename G::template Matrix<T> g_inverse = G::inverse(g);
-    Map<T> m;
-    for (int j = 0; j < kDim; ++j) m.col(j) = G::AdDual(g_inverse, unit<T>(j));
-    return m;
+    return linearMapMatrix<kDim, T>([&](const D& mu) -> D { return G::AdDual(g_inverse, mu); });
   }
   template <class T>
   static Map<T> ofAlgebra(const typename G::template Algebra<T>& w) {
-    Map<T> m;
-    for (int j = 0; j < kDim; ++j) m.col(j) = -G::adDual(w, unit<T>(j));
-    return m;
-  }
-
- private:
-  template <class T>
-  static typename G::template Dual<T> unit(int j) {
-    return G::template Dual<T>::Unit(j);
+    using D = typename G::template Dual<T>;
+    return linearMapMatrix<kDim, T>([&](const D& mu) -> D { return -G::adDual(w, mu); });
   }
 };
 

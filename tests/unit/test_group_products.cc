@@ -144,6 +144,32 @@ TEST(PlanarKirchhoff, AnalyticDerivativesMatchAutodiff) {
   }
 }
 
+/// A relaxation watched step by step: the largest rise of the energy from one state to the next,
+/// the largest relative drift of any Casimir from μ₀'s, and the last state.
+template <class V>
+struct Watched {
+  double rise = 0.0, casimir_drift = 0.0;
+  V last;
+};
+template <class G>
+Watched<typename G::template Dual<double>> watchRelaxation(
+    OneStepMethod<G>& method, const LiePoissonSystem<G>& system,
+    const typename G::template Dual<double>& mu0, double h, long steps) {
+  using V = typename G::template Dual<double>;
+  const Eigen::VectorXd c0 = system.casimirs(mu0);
+  Watched<V> watched{0.0, 0.0, mu0};
+  double previous = system.energy(mu0);
+  integrate(method, mu0, 0.0, h, steps, [&](long, double, const V& mu) {
+    const double e = system.energy(mu);
+    watched.rise = std::max(watched.rise, e - previous);
+    previous = e;
+    watched.casimir_drift = std::max(
+        watched.casimir_drift, (system.casimirs(mu) - c0).cwiseQuotient(c0).cwiseAbs().maxCoeff());
+    watched.last = mu;
+  });
+  return watched;
+}
+
 TEST(PlanarKirchhoff, DdbRelaxesToTheEnergyMinimumOnItsOrbit) {
   // On |P| = c the energy ½π²/I + ½(P₁²/m₁ + P₂²/m₂) is least at π = 0, P along the axis of
   // the larger added mass: c²/(2 max m).
@@ -152,15 +178,7 @@ TEST(PlanarKirchhoff, DdbRelaxesToTheEnergyMinimumOnItsOrbit) {
   const double minimum = c2 / (2 * kMass.maxCoeff());
   for (const std::string name : {"ddb-cay", "ddb-exp-exact", "sddb-cay"}) {
     auto method = makeMethod<SE2>(name, body);
-    double previous = body->energy(kMu0), rise = 0.0, casimir_drift = 0.0;
-    Eigen::Vector3d last = kMu0;
-    integrate(*method, kMu0, 0.0, 0.05, 8000, [&](long, double, const Eigen::Vector3d& mu) {
-      const double e = body->energy(mu);
-      rise = std::max(rise, e - previous);
-      previous = e;
-      casimir_drift = std::max(casimir_drift, std::abs(body->casimirs(mu)(0) - c2) / c2);
-      last = mu;
-    });
+    const auto [rise, casimir_drift, last] = watchRelaxation<SE2>(*method, *body, kMu0, 0.05, 8000);
     EXPECT_LE(rise, 1e-15) << name;
     EXPECT_LE(casimir_drift, 1e-14) << name;
     EXPECT_NEAR(body->energy(last), minimum, 1e-12) << name;
@@ -438,16 +456,7 @@ TEST(SpecialEuclidean, HeavyTopRelaxesToTheEnergyMinimumOnItsOrbit) {
   const double minimum = s2 / (2 * inertia.maxCoeff()) - kMgl * r * kChi.norm();
   for (const std::string name : {"ddb-cay", "ddb-exp-exact", "sddb-cay"}) {
     auto method = makeMethod<SE4>(name, top);
-    double previous = top->energy(mu0), rise = 0.0, casimir_drift = 0.0;
-    Vector10 last = mu0;
-    integrate(*method, mu0, 0.0, 0.05, 32000, [&](long, double, const Vector10& mu) {
-      const double e = top->energy(mu);
-      rise = std::max(rise, e - previous);
-      previous = e;
-      const Eigen::VectorXd c = top->casimirs(mu);
-      casimir_drift = std::max(casimir_drift, (c - c0).cwiseQuotient(c0).cwiseAbs().maxCoeff());
-      last = mu;
-    });
+    const auto [rise, casimir_drift, last] = watchRelaxation<SE4>(*method, *top, mu0, 0.05, 32000);
     EXPECT_LE(rise, 1e-15) << name;
     // c₁ is of degree 6 in μ: one rounding of the state per step moves it by at most about 6 ulp,
     // and over 32000 steps such roundings may add up.
@@ -611,22 +620,13 @@ TEST(SemidirectProduct, UserRepresentationRelaxesToTheEnergyMinimumOnItsOrbit) {
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> orientation(
       SymmetricMatrices::matrixOf<double>(Eigen::Matrix<double, 6, 1>(mu0.tail<6>())));
   const double minimum = kField * field.eigenvalues().dot(orientation.eigenvalues().reverse());
-  const Eigen::VectorXd c0 = body->casimirs(mu0);
   int ran = 0;
   for (const MethodInfo& info : kMethods) {
     if (!methodApplies(info, *body) || !info.keeps_casimirs) continue;
     ++ran;
     auto method = makeMethod<SO3xSym>(info, body);
-    double previous = body->energy(mu0), rise = 0.0, casimir_drift = 0.0;
-    Vector9 last = mu0;
-    integrate(*method, mu0, 0.0, 0.1, 6000, [&](long, double, const Vector9& mu) {
-      const double e = body->energy(mu);
-      rise = std::max(rise, e - previous);
-      previous = e;
-      casimir_drift = std::max(casimir_drift,
-                               (body->casimirs(mu) - c0).cwiseQuotient(c0).cwiseAbs().maxCoeff());
-      last = mu;
-    });
+    const auto [rise, casimir_drift, last] =
+        watchRelaxation<SO3xSym>(*method, *body, mu0, 0.1, 6000);
     EXPECT_LE(rise, 1e-15) << info.name;
     // tr Γ³ is of degree 3 in γ: a rounding of the state per step moves it by a few ulp.
     EXPECT_LE(casimir_drift, 3 * 6000 * kEpsilon) << info.name;
