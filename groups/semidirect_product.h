@@ -280,9 +280,10 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G, Representation>> {
   template <class M>
   static auto cayInverse(const M& g) {
     using T = typename M::Scalar;
-    const FactorMatrix<T> rotation = factorOf(Matrix<T>(g));
+    const Matrix<T> element_matrix = g;  // g may be an expression
+    const FactorMatrix<T> rotation = factorOf(element_matrix);
     const FactorAlgebra<T> w = G::cayInverse(rotation);
-    const Vector<T> r = translationOf(Matrix<T>(g));
+    const Vector<T> r = translationOf(element_matrix);
     if constexpr (kOwnMatrices) {
       return join(w, Vector<T>(r - G::hat(w) * r * T(0.5)));
     } else {
