@@ -1,6 +1,6 @@
 // LegendreHamiltonian: the Hamiltonian of a regular Lagrangian, so that a user who
 // writes only l(ξ) gets a complete LiePoissonSystem (paper, Section 2.2):
-//   ξ(μ) solves ∂l/∂ξ(ξ) = μ (inverse Legendre transform, Ceres TinySolver),
+//   ξ(μ) solves ∂l/∂ξ(ξ) = μ (inverse Legendre transform, core/detail/tiny_solver.h),
 //   H(μ) = <μ, ξ(μ)> − l(ξ(μ)),  ∂H/∂μ = ξ(μ),  D²H(μ)[ν] = (D²l(ξ))^{-1} ν.
 // For fixed-size algebras. The last ξ is kept as the next solve's start (a cache:
 // one instance must not be shared between threads).

@@ -15,7 +15,7 @@
 
 namespace ddb {
 
-/// The Legendre solver a retraction's group gets, chosen by its traits: TinySolver with
+/// The Legendre solver a retraction's group gets, chosen by its traits: Levenberg–Marquardt with
 /// Jet Jacobians for small fixed-size groups, matrix-free iterations for matrix groups.
 template <class R>
 using LegendreSolverFor = std::conditional_t<isDynamicGroup<typename R::Group>,

@@ -1,7 +1,7 @@
 // Runge–Kutta methods on the continuous vector field μ̇ = ad*_{ξ+φ(ξ)} μ, driven by
 // a ButcherTableau: explicit tableaus step directly, implicit ones solve the stage
-// equations K_i = f(μ + h Σ_j a_ij K_j) with Ceres TinySolver (S·n unknowns).
-// Neither keeps the coadjoint orbit: they are the paper's general-purpose peers.
+// equations K_i = f(μ + h Σ_j a_ij K_j) by Levenberg–Marquardt (core/detail/tiny_solver.h, S·n
+// unknowns). Neither keeps the coadjoint orbit: they are the paper's general-purpose peers.
 #pragma once
 
 #include <ddb/core/detail/tiny_solver.h>

@@ -8,14 +8,14 @@
 //     the same h (quadratically once there are three), then fixed-point sweeps
 //     p ← p − r(p), one residual evaluation each. Their rate ‖I − ∂r/∂p‖ is O(h) (0.02–0.03
 //     on Scenario A at h = 0.1): while it is at most kFastContraction they go on to the
-//     tolerance, cheaper than the one TinySolver iteration that would replace the last few
+//     tolerance, cheaper than the one Newton iteration that would replace the last few
 //     (docs/design/architecture.md); slower, they stop within √tolerance, from where one Newton
 //     step squares the residual to the tolerance;
-//   corrector, when the sweeps have not converged: ceres::TinySolver on LegendreEquation's
-//     analytic Jacobian, to the relative tolerance: first with the Jacobian of the predicted
-//     guess kept (runChordIterations: one Jacobian per solve), then, if that has not
-//     converged within kChordIterations, with a fresh Jacobian per iterate; the typed
-//     SolveFailure when the tolerance is not reached.
+//   corrector, when the sweeps have not converged: Levenberg–Marquardt (TinyLevenbergMarquardt)
+//     on LegendreEquation's analytic Jacobian, to the relative tolerance: first with the
+//     Jacobian of the predicted guess kept (runChordIterations: one Jacobian per solve),
+//     then, if that has not converged within kChordIterations, with a fresh Jacobian per
+//     iterate; the typed SolveFailure when the tolerance is not reached.
 #pragma once
 
 #include <ddb/core/binary_record.h>

@@ -36,7 +36,7 @@ struct FixedMomentum {
   }
 };
 
-/// r(u) and ∂r/∂u; a ceres::TinySolver function (NUM_RESIDUALS = NUM_PARAMETERS = kDim).
+/// r(u) and ∂r/∂u; a TinyLevenbergMarquardt function (NUM_RESIDUALS = NUM_PARAMETERS = kDim).
 template <class R, class Target>
 struct LegendreEquation {
   using G = typename R::Group;
@@ -87,7 +87,7 @@ struct LegendreEquation {
     return retraction.dTauInverseDual(AlgebraT<double>(h * xi), p) - target(xi, p);
   }
 
-  /// TinySolver's interface: r(u) and, if `jacobian` is not null, ∂r/∂u (column-major).
+  /// TinyLevenbergMarquardt's interface: r(u) and, if `jacobian` is not null, ∂r/∂u (column-major).
   bool operator()(const double* u, double* r, double* jacobian) const {
     AlgebraT<double> xi;
     DualT<double> p;

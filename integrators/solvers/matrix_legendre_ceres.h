@@ -5,8 +5,8 @@
 // in real coordinates of u(N) (so(N)), the imaginary diagonal and the upper triangle, the
 // Jacobian assembled column by column from the solver's exact Jacobian–vector products.
 // For small N only (at most kMaxCeresUnknowns). Kept apart so that the methods' headers do
-// not include <ceres/ceres.h>; the small groups' Legendre solver uses Ceres's TinySolver
-// (legendre.h).
+// not include <ceres/ceres.h>: the one header of the library that needs Ceres's library, which
+// ddb does not link; a program that includes it links Ceres::ceres itself.
 #pragma once
 
 #include <ceres/ceres.h>

@@ -1,8 +1,8 @@
 // The small Legendre solver's two paths (integrators/solvers/legendre.h,
 // docs/reference/conventions.md §4): fixed-point sweeps to the tolerance while they contract fast,
-// TinySolver's Newton when they do not. Each path is checked against the paper's closed form of
-// (dcay⁻¹_x)* on SO(3), written out here, and the two against each other on the states of real
-// trajectories.
+// Levenberg–Marquardt's Newton when they do not. Each path is checked against the paper's closed
+// form of (dcay⁻¹_x)* on SO(3), written out here, and the two against each other on the states of
+// real trajectories.
 #include <ddb/core/legendre_hamiltonian.h>
 #include <ddb/integrators/methods/ddb.h>
 #include <ddb/systems/paper_scenarios.h>

@@ -69,7 +69,7 @@ TEST(Lobatto3cOnMatrixGroups, FittedOrderFourOnTheFluidN8) {
 
 // At N = 3 the Manakov body is the rigid body with 𝕀 = (J₂+J₃, J₁+J₃, J₁+J₂) under
 // so(3) ≅ R³ (docs/reference/conventions.md §2): the same vector field, so the fixed-size Lobatto
-// IIIC (TinySolver on 9 unknowns) and the matrix-free one give the same steps.
+// IIIC (Levenberg–Marquardt on 9 unknowns) and the matrix-free one give the same steps.
 TEST(Lobatto3cOnMatrixGroups, AtN3ReproducesTheFixedSizeLobattoOnTheRigidBody) {
   const Eigen::Vector3d J(0.2, 0.45, 0.7);
   const Eigen::Vector3d inertia(J(1) + J(2), J(0) + J(2), J(0) + J(1));

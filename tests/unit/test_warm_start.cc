@@ -67,7 +67,7 @@ TEST(WarmStart, EveryMethodResumesToTheBitOnTheRigidBody) {
   const RigidBodyScenario& s = rigidBodyScenario("A");
   int warm = 0;
   checkEveryMethod<SO3>(s.system(), s.mu0(), 0.1, warm);
-  // The DDB family's TinySolver sweeps start from extrapolated corrections; the reference
+  // The DDB family's Legendre sweeps start from extrapolated corrections; the reference
   // from its last sub-step: at least these have a warm start that changes the rounding.
   EXPECT_GE(warm, 3);
 }
