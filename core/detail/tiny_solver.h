@@ -220,6 +220,10 @@ class TinyLevenbergMarquardt {
   Square jacobian_, jtj_, regularized_;
 };
 
+/// The cost ½‖r‖² under which a solve aiming at ‖r‖ <= target stops: ‖r‖ < target/4, a margin
+/// below the tolerance that the callers then check on ‖r‖ itself.
+inline double stoppingCost(double target) { return 0.5 * (0.25 * target) * (0.25 * target); }
+
 /// Runs Levenberg–Marquardt on r(x) = 0 in place from the initial guess x, at most
 /// `max_iterations` iterations, until ‖r‖ < target/4, and reports (no throw). `Function` as
 /// TinyLevenbergMarquardt's.
@@ -228,7 +232,7 @@ TinySolveStats runTinySolver(const Function& function, Eigen::Matrix<double, N, 
                              double target, int max_iterations) {
   typename TinyLevenbergMarquardt<Function, N>::Options options;
   options.max_iterations = max_iterations;
-  options.cost_threshold = 0.5 * (0.25 * target) * (0.25 * target);
+  options.cost_threshold = stoppingCost(target);
   TinyLevenbergMarquardt<Function, N> solver;
   const auto summary = solver.solve(function, x, options);
   // final_cost = ½‖r(x)‖² at the returned x: every accepted step re-evaluates it there,
@@ -310,7 +314,7 @@ TinySolveStats runChordIterations(const Function& function, Eigen::Matrix<double
   typename Solver::Options options;
   options.max_iterations = 2;  // iterations 1 .. max − 1: one step
   options.single_step = true;
-  options.cost_threshold = 0.5 * (0.25 * target) * (0.25 * target);
+  options.cost_threshold = stoppingCost(target);
   Solver solver;
   TinySolveStats stats;
   for (;;) {
