@@ -243,6 +243,28 @@ struct SemidirectProductTraits<SO3> {
                                                    const Eigen::Matrix<T, 3, 1>& r) {
     return SO3::dexpInv(w, r);
   }
+  // The action as vector operations: cay(ω)ᵀγ is SO3::cayAdDual(ω, γ), and cay(ω)v = cay(−ω)ᵀv;
+  // ω̂ᵀγ = γ × ω = ad*_ω γ; v ⋄ γ = vee(γvᵀ − vγᵀ) = v × γ.
+  template <class T>
+  static Eigen::Matrix<T, 3, 1> cayAction(const Eigen::Matrix<T, 3, 1>& w,
+                                          const Eigen::Matrix<T, 3, 1>& v) {
+    return SO3::cayAdDual<T>(Eigen::Matrix<T, 3, 1>(-w), v);
+  }
+  template <class T>
+  static Eigen::Matrix<T, 3, 1> cayActionTransposed(const Eigen::Matrix<T, 3, 1>& w,
+                                                    const Eigen::Matrix<T, 3, 1>& gamma) {
+    return SO3::cayAdDual<T>(w, gamma);
+  }
+  template <class T>
+  static Eigen::Matrix<T, 3, 1> algebraActionTransposed(const Eigen::Matrix<T, 3, 1>& w,
+                                                        const Eigen::Matrix<T, 3, 1>& gamma) {
+    return SO3::adDual<T>(w, gamma);
+  }
+  template <class T>
+  static Eigen::Matrix<T, 3, 1> diamond(const Eigen::Matrix<T, 3, 1>& v,
+                                        const Eigen::Matrix<T, 3, 1>& gamma) {
+    return v.cross(gamma);
+  }
 };
 
 }  // namespace ddb

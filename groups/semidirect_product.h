@@ -49,6 +49,14 @@ namespace ddb {
 ///   template <class T> static Vector<T> expIntegral(omega, v);
 ///   template <class T> static Vector<T> expIntegralInverse(omega, r);
 /// @endcode
+/// and, optionally, the action and the diamond as vector operations, so that the step forms no
+/// m×m matrix (SO(3)'s in groups/se3.h):
+/// @code
+///   template <class T> static Vector<T> cayAction(omega, v);                // ρ(cay_G ω) v
+///   template <class T> static Vector<T> cayActionTransposed(omega, gamma);  // ρ(cay_G ω)ᵀ γ
+///   template <class T> static Vector<T> algebraActionTransposed(omega, gamma);  // ρ'(ω)ᵀ γ
+///   template <class T> static FactorDual<T> diamond(v, gamma);              // v ⋄ γ
+/// @endcode
 template <class G, class Representation = DefiningRepresentation<G>>
 struct SemidirectProductTraits;
 
@@ -61,6 +69,19 @@ struct HasExpIntegral<
     std::void_t<decltype(Traits::expIntegral(std::declval<const W&>(), std::declval<const V&>())),
                 decltype(Traits::expIntegralInverse(
                     std::declval<const W&>(), std::declval<const V&>()))>> : std::true_type {};
+
+template <class Traits, class W, class V, class = void>
+struct HasVectorForms : std::false_type {};
+template <class Traits, class W, class V>
+struct HasVectorForms<
+    Traits, W, V,
+    std::void_t<decltype(Traits::cayAction(std::declval<const W&>(), std::declval<const V&>())),
+                decltype(Traits::cayActionTransposed(std::declval<const W&>(),
+                                                     std::declval<const V&>())),
+                decltype(Traits::algebraActionTransposed(std::declval<const W&>(),
+                                                         std::declval<const V&>())),
+                decltype(Traits::diamond(std::declval<const V&>(), std::declval<const V&>()))>>
+    : std::true_type {};
 
 template <class G, class = void>
 struct HasCayAdDual : std::false_type {};
@@ -151,6 +172,9 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G, Representation>> {
   /// ρ(g) and ρ'(ω), m×m.
   template <class T>
   using ActionMatrix = Eigen::Matrix<T, kVectorDim, kVectorDim>;
+  /// Whether the traits give the action and the diamond as vector operations (above).
+  static constexpr bool kVectorForms =
+      detail::HasVectorForms<Traits, FactorAlgebra<double>, Vector<double>>::value;
 
   template <class T>
   static Matrix<T> hat(const Algebra<T>& x) {
@@ -208,7 +232,9 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G, Representation>> {
   /// solved, the identity where G pairs by the dot product).
   template <class T>
   static FactorDual<T> diamond(const Vector<T>& v, const Vector<T>& gamma) {
-    if constexpr (kOwnMatrices) {
+    if constexpr (kVectorForms) {
+      return Traits::diamond(v, gamma);
+    } else if constexpr (kOwnMatrices) {
       return G::dualVee(FactorMatrix<T>(gamma * v.transpose()));
     } else {
       FactorDual<T> c;
@@ -223,7 +249,7 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G, Representation>> {
   static Dual<T> adDual(const Algebra<T>& x, const Dual<T>& mu) {
     const Vector<T> gamma = vector(mu);
     return join(FactorDual<T>(G::adDual(factor(x), factor(mu)) - diamond<T>(vector(x), gamma)),
-                Vector<T>(actionOfAlgebra<T>(factor(x)).transpose() * gamma));
+                algebraActionTransposed<T>(factor(x), gamma));
   }
   /// Ad*_(g,r)(π, γ) = (Ad*_g(π − r ⋄ γ), ρ(g)ᵀγ).
   template <class T>
@@ -309,7 +335,7 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G, Representation>> {
   /// dcayInv.
   template <class T>
   static Dual<T> dcayInvDual(const Algebra<T>& x, const Dual<T>& mu) {
-    const Vector<T> gamma = halfStep(x).transpose() * vector(mu);
+    const Vector<T> gamma = halfStepTransposed<T>(x, vector(mu));
     return join(FactorDual<T>(G::dcayInvDual(factor(x), factor(mu)) +
                               diamond<T>(vector(x), gamma) * T(0.5)),
                 gamma);
@@ -322,7 +348,11 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G, Representation>> {
   static Dual<T> cayAdDual(const Algebra<T>& x, const Dual<T>& mu) {
     const FactorAlgebra<T> w = factor(x);
     const Vector<T> gamma = vector(mu);
-    if constexpr (kOwnMatrices) {
+    if constexpr (kOwnMatrices && kVectorForms) {  // r = A⁻¹v = (cay(ω)v + v)/2
+      const Vector<T> r = (Traits::cayAction(w, vector(x)) + vector(x)) * T(0.5);
+      return join(factorCayAdDual<T>(w, FactorDual<T>(factor(mu) - diamond<T>(r, gamma))),
+                  Vector<T>(Traits::cayActionTransposed(w, gamma)));
+    } else if constexpr (kOwnMatrices) {
       const FactorMatrix<T> Omega = G::hat(w);
       // A⁻¹ once, for r and for the γ part.
       const FactorMatrix<T> A_inverse = halfStepInverse<T>(w);
@@ -364,12 +394,11 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G, Representation>> {
   static Eigen::Matrix<double, kDim, kDim> dcayInvDualJacobian(const Algebra<double>& x,
                                                                const Dual<double>& mu) {
     const Vector<double> v = vector(x), gamma = vector(mu);
-    const Vector<double> gamma_prime = halfStep(x).transpose() * gamma;
+    const Vector<double> gamma_prime = halfStepTransposed<double>(x, gamma);
     // The linear map η ↦ −hat_G(η)ᵀγ/2, column by column.
     Eigen::Matrix<double, kVectorDim, kFactorDim> turn;
     for (int j = 0; j < kFactorDim; ++j) {
-      turn.col(j) =
-          G::hat(FactorAlgebra<double>(FactorAlgebra<double>::Unit(j))).transpose() * gamma * -0.5;
+      turn.col(j) = algebraActionTransposed<double>(unit<double>(j), gamma) * -0.5;
     }
     Eigen::Matrix<double, kDim, kDim> J = Eigen::Matrix<double, kDim, kDim>::Zero();
     J.template topLeftCorner<kFactorDim, kFactorDim>() =
@@ -443,6 +472,15 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G, Representation>> {
   static ActionMatrix<T> actionOfAlgebra(const FactorAlgebra<T>& w) {
     return Representation::template ofAlgebra<T>(w);
   }
+  /// ρ'(ω)ᵀγ.
+  template <class T>
+  static Vector<T> algebraActionTransposed(const FactorAlgebra<T>& w, const Vector<T>& gamma) {
+    if constexpr (kVectorForms) {
+      return Traits::algebraActionTransposed(w, gamma);
+    } else {
+      return actionOfAlgebra<T>(w).transpose() * gamma;
+    }
+  }
   template <class T>
   static FactorAlgebra<T> unit(int j) {
     return FactorAlgebra<T>::Unit(j);
@@ -471,6 +509,15 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G, Representation>> {
       return G::cayAdDual(w, pi);
     } else {
       return G::AdDual(FactorMatrix<T>(G::cay(w)), pi);
+    }
+  }
+  /// Aᵀγ: γ − Ωᵀγ/2 for G's own matrices (no matrix formed where the traits give Ωᵀγ).
+  template <class T>
+  static Vector<T> halfStepTransposed(const Algebra<T>& x, const Vector<T>& gamma) {
+    if constexpr (kOwnMatrices && kVectorForms) {
+      return gamma - Traits::algebraActionTransposed(factor(x), gamma) * T(0.5);
+    } else {
+      return halfStep(x).transpose() * gamma;
     }
   }
   /// A = I − Ω/2 for G's own matrices, else 2(I + ρ(cay_G ω))⁻¹.

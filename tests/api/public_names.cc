@@ -268,7 +268,8 @@ static_assert(typesAre<ddb::SpecialEuclidean<4>, 10, Eigen::Matrix<double, 10, 1
 static_assert(
     std::is_same_v<ddb::SpecialEuclidean<4>, ddb::SemidirectProduct<ddb::SpecialOrthogonal<4>>>);
 // A group made of groups: SE2 is SemidirectProduct<SO2>; SemidirectProductTraits<G> states the
-// product's name and Casimirs, and optionally expIntegral and expIntegralInverse.
+// product's name and Casimirs, and optionally expIntegral and expIntegralInverse, and the vector
+// forms of the action and the diamond.
 static_assert(std::is_same_v<ddb::SE2, ddb::SemidirectProduct<ddb::SO2>>);
 static_assert(ddb::SemidirectProductTraits<ddb::SO2>::kNumCasimirs == 1);
 [[maybe_unused]] constexpr const char* kSE2Name = ddb::SemidirectProductTraits<ddb::SO2>::kName;
@@ -298,6 +299,12 @@ static_assert(std::is_same_v<ActingOnByRepresentation<ddb::DefiningRepresentatio
   use(ddb::SemidirectProductTraits<ddb::SO2>::expIntegral(w, v),
       ddb::SemidirectProductTraits<ddb::SO2>::expIntegralInverse(w, v),
       ddb::SemidirectProductTraits<ddb::SO2>::casimirs(w, v));
+  // The optional vector forms of the action and the diamond, SO(3)'s.
+  using SO3Traits = ddb::SemidirectProductTraits<SO3>;
+  const Eigen::Vector3d w3(0.1, 0.2, 0.3), v3(1.0, 2.0, 3.0);
+  use(SO3Traits::cayAction(w3, v3), SO3Traits::cayActionTransposed(w3, v3),
+      SO3Traits::algebraActionTransposed(w3, v3), SO3Traits::diamond(v3, v3));
+  static_assert(ddb::SemidirectProduct<SO3>::kVectorForms && !ddb::SE2::kVectorForms);
   const ddb::HeavyTopSetup top;
   const ddb::KirchhoffSetup kirchhoff;
   use(ddb::makeHeavyTopOn<ddb::SemidirectProduct<SO3>>(top.inertia, top.mgl, top.chi, top.alpha,

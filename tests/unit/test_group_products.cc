@@ -563,9 +563,12 @@ namespace group_products_tests {
 TEST(SemidirectProduct, AdjointActionOfSO3IsSE3ThroughTheGenericFormulas) {
   // The product by a representation other than G's own matrices takes the generic path (the
   // (p+m+1)-square elements, A = 2(I + ρ(cay ω))⁻¹ by a solve, the diamond through G's pairing),
-  // which for Ad on SO(3) must give the functions of SE(3) composed by G's own matrices.
+  // which for Ad on SO(3) must give the functions of SE(3) composed by G's own matrices. Those
+  // take SO(3)'s vector forms of the action and the diamond (groups/se3.h), which ByAd's traits
+  // do not give: the two sides share no formula for them.
   using ByAd = SemidirectProduct<SO3, AdjointRepresentation<SO3>>;
   static_assert(!ByAd::kOwnMatrices && ByAd::kMatrixDim == 7);
+  static_assert(SE3Composed::kVectorForms && !ByAd::kVectorForms);
   Sampler s(9);
   for (int i = 0; i < 5; ++i) {
     const Vector6 x = s.vector<Vector6>(), y = s.vector<Vector6>(), mu = s.vector<Vector6>();
