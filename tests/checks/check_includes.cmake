@@ -10,7 +10,17 @@ if(NOT IS_DIRECTORY "${SOURCE_DIR}")
   message(FATAL_ERROR "set SOURCE_DIR to the ddb source tree")
 endif()
 
-set(parts core groups systems integrators instantiations distributed cuda)
+# The backends are the folders with a backend.cmake (cmake/DdbBackend.cmake), built here or not.
+file(GLOB backend_files RELATIVE "${SOURCE_DIR}" "${SOURCE_DIR}/*/backend.cmake")
+set(backends)
+foreach(backend_file IN LISTS backend_files)
+  get_filename_component(backend "${backend_file}" DIRECTORY)
+  list(APPEND backends ${backend})
+endforeach()
+set(installed_parts core groups systems integrators ${backends})
+set(parts ${installed_parts} instantiations)
+list(JOIN parts "|" parts_pattern)
+list(JOIN installed_parts "|" installed_pattern)
 set(library_globs ddb.h)
 foreach(part IN LISTS parts)
   list(APPEND library_globs ${part}/*.h)
@@ -21,11 +31,10 @@ set(user_globs)
 foreach(folder apps bench examples python tests tools)
   list(APPEND user_globs "${SOURCE_DIR}/${folder}/*.h" "${SOURCE_DIR}/${folder}/*.cc")
 endforeach()
-# The library's and the CUDA backend's compiled sources include the headers as the other sources do.
+# The library's and the backends' compiled sources include the headers as the other sources do.
 foreach(part IN LISTS parts)
-  list(APPEND user_globs "${SOURCE_DIR}/${part}/*.cc")
+  list(APPEND user_globs "${SOURCE_DIR}/${part}/*.cc" "${SOURCE_DIR}/${part}/*.cu")
 endforeach()
-list(APPEND user_globs "${SOURCE_DIR}/cuda/*.cu")
 file(GLOB_RECURSE user_files RELATIVE "${SOURCE_DIR}" ${user_globs})
 
 set(errors "")
@@ -38,16 +47,16 @@ foreach(file IN LISTS library_files user_files)
   foreach(line IN LISTS lines)
     string(REGEX MATCH "[<\"]([^>\"]+)[>\"]" _ "${line}")
     set(path "${CMAKE_MATCH_1}")
-    if(path MATCHES "^(core|groups|systems|integrators|instantiations|distributed|cuda|include)/" OR path STREQUAL "ddb.h")
+    if(path MATCHES "^(${parts_pattern}|include)/" OR path STREQUAL "ddb.h")
       string(APPEND errors "  ${file}: ${line}  (resolves only in the tree; write <ddb/...>)\n")
     elseif(path MATCHES "^ddb/(.*)$")
       # Installed, include/ddb/ holds the four folders, ddb.h and, when they are built, the
-      # distributed layer's distributed/ (docs/design/distributed.md) and the CUDA backend's
-      # cuda/ (docs/guide/gpu.md); nothing else of the tree.
+      # backends' folders (the distributed layer's distributed/, docs/design/distributed.md, and
+      # the CUDA backend's cuda/, docs/guide/gpu.md); nothing else of the tree.
       set(rest "${CMAKE_MATCH_1}")
-      if(NOT rest MATCHES "^(core|groups|systems|integrators|distributed|cuda)/" AND NOT rest STREQUAL "ddb.h")
-        string(APPEND errors "  ${file}: ${line}  (not a library header: <ddb/core|groups|"
-                             "systems|integrators|distributed|cuda/...> or <ddb/ddb.h>)\n")
+      if(NOT rest MATCHES "^(${installed_pattern})/" AND NOT rest STREQUAL "ddb.h")
+        string(APPEND errors "  ${file}: ${line}  (not a library header: <ddb/${installed_pattern}"
+                             "/...> or <ddb/ddb.h>)\n")
       elseif(NOT EXISTS "${SOURCE_DIR}/${rest}")
         string(APPEND errors "  ${file}: ${line}  (no such header in the library)\n")
       endif()
@@ -59,7 +68,7 @@ foreach(file IN LISTS library_files user_files)
         # A relative path into a library folder ("../core/x.h") works only in the tree.
         get_filename_component(target "${folder}/${path}" ABSOLUTE)
         file(RELATIVE_PATH relative "${SOURCE_DIR}" "${target}")
-        if(relative MATCHES "^(core|groups|systems|integrators|instantiations|distributed|cuda)/" OR relative STREQUAL "ddb.h")
+        if(relative MATCHES "^(${parts_pattern})/" OR relative STREQUAL "ddb.h")
           string(APPEND errors "  ${file}: ${line}  (a relative path into the library; write "
                                "<ddb/${relative}>)\n")
         endif()
