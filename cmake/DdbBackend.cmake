@@ -59,23 +59,26 @@ function(ddb_add_backend name)
   install(DIRECTORY ${folder_path} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/ddb
           FILES_MATCHING PATTERN "*.h")
   install(EXPORT ${export_set} NAMESPACE ddb:: DESTINATION ${CMAKE_INSTALL_DATADIR}/ddb/cmake)
-  set(component_file ${CMAKE_BINARY_DIR}/ddb-${name}-component.cmake)
+  set(component_file ${PROJECT_BINARY_DIR}/ddb-${name}-component.cmake)
   configure_file(${folder_path}/component.cmake.in ${component_file} @ONLY)
   install(FILES ${component_file} DESTINATION ${CMAKE_INSTALL_DATADIR}/ddb/cmake)
 
+  set_property(GLOBAL APPEND PROPERTY DDB_BACKEND_BUILT ${name})
   if(arg_TESTS)
     set_property(GLOBAL APPEND PROPERTY DDB_BACKEND_TESTS ${arg_TESTS})
   endif()
 endfunction()
 
-# The lines of the package's config that name every declared component and what to do without
-# it: ddb_components, and ddb_without_<name> for each (cmake/ddbConfig.cmake.in).
+# The lines of the package's config that name every declared component, those built, and what to
+# do without each: ddb_components, ddb_built_components and ddb_without_<name>
+# (cmake/ddbConfig.cmake.in). The texts go in bracket arguments, taken as they are.
 function(ddb_backend_config_lines out)
   get_property(names GLOBAL PROPERTY DDB_BACKEND_NAMES)
-  set(lines "set(ddb_components ${names})\n")
+  get_property(built GLOBAL PROPERTY DDB_BACKEND_BUILT)
+  set(lines "set(ddb_components ${names})\nset(ddb_built_components ${built})\n")
   foreach(name IN LISTS names)
     get_property(without GLOBAL PROPERTY DDB_BACKEND_WITHOUT_${name})
-    string(APPEND lines "set(ddb_without_${name} \"${without}\")\n")
+    string(APPEND lines "set(ddb_without_${name} [==[${without}]==])\n")
   endforeach()
   set(${out} "${lines}" PARENT_SCOPE)
 endfunction()

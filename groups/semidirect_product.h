@@ -49,8 +49,9 @@ namespace ddb {
 ///   template <class T> static Vector<T> expIntegral(omega, v);
 ///   template <class T> static Vector<T> expIntegralInverse(omega, r);
 /// @endcode
-/// and, optionally, the action and the diamond as vector operations, so that the step forms no
-/// m×m matrix (SO(3)'s in groups/se3.h):
+/// and, optionally, the action and the diamond as vector operations (all four or none), so that
+/// ad*, the diamond and, for G's own matrices, the Cayley step and its Jacobian form no m×m matrix
+/// (SO(3)'s in groups/se3.h):
 /// @code
 ///   template <class T> static Vector<T> cayAction(omega, v);                // ρ(cay_G ω) v
 ///   template <class T> static Vector<T> cayActionTransposed(omega, gamma);  // ρ(cay_G ω)ᵀ γ

@@ -37,7 +37,7 @@ for example in custom_system hamiltonian_observer; do
   "$scratch/$example/app"
 done
 # The distributed layer's example on 2 ranks, with the environment of the MPI tests in ctest
-# (tests/CMakeLists.txt): root allowed, oversubscribed, idle ranks yield, one BLAS thread.
+# (tests/mpi/tests.cmake): root allowed, oversubscribed, idle ranks yield, one BLAS thread.
 if [[ -f "$scratch/prefix/share/ddb/cmake/ddbDistributedTargets.cmake" ]]; then
   echo "== examples/distributed against the installed package, on 2 ranks"
   cmake -S examples/distributed -B "$scratch/distributed" -DCMAKE_BUILD_TYPE=Release \

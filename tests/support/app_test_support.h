@@ -45,7 +45,7 @@ struct RunEnvironment {
   unsigned timeout_s = 0;              // kill the app (SIGALRM) after this; 0: never
 };
 
-/// The environment of the apps started under mpiexec (as tests/CMakeLists.txt's MPI tests):
+/// The environment of the apps started under mpiexec (as tests/mpi/tests.cmake's MPI tests):
 /// root allowed, more ranks than cores, idle ranks yielding, one BLAS thread per rank.
 inline const std::vector<std::string> kMpiVariables{
     "OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1",

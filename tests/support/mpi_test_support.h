@@ -15,7 +15,7 @@
 namespace ddb::test {
 
 /// The grid rows the tests ask for: the test program's --grid-rows=R
-/// (tests/support/mpi_test_main.cc; tests/CMakeLists.txt passes it for the runs on the other shape
+/// (tests/support/mpi_test_main.cc; tests/mpi/tests.cmake passes it for the runs on the other shape
 /// of P = 2 and 3 ranks), else 0, the default shape.
 inline int& gridRowsAsked() {
   static int rows = 0;
