@@ -265,6 +265,8 @@ struct SemidirectProductTraits<SO3> {
                                         const Eigen::Matrix<T, 3, 1>& gamma) {
     return v.cross(gamma);
   }
+  // ω̂'s eigenvalues are 0 and ±i|ω|.
+  static double actionRadius(const Eigen::Vector3d& w) { return w.norm(); }
 };
 
 }  // namespace ddb

@@ -84,6 +84,13 @@ struct HasVectorForms<
                 decltype(Traits::diamond(std::declval<const V&>(), std::declval<const V&>()))>>
     : std::true_type {};
 
+template <class Traits, class W, class = void>
+struct HasActionRadius : std::false_type {};
+template <class Traits, class W>
+struct HasActionRadius<Traits, W,
+                       std::void_t<decltype(Traits::actionRadius(std::declval<const W&>()))>>
+    : std::true_type {};
+
 template <class G, class = void>
 struct HasCayAdDual : std::false_type {};
 template <class G>
@@ -430,13 +437,16 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G, Representation>> {
   }
 
   /// The spectral radius of ad_(ω,v), block triangular with ad_ω and Ω = ρ'(ω) on its diagonal:
-  /// the larger of G's and Ω's. For G's own matrices Ω is skew (G acts by rotations), whose
-  /// spectral radius is ‖Ω‖_F/√2 for n ≤ 3 and at most that above; for another ρ, ‖Ω‖_F, at
-  /// least the spectral radius of any matrix (the injectivity guard then refuses early).
+  /// the larger of G's and Ω's. Ω's is the traits' `actionRadius(ω)` where they give it (SO(3)'s
+  /// |ω|); else, for G's own matrices Ω is skew (G acts by rotations), whose spectral radius is
+  /// ‖Ω‖_F/√2 for n ≤ 3 and at most that above; for another ρ, ‖Ω‖_F, at least the spectral
+  /// radius of any matrix (the injectivity guard then refuses early).
   template <class Factor = G, std::enable_if_t<detail::HasGroupAdRadius<Factor>::value, int> = 0>
   static double adRadius(const Algebra<double>& x) {
     const FactorAlgebra<double> w = factor(x);
-    if constexpr (kOwnMatrices) {
+    if constexpr (detail::HasActionRadius<Traits, FactorAlgebra<double>>::value) {
+      return std::max(G::adRadius(w), Traits::actionRadius(w));
+    } else if constexpr (kOwnMatrices) {
       return std::max(G::adRadius(w), G::hat(w).norm() / std::sqrt(2.0));
     } else {
       return std::max(G::adRadius(w), actionOfAlgebra<double>(w).norm());

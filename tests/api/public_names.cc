@@ -299,11 +299,13 @@ static_assert(std::is_same_v<ActingOnByRepresentation<ddb::DefiningRepresentatio
   use(ddb::SemidirectProductTraits<ddb::SO2>::expIntegral(w, v),
       ddb::SemidirectProductTraits<ddb::SO2>::expIntegralInverse(w, v),
       ddb::SemidirectProductTraits<ddb::SO2>::casimirs(w, v));
-  // The optional vector forms of the action and the diamond, SO(3)'s.
+  // The optional vector forms of the action and the diamond, and the action's spectral radius:
+  // SO(3)'s.
   using SO3Traits = ddb::SemidirectProductTraits<SO3>;
   const Eigen::Vector3d w3(0.1, 0.2, 0.3), v3(1.0, 2.0, 3.0);
   use(SO3Traits::cayAction(w3, v3), SO3Traits::cayActionTransposed(w3, v3),
-      SO3Traits::algebraActionTransposed(w3, v3), SO3Traits::diamond(v3, v3));
+      SO3Traits::algebraActionTransposed(w3, v3), SO3Traits::diamond(v3, v3),
+      SO3Traits::actionRadius(w3));
   static_assert(ddb::SemidirectProduct<SO3>::kVectorForms && !ddb::SE2::kVectorForms);
   const ddb::HeavyTopSetup top;
   const ddb::KirchhoffSetup kirchhoff;
