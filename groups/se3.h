@@ -266,7 +266,7 @@ struct SemidirectProductTraits<SO3> {
     return v.cross(gamma);
   }
   // ω̂'s eigenvalues are 0 and ±i|ω|.
-  static double actionRadius(const Eigen::Vector3d& w) { return w.norm(); }
+  static double algebraActionRadius(const Eigen::Vector3d& w) { return w.norm(); }
 };
 
 }  // namespace ddb

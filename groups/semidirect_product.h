@@ -58,6 +58,11 @@ namespace ddb {
 ///   template <class T> static Vector<T> algebraActionTransposed(omega, gamma);  // ρ'(ω)ᵀ γ
 ///   template <class T> static FactorDual<T> diamond(v, gamma);              // v ⋄ γ
 /// @endcode
+/// and, optionally, the spectral radius of ρ'(ω), for the injectivity guard (adRadius below; a
+/// double, as G::adRadius):
+/// @code
+///   static double algebraActionRadius(omega);  // max |λ| over the eigenvalues λ of ρ'(ω)
+/// @endcode
 template <class G, class Representation = DefiningRepresentation<G>>
 struct SemidirectProductTraits;
 
@@ -85,10 +90,10 @@ struct HasVectorForms<
     : std::true_type {};
 
 template <class Traits, class W, class = void>
-struct HasActionRadius : std::false_type {};
+struct HasAlgebraActionRadius : std::false_type {};
 template <class Traits, class W>
-struct HasActionRadius<Traits, W,
-                       std::void_t<decltype(Traits::actionRadius(std::declval<const W&>()))>>
+struct HasAlgebraActionRadius<
+    Traits, W, std::void_t<decltype(Traits::algebraActionRadius(std::declval<const W&>()))>>
     : std::true_type {};
 
 template <class G, class = void>
@@ -437,15 +442,15 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G, Representation>> {
   }
 
   /// The spectral radius of ad_(ω,v), block triangular with ad_ω and Ω = ρ'(ω) on its diagonal:
-  /// the larger of G's and Ω's. Ω's is the traits' `actionRadius(ω)` where they give it (SO(3)'s
-  /// |ω|); else, for G's own matrices Ω is skew (G acts by rotations), whose spectral radius is
-  /// ‖Ω‖_F/√2 for n ≤ 3 and at most that above; for another ρ, ‖Ω‖_F, at least the spectral
-  /// radius of any matrix (the injectivity guard then refuses early).
+  /// the larger of G's and Ω's. Ω's is the traits' `algebraActionRadius(ω)` where they give it
+  /// (SO(3)'s |ω|); else, for G's own matrices Ω is skew (G acts by rotations), whose spectral
+  /// radius is ‖Ω‖_F/√2 for n ≤ 3 and at most that above; for another ρ, ‖Ω‖_F, at least the
+  /// spectral radius of any matrix (the injectivity guard then refuses early).
   template <class Factor = G, std::enable_if_t<detail::HasGroupAdRadius<Factor>::value, int> = 0>
   static double adRadius(const Algebra<double>& x) {
     const FactorAlgebra<double> w = factor(x);
-    if constexpr (detail::HasActionRadius<Traits, FactorAlgebra<double>>::value) {
-      return std::max(G::adRadius(w), Traits::actionRadius(w));
+    if constexpr (detail::HasAlgebraActionRadius<Traits, FactorAlgebra<double>>::value) {
+      return std::max(G::adRadius(w), Traits::algebraActionRadius(w));
     } else if constexpr (kOwnMatrices) {
       return std::max(G::adRadius(w), G::hat(w).norm() / std::sqrt(2.0));
     } else {

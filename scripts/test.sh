@@ -76,8 +76,9 @@ done
 # and the matrix-free Legendre solvers, the matrix groups' OpenBLAS products) again under
 # AddressSanitizer and UndefinedBehaviorSanitizer (docs/reference/guarantees.md §4): -O1 with
 # Eigen's own assertions on (no NDEBUG), and -g1, the line tables a sanitizer's stack trace
-# names file:line from (-g's descriptions of every local and type took a third of this stage's
-# compile time: 64 s against 41 s for method_table_so3.cc). Only these two: a sanitized file
+# names file:line from, inlined frames included (GCC 12 gives the same trace as at -g), without
+# -g's descriptions of every local and type, which took a third of this stage's compile time
+# (method_table_so3.cc: 64 s against 41 s). Only these two: a sanitized file
 # takes about 3× its Release compile time, and more would take .ci/run past 30 minutes. Any
 # finding stops the run.
 echo "== tests under ASan and UBSan"

@@ -305,7 +305,7 @@ static_assert(std::is_same_v<ActingOnByRepresentation<ddb::DefiningRepresentatio
   const Eigen::Vector3d w3(0.1, 0.2, 0.3), v3(1.0, 2.0, 3.0);
   use(SO3Traits::cayAction(w3, v3), SO3Traits::cayActionTransposed(w3, v3),
       SO3Traits::algebraActionTransposed(w3, v3), SO3Traits::diamond(v3, v3),
-      SO3Traits::actionRadius(w3));
+      SO3Traits::algebraActionRadius(w3));
   static_assert(ddb::SemidirectProduct<SO3>::kVectorForms && !ddb::SE2::kVectorForms);
   const ddb::HeavyTopSetup top;
   const ddb::KirchhoffSetup kirchhoff;

@@ -264,8 +264,9 @@ void expectTheDenseRelaxationsBits(Eigen::Index n, double alpha, double h, int a
 
 // At N = 16 the step control lowers and raises h in every adaptive run, up to the last steps.
 // At N = 33 it changes h for the last time by step 28 in every run but ddb-cay's, ddb-exp's and
-// ddb-exp-exact's, which change it throughout: 40 steps there, not 100, keep those changes and
-// spare the costly rest (ddb6-exp's 100 steps took 18 s).
+// ddb-exp-exact's, which change it throughout (measured over 100 steps): 40 steps there keep
+// every change of the others and some of those three's, and spare the costly rest (ddb6-exp's
+// 100 steps took 18 s).
 TEST(OpaqueBackend, EveryMethodForAnyBackendRelaxesWithTheDenseBackendsBitsAtN16) {
   expectTheDenseRelaxationsBits(16, 0.5, 0.05, 100);
 }
