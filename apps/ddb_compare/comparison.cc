@@ -41,8 +41,28 @@ int orderAt(const std::string& name, double alpha) {
   return alpha == 0.0 ? method->order_without_dissipation : method->order;
 }
 
+/// --adaptive's checks that need the problem (docs/reference/bad-inputs.md): the step control
+/// judges steps by the energy's change, which dissipation must drive.
+template <class G>
+void requireDissipation(const Options& o, const Settings& s, const Problem<G>& problem) {
+  if (problem.alpha == 0) {
+    app::usageError("--adaptive", o.alpha, "needs --alpha != 0 (the energy must move)");
+  }
+  // relax() refuses this too, but only after the files are created.
+  SteadyStateProbe<G> probe(*problem.system);
+  probe.evaluate(problem.mu0);
+  if (probe.energyRate() == 0 && probe.residual() > s.relax.tolerance) {
+    app::usageError("--adaptive", o.metric,
+                    "needs dissipation: dH/dt = 0 at mu0 where the flow moves (--metric?)");
+  }
+}
+
+}  // namespace
+
 /// casimir_drift as docs/reference/command-lines-and-files.md defines it, over every state shown to
-/// observe(): on fixed-size groups Casimir by Casimir (CasimirDrift, runMethod's own).
+/// observe(): on fixed-size groups Casimir by Casimir (CasimirDrift, runMethod's own). Outside the
+/// unnamed namespace: runComparison's lambdas, of external linkage, capture it (GCC's
+/// -Wsubobject-linkage).
 template <class G, bool = isDynamicGroup<G>>
 class DriftWatch {
  public:
@@ -76,24 +96,6 @@ class DriftWatch<G, true> {
   app::SpectrumDrift<G> spectrum_;
   double current_ = 0.0, max_ = 0.0;
 };
-
-/// --adaptive's checks that need the problem (docs/reference/bad-inputs.md): the step control
-/// judges steps by the energy's change, which dissipation must drive.
-template <class G>
-void requireDissipation(const Options& o, const Settings& s, const Problem<G>& problem) {
-  if (problem.alpha == 0) {
-    app::usageError("--adaptive", o.alpha, "needs --alpha != 0 (the energy must move)");
-  }
-  // relax() refuses this too, but only after the files are created.
-  SteadyStateProbe<G> probe(*problem.system);
-  probe.evaluate(problem.mu0);
-  if (probe.energyRate() == 0 && probe.residual() > s.relax.tolerance) {
-    app::usageError("--adaptive", o.metric,
-                    "needs dissipation: dH/dt = 0 at mu0 where the flow moves (--metric?)");
-  }
-}
-
-}  // namespace
 
 template <class G>
 int runComparison(const Options& o, const Settings& s, const Problem<G>& problem) {
