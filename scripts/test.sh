@@ -78,9 +78,9 @@ done
 # Eigen's own assertions on (no NDEBUG), and -g1, the line tables a sanitizer's stack trace
 # names file:line from, inlined frames included (GCC 12 gives the same trace as at -g), without
 # -g's descriptions of every local and type, which took a third of this stage's compile time
-# (method_table_so3.cc: 64 s against 41 s). Only these two: a sanitized file
-# takes about 3× its Release compile time, and more would take .ci/run past 30 minutes. Any
-# finding stops the run.
+# (method_table_so3.cc: 64 s against 41 s). Only these two: a sanitized file takes about 3×
+# its Release compile time, and more would take .ci/run past 30 minutes. Any finding stops the
+# run.
 echo "== tests under ASan and UBSan"
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDDB_BUILD_APPS=OFF \
       -DDDB_BUILD_BENCH=OFF -DDDB_BUILD_PYTHON=OFF -DDDB_BUILD_MPI=OFF -DDDB_BUILD_CUDA=OFF \
