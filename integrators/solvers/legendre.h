@@ -5,7 +5,8 @@
 // DDB's target is the momentum M_k; the symmetric variants' targets depend on the unknown.
 // Two stages (docs/reference/conventions.md §4), as the matrix-free solver's (matrix_legendre.h):
 //   predictor: p = near + c, the correction c = p − near extrapolated from the last solves at
-//     the same h (quadratically once there are three), then fixed-point sweeps
+//     the same h by the polynomial whose degree predicted the last solve best (up to
+//     kPredictorOrder − 1; PolynomialPredictor), then fixed-point sweeps
 //     p ← p − r(p), one residual evaluation each. Their rate ‖I − ∂r/∂p‖ is O(h) (0.02–0.03
 //     on Scenario A at h = 0.1): while it is at most kFastContraction they go on to the
 //     tolerance, cheaper than the one Newton iteration that would replace the last few
@@ -24,9 +25,12 @@
 #include <ddb/integrators/solvers/injectivity_guard.h>
 #include <ddb/integrators/solvers/legendre_equation.h>
 #include <ddb/integrators/solvers/legendre_stats.h>
+#include <ddb/integrators/solvers/polynomial_predictor.h>
 
 #include <Eigen/Core>
+#include <array>
 #include <cmath>
+#include <string>
 
 namespace ddb {
 
@@ -44,6 +48,11 @@ class DiscreteLegendreSolver {
   static constexpr double kSlowContraction = 0.5;
   /// Iterations with the Jacobian of the predicted guess before fresh Jacobians take over.
   static constexpr int kChordIterations = 3;
+  /// The most corrections the predictor's extrapolation combines (its degree + 1): on
+  /// Scenario A at h = 0.1 the sweeps a step fall from 6.2 at 3 (quadratic) to 3.3 at 8, and
+  /// beyond it the table costs about what it saves (docs/results/benchmarks.md, "The small
+  /// Legendre solver's predictor").
+  static constexpr int kPredictorOrder = 8;
 
   DiscreteLegendreSolver(const LiePoissonSystem<G>& system, const R& retraction, LegendreForm form,
                          SolverOptions options)
@@ -60,33 +69,41 @@ class DiscreteLegendreSolver {
 
   /// Forgets the corrections of earlier solves (a new trajectory).
   void reset() {
-    history_ = 0;
+    predictor_.reset();
     squared_rate_ = 1.0;
   }
   LegendreForm form() const { return form_; }
-  /// The warm start (OneStepMethod::saveWarmStart): the last corrections, their step size
-  /// and the measured contraction.
+  /// The warm start (OneStepMethod::saveWarmStart): the measured contraction, the step size
+  /// and the predictor's corrections.
   void saveWarmStart(BinaryRecordWriter& out) const {
-    out.tag("discrete legendre solver");
-    out.put(history_);
+    out.tag(kRecordTag);
     out.put(squared_rate_);
     out.put(h_);
-    out.put(correction_);
-    out.put(previous_correction_);
-    out.put(oldest_correction_);
+    predictor_.save(out);
   }
   /// As loadWarmStart(in): a small group's record does not depend on the state (the matrix
   /// solver's signature, so that a method loads either solver's alike).
   void loadWarmStart(BinaryRecordReader& in, const Dual&) { loadWarmStart(in); }
+  /// Reads saveWarmStart's record, or that of 0.2.0 (the last three corrections, extrapolated
+  /// quadratically), whose corrections the predictor restarts from at their order.
   void loadWarmStart(BinaryRecordReader& in) {
-    in.expectTag("discrete legendre solver");
-    in.get(history_);
-    if (history_ < 0 || history_ > 3) throw CorruptRecord("a correction count outside 0..3");
+    const std::string tag = in.get<std::string>();
+    if (tag == kRecordTagOf020) {
+      const int count = in.get<int>();
+      if (count < 0 || count > 3) throw CorruptRecord("a correction count outside 0..3");
+      in.get(squared_rate_);
+      in.get(h_);
+      std::array<Dual, 3> corrections;  // newest first
+      for (Dual& c : corrections) in.get(c);
+      predictor_.restart(corrections, count);
+      return;
+    }
+    if (tag != kRecordTag) {
+      throw CorruptRecord("expected part '" + std::string(kRecordTag) + "', found '" + tag + "'");
+    }
     in.get(squared_rate_);
     in.get(h_);
-    in.get(correction_);
-    in.get(previous_correction_);
-    in.get(oldest_correction_);
+    predictor_.load(in);
   }
   /// Sweeps, Newton iterations and final residual of the last solve.
   const LegendreStats& stats() const { return stats_; }
@@ -112,14 +129,11 @@ class DiscreteLegendreSolver {
     InjectivityGuard<R>::beforeSolve(system_, near, t, h);
     const LegendreEquation<R, Target> equation{system_, retraction_, target, h, form_};
     if (h != h_) {  // corrections and rates scale with h: only same-h ones are used
-      history_ = 0;
+      predictor_.reset();
       squared_rate_ = 1.0;
     }
     h_ = h;
-    Dual guess = near;
-    if (history_ == 1) guess += correction_;
-    if (history_ == 2) guess += 2.0 * correction_ - previous_correction_;
-    if (history_ == 3) guess += 3.0 * (correction_ - previous_correction_) + oldest_correction_;
+    Dual guess = predictor_.predict(near);
     stats_ = LegendreStats{};
     const double scale = near.norm();
     if (sweep(equation, scale, guess)) {
@@ -139,10 +153,7 @@ class DiscreteLegendreSolver {
       equation.unpack(unknown_.data(), xi, p);
     }
     InjectivityGuard<R>::afterSolve(system_, near, xi, t, h);
-    oldest_correction_ = previous_correction_;
-    previous_correction_ = correction_;
-    correction_ = p - near;
-    history_ = history_ < 3 ? history_ + 1 : 3;
+    predictor_.remember(p - near);
     p_ = p;
     xi_ = xi;
   }
@@ -208,18 +219,19 @@ class DiscreteLegendreSolver {
   }
   static constexpr double square(double x) { return x * x; }
 
+  static constexpr const char* kRecordTag = "discrete legendre solver, polynomial predictor";
+  static constexpr const char* kRecordTagOf020 = "discrete legendre solver";
+
   const LiePoissonSystem<G>& system_;
   const R& retraction_;
   LegendreForm form_;
   SolverOptions options_;
   int max_sweeps_;
   LegendreStats stats_;
-  int history_ = 0;  // corrections remembered (0 to 3)
   // The contraction of the last two sweeps, squared; 1 (slow) until measured.
   double squared_rate_ = 1.0;
   double h_ = 0.0;
-  Dual correction_ = Dual::Zero(), previous_correction_ = Dual::Zero(),
-       oldest_correction_ = Dual::Zero();
+  PolynomialPredictor<Dual, kPredictorOrder> predictor_;
   Vector unknown_ = Vector::Zero();
   Dual p_ = Dual::Zero();         // the last solve's solution
   Algebra xi_ = Algebra::Zero();  // and its ξ

@@ -87,6 +87,26 @@ TEST(LegendreSolver, FastSweepsReachTheToleranceWithoutNewtonOnScenarioA) {
   EXPECT_GE(compareThePaths(0.0, 0.1, 300), 0.99);
 }
 
+TEST(LegendreSolver, ThePredictorLeavesAboutThreeSweepsAStepOnScenarioA) {
+  // The polynomial predictor at its full order misses by about 1e-9 relative at h = 0.1, and
+  // each sweep contracts by 0.02–0.05: three to four sweeps reach 1e-14 (6.2 with the
+  // quadratic extrapolation of 0.2.0; docs/results/benchmarks.md).
+  const auto body = makeRigidBody(kA.inertia, 0.5);
+  const Cayley<SO3> cayley;
+  DiscreteLegendreSolver<Cayley<SO3>> solver(*body, cayley, LegendreForm::kLagrangian, {});
+  const auto states = ddbStates(0.5, 0.1, 300);
+  long sweeps = 0, newton = 0;
+  for (size_t k = 0; k + 1 < states.size(); ++k) {
+    Eigen::Vector3d p;
+    const Eigen::Vector3d xi = solver.solve(states[k], k * 0.1, 0.1, p);
+    ASSERT_LE(closedFormResidual(xi, states[k], 0.1), kTolerance * states[k].norm()) << k;
+    sweeps += solver.stats().fixed_point;
+    newton += solver.stats().newton;
+  }
+  EXPECT_EQ(newton, 0);
+  EXPECT_LE(static_cast<double>(sweeps) / static_cast<double>(states.size() - 1), 4.0);
+}
+
 TEST(LegendreSolver, SlowSweepsHandOverToNewtonAndBothPathsAgree) {
   // The rate grows with h: at h = 1 it is above kFastContraction, and at h = 3 the sweeps
   // hardly contract; Newton finishes (nearly) every solve.

@@ -6,12 +6,14 @@
 // of a Legendre solve). A corrupted or truncated record is refused.
 #include <ddb/core/binary_record.h>
 #include <ddb/integrators/drivers/relax.h>
+#include <ddb/integrators/methods/ddb.h>
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <string>
 
 namespace ddb::test {
@@ -134,6 +136,50 @@ TEST(WarmStart, AnInterruptedRelaxationSaysSo) {
   EXPECT_EQ(run.result().stop, RelaxStop::kInterrupted);
   EXPECT_TRUE(run.result().ok());
   EXPECT_EQ(run.state().k, 1);
+}
+
+// A small solver's warm start as 0.2.0 wrote it (the last three corrections c = p − M, newest
+// first, for a quadratic extrapolation) still loads: the resumed steps take fewer sweeps
+// than a cold start and agree with the uninterrupted run within the solver's tolerance (not
+// to the bit: the predictor then climbs past the quadratic).
+TEST(WarmStart, ASmallSolversRecordOf020StillLoads) {
+  const RigidBodyScenario& a = rigidBodyScenario("A");
+  const auto body = a.system();
+  const double h = 0.1;
+  Ddb<Cayley<SO3>> whole(body);
+  Eigen::Vector3d mu = a.mu0();
+  std::array<Eigen::Vector3d, 3> corrections = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                                                Eigen::Vector3d::Zero()};  // newest first
+  for (long k = 0; k < kSteps; ++k) {
+    const Eigen::Vector3d before = mu;
+    whole.advance(mu, static_cast<double>(k) * h, h);
+    corrections = {whole.legendreSolver().solution() - before, corrections[0], corrections[1]};
+  }
+  const Eigen::Vector3d middle = mu;
+  const Eigen::Vector3d expected = advance<SO3>(whole, middle, kSteps, h, kSteps);
+
+  BinaryRecordWriter out;
+  out.tag("discrete legendre solver");
+  out.put(3);    // corrections
+  out.put(1.0);  // the squared contraction, unknown
+  out.put(h);
+  for (const Eigen::Vector3d& c : corrections) out.put(c);
+  BinaryRecordReader in(out.bytes());
+  Ddb<Cayley<SO3>> loaded(body), cold(body);
+  loaded.loadWarmStart(in, middle);
+  EXPECT_TRUE(in.atEnd());
+  Eigen::Vector3d from_record = middle, from_cold = middle;
+  loaded.advance(from_record, static_cast<double>(kSteps) * h, h);
+  cold.advance(from_cold, static_cast<double>(kSteps) * h, h);
+  EXPECT_EQ(loaded.legendreSolver().stats().newton, 0);
+  EXPECT_LT(loaded.legendreSolver().stats().fixed_point, cold.legendreSolver().stats().fixed_point);
+  const Eigen::Vector3d resumed = advance<SO3>(loaded, from_record, kSteps + 1, h, kSteps - 1);
+  EXPECT_LT((resumed - expected).norm(), 1e-13 * expected.norm());
+
+  BinaryRecordWriter other;
+  other.tag("discrete legendre solver, another layout");
+  BinaryRecordReader other_in(other.bytes());
+  EXPECT_THROW(loaded.loadWarmStart(other_in, middle), CorruptRecord);
 }
 
 TEST(BinaryRecord, RefusesACorruptedOrTruncatedRecord) {
