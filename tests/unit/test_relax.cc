@@ -38,7 +38,8 @@ struct Watch {
     if (states == 0) {
       casimirs0 = c;
     } else {
-      casimir_drift = std::max(casimir_drift, (c - casimirs0).norm() / casimirs0.norm());
+      const Eigen::VectorXd change = c - casimirs0;
+      casimir_drift = std::max(casimir_drift, change.norm() / casimirs0.norm());
     }
     const double energy = system.energy(mu);
     EXPECT_EQ(energy, state.energy);
