@@ -5,10 +5,10 @@
 // DDB's target is the momentum M_k; the symmetric variants' targets depend on the unknown.
 // Two stages (docs/reference/conventions.md §4), as the matrix-free solver's (matrix_legendre.h):
 //   predictor: p = near + c, the correction c = p − near extrapolated from the last solves at
-//     the same h by the polynomial whose degree predicted the last solve best (up to
-//     kPredictorOrder − 1; PolynomialPredictor), then fixed-point sweeps
-//     p ← p − r(p), one residual evaluation each. Their rate ‖I − ∂r/∂p‖ is O(h) (0.02–0.03
-//     on Scenario A at h = 0.1): while it is at most kFastContraction they go on to the
+//     the same h (and, in a composition, the same stage: slotFor) by the polynomial whose degree
+//     predicted the last solve best (up to kPredictorOrder − 1; PolynomialPredictor), then
+//     fixed-point sweeps p ← p − r(p), one residual evaluation each. Their rate ‖I − ∂r/∂p‖ is O(h)
+//     (0.02–0.03 on Scenario A at h = 0.1): while it is at most kFastContraction they go on to the
 //     tolerance, cheaper than the one Newton iteration that would replace the last few
 //     (docs/design/architecture.md); slower, they stop within √tolerance, from where one Newton
 //     step squares the residual to the tolerance;
@@ -49,9 +49,9 @@ class DiscreteLegendreSolver {
   /// Iterations with the Jacobian of the predicted guess before fresh Jacobians take over.
   static constexpr int kChordIterations = 3;
   /// The most corrections the predictor's extrapolation combines (its degree + 1): on
-  /// Scenario A at h = 0.1 the sweeps a step fall from 6.2 at 3 (quadratic) to 3.3 at 8, and
-  /// beyond it the table costs about what it saves (docs/results/benchmarks.md, "The small
-  /// Legendre solver's predictor").
+  /// Scenario A at h = 0.1 the sweeps a step fall from 6.2 at 3 (quadratic) to 3.3 at 8; 10
+  /// and 12 save a few nanoseconds more for a larger record (docs/results/benchmarks.md, "The
+  /// small Legendre solver's predictor"). The matrix solver's predictor stops at 8 too.
   static constexpr int kPredictorOrder = 8;
 
   DiscreteLegendreSolver(const LiePoissonSystem<G>& system, const R& retraction, LegendreForm form,
@@ -69,41 +69,57 @@ class DiscreteLegendreSolver {
 
   /// Forgets the corrections of earlier solves (a new trajectory).
   void reset() {
-    predictor_.reset();
-    squared_rate_ = 1.0;
+    for (Slot& slot : slots_) slot = Slot{};
+    previous_h_ = 0.0;
+    solves_ = 0;
   }
   LegendreForm form() const { return form_; }
-  /// The warm start (OneStepMethod::saveWarmStart): the measured contraction, the step size
-  /// and the predictor's corrections.
+  /// The warm start (OneStepMethod::saveWarmStart): the step size of the last solve, the
+  /// number of solves, and each slot's key, contraction and corrections.
   void saveWarmStart(BinaryRecordWriter& out) const {
     out.tag(kRecordTag);
-    out.put(squared_rate_);
-    out.put(h_);
-    predictor_.save(out);
+    out.put(previous_h_);
+    out.put(solves_);
+    for (const Slot& slot : slots_) {
+      out.put(slot.h);
+      out.put(slot.previous_h);
+      out.put(slot.squared_rate);
+      out.put(slot.last_solve);
+      slot.predictor.save(out);
+    }
   }
   /// As loadWarmStart(in): a small group's record does not depend on the state (the matrix
   /// solver's signature, so that a method loads either solver's alike).
   void loadWarmStart(BinaryRecordReader& in, const Dual&) { loadWarmStart(in); }
-  /// Reads saveWarmStart's record, or that of 0.2.0 (the last three corrections, extrapolated
-  /// quadratically), whose corrections the predictor restarts from at their order.
+  /// Reads saveWarmStart's record, or that of 0.2.0 (the last three corrections at one h,
+  /// extrapolated quadratically), whose corrections a slot for that h restarts from.
   void loadWarmStart(BinaryRecordReader& in) {
+    reset();
     const std::string tag = in.get<std::string>();
     if (tag == kRecordTagOf020) {
       const int count = in.get<int>();
       if (count < 0 || count > 3) throw CorruptRecord("a correction count outside 0..3");
-      in.get(squared_rate_);
-      in.get(h_);
+      Slot& slot = slots_[0];
+      in.get(slot.squared_rate);
+      in.get(slot.h);
       std::array<Dual, 3> corrections;  // newest first
       for (Dual& c : corrections) in.get(c);
-      predictor_.restart(corrections, count);
+      slot.predictor.restart(corrections, count);
+      slot.previous_h = previous_h_ = slot.h;
       return;
     }
     if (tag != kRecordTag) {
       throw CorruptRecord("expected part '" + std::string(kRecordTag) + "', found '" + tag + "'");
     }
-    in.get(squared_rate_);
-    in.get(h_);
-    predictor_.load(in);
+    in.get(previous_h_);
+    in.get(solves_);
+    for (Slot& slot : slots_) {
+      in.get(slot.h);
+      in.get(slot.previous_h);
+      in.get(slot.squared_rate);
+      in.get(slot.last_solve);
+      slot.predictor.load(in);
+    }
   }
   /// Sweeps, Newton iterations and final residual of the last solve.
   const LegendreStats& stats() const { return stats_; }
@@ -128,15 +144,14 @@ class DiscreteLegendreSolver {
     Algebra xi;
     InjectivityGuard<R>::beforeSolve(system_, near, t, h);
     const LegendreEquation<R, Target> equation{system_, retraction_, target, h, form_};
-    if (h != h_) {  // corrections and rates scale with h: only same-h ones are used
-      predictor_.reset();
-      squared_rate_ = 1.0;
-    }
-    h_ = h;
-    Dual guess = predictor_.predict(near);
+    Slot& slot = slotFor(h);
+    Dual guess = slot.predictor.predict(near);
     stats_ = LegendreStats{};
     const double scale = near.norm();
-    if (sweep(equation, scale, guess)) {
+    double squared_rate = slot.squared_rate;  // a local, as p and ξ
+    const bool swept = sweep(equation, scale, squared_rate, guess);
+    slot.squared_rate = squared_rate;
+    if (swept) {
       p = guess;
       xi = system_.velocity(p);
     } else {
@@ -153,7 +168,7 @@ class DiscreteLegendreSolver {
       equation.unpack(unknown_.data(), xi, p);
     }
     InjectivityGuard<R>::afterSolve(system_, near, xi, t, h);
-    predictor_.remember(p - near);
+    slot.predictor.remember(p - near);
     p_ = p;
     xi_ = xi;
   }
@@ -181,11 +196,11 @@ class DiscreteLegendreSolver {
   //   - after max_sweeps_: SolverOptions::max_sweeps, or 0 when ∂H/∂μ is itself a solve
   //     (a sweep then costs about as much as a Newton step; docs/design/architecture.md, "Small
   //     Legendre solves", has both measurements).
-  // The rate is the ratio of the last two updates; on the first sweep, the last solve's at
-  // the same h (it belongs to the map near the solution and moves slowly with the state);
+  // The rate is the ratio of the last two updates; on the first sweep, the last solve's in
+  // the same slot (it belongs to the map near the solution and moves slowly with the state);
   // 1, i.e. slow, until measured.
   template <class Equation>
-  bool sweep(const Equation& equation, double scale, Dual& p) {
+  bool sweep(const Equation& equation, double scale, double& squared_rate, Dual& p) {
     // Squared norms and rates: no square root waits in the loop (docs/design/architecture.md). The
     // decisions are those on norms, up to ties (Eigen's norm() is √squaredNorm() too).
     const double tolerance = square(options_.relative_tolerance * scale);
@@ -196,19 +211,19 @@ class DiscreteLegendreSolver {
       const double size = update.squaredNorm();
       if (!std::isfinite(size) || size > last) {  // keep p as it is
         stats_.residual = std::sqrt(size);
-        squared_rate_ = 1.0;
+        squared_rate = 1.0;
         return false;
       }
-      if (k > 0) squared_rate_ = size / last;
+      if (k > 0) squared_rate = size / last;
       ++stats_.fixed_point;
       if (size <= tolerance) {
         stats_.residual = std::sqrt(size);
-        if (squared_rate_ <= square(kSlowContraction)) p -= update;
+        if (squared_rate <= square(kSlowContraction)) p -= update;
         return true;
       }
       p -= update;
-      if ((k > 0 && squared_rate_ > square(kSlowContraction)) ||
-          (squared_rate_ > square(kFastContraction) && squared_rate_ * size <= newton_ready)) {
+      if ((k > 0 && squared_rate > square(kSlowContraction)) ||
+          (squared_rate > square(kFastContraction) && squared_rate * size <= newton_ready)) {
         stats_.residual = std::sqrt(size);
         return false;
       }
@@ -219,6 +234,37 @@ class DiscreteLegendreSolver {
   }
   static constexpr double square(double x) { return x * x; }
 
+  // Corrections and rates scale with h, and a composition's stages (Φ_{γ₁h} ∘ Φ_{γ₂h} ∘ …)
+  // each follow their own smooth sequence, interleaved: a slot of corrections per stage, which
+  // the pair (h, the previous solve's h) tells apart for the compositions of the method table
+  // (the triple jump's (γ₁h, γ₁h), (γ₂h, γ₁h), (γ₁h, γ₂h)); a run at one h uses one slot
+  // throughout, the first solve after reset() included. A slot unused for kSlots solves is
+  // stale (a step size an adaptive run left and came back to): it starts afresh.
+  struct Slot {
+    double h = 0.0, previous_h = 0.0;  // its key; 0: free
+    double squared_rate = 1.0;         // the contraction of its last two sweeps, squared; 1 (slow)
+                                       // until measured
+    long last_solve = -1;              // the solve that last used it
+    PolynomialPredictor<Dual, kPredictorOrder> predictor;
+  };
+  static constexpr int kSlots = 8;  // Yoshida's order-6 composition has 7 stages
+
+  Slot& slotFor(double h) {
+    const double previous = previous_h_ == 0.0 ? h : previous_h_;
+    previous_h_ = h;
+    const long solve = solves_++;
+    Slot* oldest = &slots_[0];
+    for (Slot& slot : slots_) {
+      if (slot.h == h && slot.previous_h == previous && solve - slot.last_solve <= kSlots) {
+        slot.last_solve = solve;
+        return slot;
+      }
+      if (slot.last_solve < oldest->last_solve) oldest = &slot;
+    }
+    *oldest = Slot{h, previous, 1.0, solve, {}};
+    return *oldest;
+  }
+
   static constexpr const char* kRecordTag = "discrete legendre solver, polynomial predictor";
   static constexpr const char* kRecordTagOf020 = "discrete legendre solver";
 
@@ -228,10 +274,9 @@ class DiscreteLegendreSolver {
   SolverOptions options_;
   int max_sweeps_;
   LegendreStats stats_;
-  // The contraction of the last two sweeps, squared; 1 (slow) until measured.
-  double squared_rate_ = 1.0;
-  double h_ = 0.0;
-  PolynomialPredictor<Dual, kPredictorOrder> predictor_;
+  std::array<Slot, kSlots> slots_;
+  double previous_h_ = 0.0;  // the h of the last solve; 0 before the first
+  long solves_ = 0;          // solves since reset()
   Vector unknown_ = Vector::Zero();
   Dual p_ = Dual::Zero();         // the last solve's solution
   Algebra xi_ = Algebra::Zero();  // and its ξ

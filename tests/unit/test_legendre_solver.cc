@@ -4,7 +4,9 @@
 // form of (dcay⁻¹_x)* on SO(3), written out here, and the two against each other on the states of
 // real trajectories.
 #include <ddb/core/legendre_hamiltonian.h>
+#include <ddb/integrators/methods/composition.h>
 #include <ddb/integrators/methods/ddb.h>
+#include <ddb/integrators/methods/symmetric_ddb.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>
 #include <gtest/gtest.h>
@@ -88,9 +90,9 @@ TEST(LegendreSolver, FastSweepsReachTheToleranceWithoutNewtonOnScenarioA) {
 }
 
 TEST(LegendreSolver, ThePredictorLeavesAboutThreeSweepsAStepOnScenarioA) {
-  // The polynomial predictor at its full order misses by about 1e-9 relative at h = 0.1, and
-  // each sweep contracts by 0.02–0.05: three to four sweeps reach 1e-14 (6.2 with the
-  // quadratic extrapolation of 0.2.0; docs/results/benchmarks.md).
+  // The polynomial predictor at its full order misses by 1.5e-11 relative (median; 9.4e-11 at
+  // most) at h = 0.1, and each sweep contracts by 0.03 or less: three to four sweeps reach
+  // 1e-14 (6.2 with the quadratic extrapolation of 0.2.0; docs/results/benchmarks.md).
   const auto body = makeRigidBody(kA.inertia, 0.5);
   const Cayley<SO3> cayley;
   DiscreteLegendreSolver<Cayley<SO3>> solver(*body, cayley, LegendreForm::kLagrangian, {});
@@ -135,6 +137,53 @@ TEST(LegendreSolver, ANewStepSizeOrResetStartsAfresh) {
   EXPECT_GE(solver.stats().fixed_point, 2);
   EXPECT_LE(closedFormResidual(solver.solve(states[0], 0.0, 0.05, p), states[0], 0.05),
             kTolerance * states[0].norm());
+}
+
+TEST(LegendreSolver, ACompositionsStagesEachExtrapolateTheirOwnCorrections) {
+  // The triple jump solves at γ₁h, γ₂h, γ₁h: three interleaved sequences of corrections, each
+  // smooth, which the solver keeps apart by (h, the previous h). Its sub-steps then take about
+  // what a step of the symmetric DDB alone does (3.3 iterations); with one history forgotten
+  // at every change of h, as until 0.2.0, they took 26.7 a step.
+  const auto body = makeRigidBody(kA.inertia, 0.5);
+  SymmetricDdb<Cayley<SO3>> alone(body);
+  Composition<SO3> composed("ddb4-cay", std::make_unique<SymmetricDdb<Cayley<SO3>>>(body),
+                            tripleJump());
+  const auto iterationsPerStep = [&](OneStepMethod<SO3>& method) {
+    Eigen::Vector3d mu = kA.mu0();
+    long iterations = 0;
+    for (int k = 0; k < 300; ++k) {
+      method.advance(mu, k * 0.1, 0.1);
+      iterations += method.lastStepIterations();
+    }
+    return static_cast<double>(iterations) / 300.0;
+  };
+  const double one = iterationsPerStep(alone);
+  EXPECT_LE(one, 4.0);
+  EXPECT_LE(iterationsPerStep(composed), 3.0 * one + 1.5);
+}
+
+TEST(LegendreSolver, ASlotUnusedForEightSolvesStartsAfresh) {
+  // Solves alternating between h = 0.1 and 0.05 (the keys (0.1, 0.05) and (0.05, 0.1)), then
+  // `away` solves at h = 0.2 and one at 0.05, then one at 0.1 again: within eight solves of its
+  // last use the slot (0.1, 0.05) still extrapolates (fewer sweeps than a fresh solve); after
+  // more it is stale and the solve is exactly a fresh one, as after reset().
+  const auto body = makeRigidBody(kA.inertia, 0.5);
+  const Cayley<SO3> cayley;
+  const auto states = ddbStates(0.5, 0.1, 12);
+  const auto sweepsBack = [&](int away) {
+    DiscreteLegendreSolver<Cayley<SO3>> solver(*body, cayley, LegendreForm::kLagrangian, {});
+    Eigen::Vector3d p;
+    for (int k = 0; k < 10; ++k) solver.solve(states[k], k * 0.1, k % 2 == 0 ? 0.1 : 0.05, p);
+    for (int k = 0; k < away; ++k) solver.solve(states[10], 1.0, 0.2, p);
+    solver.solve(states[10], 1.0, 0.05, p);
+    solver.solve(states[10], 1.0, 0.1, p);
+    return solver.stats().fixed_point;
+  };
+  DiscreteLegendreSolver<Cayley<SO3>> fresh(*body, cayley, LegendreForm::kLagrangian, {});
+  Eigen::Vector3d p;
+  fresh.solve(states[10], 1.0, 0.1, p);
+  EXPECT_LT(sweepsBack(3), fresh.stats().fixed_point);  // last used 6 solves before
+  EXPECT_EQ(sweepsBack(6), fresh.stats().fixed_point);  // 9 solves before
 }
 
 TEST(LegendreSolver, NoSweepsMeansNewtonFromTheExtrapolatedGuess) {
