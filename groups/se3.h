@@ -256,13 +256,13 @@ struct SemidirectProductTraits<SO3> {
     return SO3::cayAdDual<T>(w, gamma);
   }
   template <class T>
-  static Eigen::Matrix<T, 3, 1> algebraActionTransposed(const Eigen::Matrix<T, 3, 1>& w,
-                                                        const Eigen::Matrix<T, 3, 1>& gamma) {
+  EIGEN_ALWAYS_INLINE static Eigen::Matrix<T, 3, 1> algebraActionTransposed(
+      const Eigen::Matrix<T, 3, 1>& w, const Eigen::Matrix<T, 3, 1>& gamma) {
     return SO3::adDual<T>(w, gamma);
   }
   template <class T>
-  static Eigen::Matrix<T, 3, 1> diamond(const Eigen::Matrix<T, 3, 1>& v,
-                                        const Eigen::Matrix<T, 3, 1>& gamma) {
+  EIGEN_ALWAYS_INLINE static Eigen::Matrix<T, 3, 1> diamond(const Eigen::Matrix<T, 3, 1>& v,
+                                                            const Eigen::Matrix<T, 3, 1>& gamma) {
     return v.cross(gamma);
   }
   // ω̂'s eigenvalues are 0 and ±i|ω|.

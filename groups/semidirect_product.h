@@ -257,12 +257,19 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G, Representation>> {
       return pairingSolve(c);
     }
   }
-  /// ad*_(ω,v)(π, γ) = (ad*_ω π − v ⋄ γ, Ωᵀγ).
+  /// ad*_(ω,v)(π, γ) = (ad*_ω π − v ⋄ γ, Ωᵀγ). ω and γ taken out once and the halves written in
+  /// place, inlined as SE3's: under Lobatto IIIC's Jets each 3-block copy is an out-of-line
+  /// constructor (docs/results/benchmarks.md, "SE(3) composed: ad-star without the Jets' block
+  /// copies").
   template <class T>
-  static Dual<T> adDual(const Algebra<T>& x, const Dual<T>& mu) {
+  EIGEN_ALWAYS_INLINE static Dual<T> adDual(const Algebra<T>& x, const Dual<T>& mu) {
+    const FactorAlgebra<T> w = factor(x);
     const Vector<T> gamma = vector(mu);
-    return join(FactorDual<T>(G::adDual(factor(x), factor(mu)) - diamond<T>(vector(x), gamma)),
-                algebraActionTransposed<T>(factor(x), gamma));
+    Dual<T> out;
+    out.template head<kFactorDim>() =
+        G::adDual(w, FactorDual<T>(factor(mu))) - diamond<T>(vector(x), gamma);
+    out.template tail<kVectorDim>() = algebraActionTransposed<T>(w, gamma);
+    return out;
   }
   /// Ad*_(g,r)(π, γ) = (Ad*_g(π − r ⋄ γ), ρ(g)ᵀγ).
   template <class T>
@@ -468,12 +475,12 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G, Representation>> {
   }
   /// The factor's part ω (or π) of a stacked vector.
   template <class T>
-  static FactorAlgebra<T> factor(const Algebra<T>& x) {
+  EIGEN_ALWAYS_INLINE static FactorAlgebra<T> factor(const Algebra<T>& x) {
     return x.template head<kFactorDim>();
   }
   /// The vector part v (or γ).
   template <class T>
-  static Vector<T> vector(const Algebra<T>& x) {
+  EIGEN_ALWAYS_INLINE static Vector<T> vector(const Algebra<T>& x) {
     return x.template tail<kVectorDim>();
   }
 

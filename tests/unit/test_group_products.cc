@@ -689,5 +689,40 @@ TEST(SemidirectProduct, FittedOrdersOfTheDdbFamilyOnAUserRepresentation) {
                                             2.0);
 }
 
+// The Cayley retraction of a product by another ρ, (cay_G ω, A⁻¹v) with A⁻¹ = (I + ρ(cay_G ω))/2,
+// is singular where ρ(cay_G ω) has the eigenvalue −1: on Sym(3), ρ(R) turns by 2θ for R's angle
+// θ = 2 atan(|ω|/2), so at |ω| = 2. Unlike exp past π, it is one-to-one on both sides (cay_G is,
+// and A⁻¹ is invertible off that set), so a step past it has no other branch to land on: the
+// Legendre solve either solves the same equations (the Casimirs kept) or fails by name near the
+// pole (docs/reference/guarantees.md §2). Never a NaN.
+TEST(SemidirectProduct, CayleyStepsPastTheSingularSetOfAUserRepresentationSolveOrFailByName) {
+  const auto body =
+      makeHeavyTopOn<SO3xSym>(kBodyInertia, 0.01, fieldTensor(), 0.5, Vector9::Ones());
+  const Vector9 mu0 = orientedBodyState();
+  const Eigen::VectorXd c0 = body->casimirs(mu0);
+  int solved_past = 0, failed = 0;
+  for (const std::string name : {"ddb-cay", "sddb-cay"}) {
+    for (double h = 2.0; h <= 6.0; h += 0.25) {
+      auto method = makeMethod<SO3xSym>(name, body);
+      Vector9 mu = mu0;
+      try {
+        for (int k = 0; k < 20; ++k) {
+          const double turn = h * body->velocity(mu).head<3>().norm();
+          mu = method->step(mu, k * h, h);
+          ASSERT_TRUE(mu.allFinite()) << name << " h " << h;
+          EXPECT_LT((body->casimirs(mu) - c0).cwiseQuotient(c0).cwiseAbs().maxCoeff(), 1e-13)
+              << name << " h " << h;
+          if (turn > 2.0) ++solved_past;
+        }
+      } catch (const SolveFailure& e) {
+        EXPECT_THAT(e.what(), ::testing::HasSubstr("did not converge")) << name << " h " << h;
+        ++failed;
+      }
+    }
+  }
+  EXPECT_GT(solved_past, 0);  // the runs cross |hω| = 2 (at h = 4.75: |hω| up to 2.9)
+  EXPECT_GT(failed, 0);
+}
+
 }  // namespace group_products_tests
 }  // namespace ddb::test
