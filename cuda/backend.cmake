@@ -30,7 +30,8 @@ if(DDB_BUILD_CUDA)
   # The library's file name, which the package's config looks for (cuda/component.cmake.in).
   set(DDB_CUDA_LIBRARY_FILE ${CMAKE_STATIC_LIBRARY_PREFIX}ddb_cuda${CMAKE_STATIC_LIBRARY_SUFFIX})
   ddb_add_backend(cuda
-    SOURCES ${CMAKE_CURRENT_LIST_DIR}/cuda_backend.cc ${CMAKE_CURRENT_LIST_DIR}/cuda_device.cc
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/cuda_backend.cc ${CMAKE_CURRENT_LIST_DIR}/cuda_context.cc
+            ${CMAKE_CURRENT_LIST_DIR}/cuda_device.cc
             ${CMAKE_CURRENT_LIST_DIR}/cuda_eigenbasis.cc ${CMAKE_CURRENT_LIST_DIR}/cuda_lu.cc
             ${CMAKE_CURRENT_LIST_DIR}/cuda_poisson_solver.cc
             ${CMAKE_CURRENT_LIST_DIR}/detail/cuda_kernels.cu

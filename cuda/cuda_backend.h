@@ -10,7 +10,8 @@
 // The element-wise operations are compiled without fused multiply-adds and evaluate the dense
 // backend's expressions, so they take its bits; the reductions add in a fixed tree of their
 // own (the same bits run after run on one device, not the dense backend's), and the products
-// are cuBLAS's.
+// are cuBLAS's. Every operation runs in its operands' context (cuda/cuda_context.h): its stream,
+// handles and scratch; operands of two contexts are refused (InvalidArgument).
 #pragma once
 
 #include <ddb/core/binary_record.h>
@@ -74,11 +75,12 @@ struct MatrixBackend<CudaMatrix> {
   static bool allFinite(const X& x);
   static void flushSubnormals(X& x);
   static bool isZero(const X& x);
-  /// out(s) = x at column-major linear index indices(s): gathered on the device, one copy back.
+  /// out(s) = x at column-major linear index indices(s): gathered on the device, one copy back
+  /// (through x's context's buffers: no allocation once they have grown to the sample's size).
   template <class Indices, class Out>
   static void sampleEntries(const X& x, const Indices& indices, Out& out) {
-    thread_local std::vector<long> linear;
-    thread_local std::vector<Scalar> values;
+    std::vector<long>& linear = sampleIndices(x);
+    std::vector<Scalar>& values = sampleValues(x);
     linear.resize(static_cast<std::size_t>(indices.size()));
     values.resize(linear.size());
     for (std::size_t s = 0; s < linear.size(); ++s) {
@@ -93,6 +95,9 @@ struct MatrixBackend<CudaMatrix> {
   static void load(BinaryRecordReader& in, X& x);
 
  private:
+  // The host buffers of sampleEntries, x's context's.
+  static std::vector<long>& sampleIndices(const X& x);
+  static std::vector<Scalar>& sampleValues(const X& x);
   static void gather(const X& x, const std::vector<long>& linear, std::vector<Scalar>& values);
 };
 

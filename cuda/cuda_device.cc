@@ -1,8 +1,9 @@
-// The device, its handles and the matrix's storage (cuda/cuda_device.h, cuda/cuda_matrix.h).
+// The device, the matrix's storage and the transfers (cuda/cuda_device.h, cuda/cuda_matrix.h).
 #include <cuda_runtime.h>
 #include <ddb/cuda/cuda_device.h>
 #include <ddb/cuda/cuda_matrix.h>
 #include <ddb/cuda/detail/cuda_check.h>
+#include <ddb/cuda/detail/cuda_context_state.h>
 #include <ddb/cuda/detail/cuda_libraries.h>
 
 #include <string>
@@ -33,8 +34,12 @@ CudaMemory cudaMemory() {
 
 void cudaSynchronize() { checkCuda(cudaDeviceSynchronize(), "cudaDeviceSynchronize"); }
 
-CudaMatrix::CudaMatrix(long rows, long cols) : rows_(rows), cols_(cols) {
+// ---- CudaMatrix (cuda/cuda_matrix.h). ----
+
+CudaMatrix::CudaMatrix(long rows, long cols, std::shared_ptr<CudaContext> context)
+    : rows_(rows), cols_(cols), context_(std::move(context)) {
   if (size() == 0) return;
+  if (context_ == nullptr) context_ = CudaContext::ofThisThread();
   const cudaError_t status = cudaMalloc(&data_, sizeof(Scalar) * static_cast<std::size_t>(size()));
   if (status != cudaSuccess) {
     data_ = nullptr;
@@ -45,11 +50,12 @@ CudaMatrix::CudaMatrix(long rows, long cols) : rows_(rows), cols_(cols) {
   }
 }
 
-CudaMatrix::CudaMatrix(const CudaMatrix& other) : CudaMatrix(other.rows_, other.cols_) {
+CudaMatrix::CudaMatrix(const CudaMatrix& other)
+    : CudaMatrix(other.rows_, other.cols_, other.context_) {
   if (size() == 0) return;
-  checkCuda(cudaMemcpy(data_, other.data_, sizeof(Scalar) * static_cast<std::size_t>(size()),
-                       cudaMemcpyDeviceToDevice),
-            "cudaMemcpy (device to device)");
+  checkCuda(cudaMemcpyAsync(data_, other.data_, sizeof(Scalar) * static_cast<std::size_t>(size()),
+                            cudaMemcpyDeviceToDevice, context_->state().stream),
+            "cudaMemcpyAsync (device to device)");
 }
 
 CudaMatrix& CudaMatrix::operator=(const CudaMatrix& other) {
@@ -60,16 +66,24 @@ CudaMatrix& CudaMatrix::operator=(const CudaMatrix& other) {
   return *this;
 }
 
-// Not checked: a destructor does not throw, and a failed free leaves nothing to do.
+// Not checked: a destructor does not throw, and a failed free leaves nothing to do. cudaFree
+// waits for the device, so no kernel of any stream still reads the entries.
 CudaMatrix::~CudaMatrix() { cudaFree(data_); }
 
+// ---- Transfers (cuda/cuda_device.h). ----
+
 void toDevice(const Eigen::MatrixXcd& m, CudaMatrix& x) {
-  if (x.rows() != m.rows() || x.cols() != m.cols()) x = CudaMatrix(m.rows(), m.cols());
+  if (x.rows() != m.rows() || x.cols() != m.cols()) x = CudaMatrix(m.rows(), m.cols(), x.context());
   if (x.size() > 0) {
-    checkCuda(cudaMemcpy(x.deviceData(), m.data(), sizeof(CudaMatrix::Scalar) * m.size(),
-                         cudaMemcpyHostToDevice),
-              "cudaMemcpy (to the device)");
+    copyToDevice(x.context()->state(), x.deviceData(), m.data(),
+                 sizeof(CudaMatrix::Scalar) * m.size());
   }
+}
+
+CudaMatrix toDevice(const Eigen::MatrixXcd& m, const std::shared_ptr<CudaContext>& context) {
+  CudaMatrix x(m.rows(), m.cols(), context);
+  toDevice(m, x);
+  return x;
 }
 
 CudaMatrix toDevice(const Eigen::MatrixXcd& m) {
@@ -81,9 +95,8 @@ CudaMatrix toDevice(const Eigen::MatrixXcd& m) {
 void toHost(const CudaMatrix& x, Eigen::MatrixXcd& out) {
   out.resize(x.rows(), x.cols());
   if (x.size() > 0) {
-    checkCuda(cudaMemcpy(out.data(), x.deviceData(), sizeof(CudaMatrix::Scalar) * x.size(),
-                         cudaMemcpyDeviceToHost),
-              "cudaMemcpy (to the host)");
+    copyToHost(x.context()->state(), out.data(), x.deviceData(),
+               sizeof(CudaMatrix::Scalar) * x.size());
   }
 }
 
@@ -91,26 +104,6 @@ Eigen::MatrixXcd toHost(const CudaMatrix& x) {
   Eigen::MatrixXcd out;
   toHost(x, out);
   return out;
-}
-
-// The handles live as long as the thread: destroying them in a static destructor could run
-// after the CUDA runtime has shut down at exit, and the driver frees them with the process.
-cublasHandle_t cublasHandle() {
-  thread_local cublasHandle_t handle = [] {
-    cublasHandle_t h = nullptr;
-    checkCublas(cublasCreate(&h), "cublasCreate");
-    return h;
-  }();
-  return handle;
-}
-
-cusolverDnHandle_t cusolverHandle() {
-  thread_local cusolverDnHandle_t handle = [] {
-    cusolverDnHandle_t h = nullptr;
-    checkCusolver(cusolverDnCreate(&h), "cusolverDnCreate");
-    return h;
-  }();
-  return handle;
 }
 
 void checkCublas(cublasStatus_t status, const char* call) {

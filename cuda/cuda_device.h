@@ -7,6 +7,7 @@
 #include <ddb/cuda/cuda_matrix.h>
 
 #include <Eigen/Core>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -28,9 +29,12 @@ CudaMemory cudaMemory();
 /// Waits until every operation queued on the device is done (for timings).
 void cudaSynchronize();
 
-/// The host matrix m on the device.
+/// The host matrix m on the device, in this thread's context (CudaContext::ofThisThread()).
 CudaMatrix toDevice(const Eigen::MatrixXcd& m);
-/// x ← m's entries (x reallocated only when its shape is not m's).
+/// The host matrix m on the device, in `context`.
+CudaMatrix toDevice(const Eigen::MatrixXcd& m, const std::shared_ptr<CudaContext>& context);
+/// x ← m's entries, in x's context (this thread's if x has none; x reallocated only when its
+/// shape is not m's).
 void toDevice(const Eigen::MatrixXcd& m, CudaMatrix& x);
 /// x's entries in this process's memory.
 Eigen::MatrixXcd toHost(const CudaMatrix& x);

@@ -1,8 +1,11 @@
 // CudaEigenbasis (cuda/cuda_eigenbasis.h): cuSOLVER's zheevd with kept workspaces, cuBLAS's
-// zgemm and the weighing kernel of cuda/detail/cuda_kernels.cu.
+// zgemm and the weighing kernel of cuda/detail/cuda_kernels.cu, in the decomposed matrix's context
+// (cuda/cuda_context.h).
 #include <cuda_runtime.h>
+#include <ddb/core/errors.h>
 #include <ddb/cuda/cuda_eigenbasis.h>
 #include <ddb/cuda/detail/cuda_check.h>
+#include <ddb/cuda/detail/cuda_context_state.h>
 #include <ddb/cuda/detail/cuda_kernels.h>
 #include <ddb/cuda/detail/cuda_libraries.h>
 
@@ -20,12 +23,12 @@ const cuDoubleComplex* complexData(const CudaMatrix& x) {
   return reinterpret_cast<const cuDoubleComplex*>(x.deviceData());
 }
 
-// out = op_a(a) op_b(b), all n×n (n > 0).
-void gemm(cublasOperation_t op_a, const CudaMatrix& a, cublasOperation_t op_b, const CudaMatrix& b,
-          CudaMatrix& out) {
+// out = op_a(a) op_b(b), all n×n (n > 0), in `state`.
+void gemm(CudaContext::State& state, cublasOperation_t op_a, const CudaMatrix& a,
+          cublasOperation_t op_b, const CudaMatrix& b, CudaMatrix& out) {
   const cuDoubleComplex one = make_cuDoubleComplex(1.0, 0.0), zero = make_cuDoubleComplex(0.0, 0.0);
   const int n = static_cast<int>(a.rows());
-  checkCublas(cublasZgemm(cublasHandle(), op_a, op_b, n, n, n, &one, complexData(a), n,
+  checkCublas(cublasZgemm(state.cublas, op_a, op_b, n, n, n, &one, complexData(a), n,
                           complexData(b), n, &zero, complexData(out), n),
               "cublasZgemm");
 }
@@ -34,6 +37,7 @@ void gemm(cublasOperation_t op_a, const CudaMatrix& a, cublasOperation_t op_b, c
 
 struct CudaEigenbasis::Workspace {
   long n = -1;
+  std::shared_ptr<CudaContext> context;  // the decomposed matrix's
   CudaMatrix vectors, product, hat;
   double* phases = nullptr;
   double* diagonal = nullptr;  // n, for diagonalPhasesOf
@@ -55,15 +59,17 @@ struct CudaEigenbasis::Workspace {
     scratch = nullptr;
     n = -1;
   }
-  // Sized for n×n matrices (a new size frees the old buffers first).
-  void reserve(long size) {
-    if (size == n) return;
+  CudaContext::State& state() { return context->state(); }
+  // Sized for n×n matrices in `in` (a new size or context frees the old buffers first).
+  void reserve(long size, const std::shared_ptr<CudaContext>& in) {
+    if (size == n && in == context) return;
     release();
-    vectors = CudaMatrix(size, size);
-    product = CudaMatrix(size, size);
-    hat = CudaMatrix(size, size);
+    context = in;
+    vectors = CudaMatrix(size, size, context);
+    product = CudaMatrix(size, size, context);
+    hat = CudaMatrix(size, size, context);
     const int rows = static_cast<int>(size);
-    checkCusolver(cusolverDnZheevd_bufferSize(cusolverHandle(), CUSOLVER_EIG_MODE_VECTOR,
+    checkCusolver(cusolverDnZheevd_bufferSize(state().cusolver, CUSOLVER_EIG_MODE_VECTOR,
                                               CUBLAS_FILL_MODE_LOWER, rows, complexData(vectors),
                                               rows, phases, &scratch_length),
                   "cusolverDnZheevd_bufferSize");
@@ -84,42 +90,43 @@ CudaEigenbasis::CudaEigenbasis(CudaEigenbasis&&) noexcept = default;
 CudaEigenbasis& CudaEigenbasis::operator=(CudaEigenbasis&&) noexcept = default;
 
 bool CudaEigenbasis::compute(const CudaMatrix& x) {
-  const long count = 2 * x.size();
-  if (cuda_kernels::countNotFinite(count, reinterpret_cast<const double*>(x.deviceData())) > 0) {
-    return false;
-  }
   const int n = static_cast<int>(x.rows());
   phases_.resize(n);
   if (n == 0) return true;  // cuSOLVER asks lda ≥ 1
   Workspace& w = *workspace_;
-  w.reserve(x.rows());
+  w.reserve(x.rows(), x.context());
+  CudaContext::State& state = w.state();
+  const long count = 2 * x.size();
+  if (cuda_kernels::countNotFinite(state, count, reinterpret_cast<const double*>(x.deviceData())) >
+      0) {
+    return false;
+  }
   w.weighted = false;  // a new basis takes new weights
   // −ix, exactly: (re, im)·(0, −1) = (im, −re).
-  checkCuda(cudaMemcpy(w.vectors.deviceData(), x.deviceData(),
-                       sizeof(CudaMatrix::Scalar) * x.size(), cudaMemcpyDeviceToDevice),
-            "cudaMemcpy (on the device)");
+  checkCuda(
+      cudaMemcpyAsync(w.vectors.deviceData(), x.deviceData(), sizeof(CudaMatrix::Scalar) * x.size(),
+                      cudaMemcpyDeviceToDevice, state.stream),
+      "cudaMemcpyAsync (on the device)");
   const cuDoubleComplex minus_i = make_cuDoubleComplex(0.0, -1.0);
   checkCublas(
-      cublasZscal(cublasHandle(), static_cast<int>(x.size()), &minus_i, complexData(w.vectors), 1),
+      cublasZscal(state.cublas, static_cast<int>(x.size()), &minus_i, complexData(w.vectors), 1),
       "cublasZscal");
   checkCusolver(
-      cusolverDnZheevd(cusolverHandle(), CUSOLVER_EIG_MODE_VECTOR, CUBLAS_FILL_MODE_LOWER, n,
+      cusolverDnZheevd(state.cusolver, CUSOLVER_EIG_MODE_VECTOR, CUBLAS_FILL_MODE_LOWER, n,
                        complexData(w.vectors), n, w.phases, w.scratch, w.scratch_length, w.info),
       "cusolverDnZheevd");
   int info = 0;
-  checkCuda(cudaMemcpy(&info, w.info, sizeof(int), cudaMemcpyDeviceToHost),
-            "cudaMemcpy (to the host)");
+  copyToHost(state, &info, w.info, sizeof(int));
   if (info < 0) throw CudaError("cusolverDnZheevd rejected its argument " + std::to_string(-info));
   if (info > 0) return false;
-  checkCuda(cudaMemcpy(phases_.data(), w.phases, sizeof(double) * n, cudaMemcpyDeviceToHost),
-            "cudaMemcpy (to the host)");
+  copyToHost(state, phases_.data(), w.phases, sizeof(double) * n);
   return true;
 }
 
 void CudaEigenbasis::apply(PhaseFunction f, double scale, const CudaMatrix& in, CudaMatrix& out) {
   Workspace& w = *workspace_;
   const auto weigh = [&] {
-    cuda_kernels::weighByPhases(in.rows(), w.phases, scale, f,
+    cuda_kernels::weighByPhases(w.state(), in.rows(), w.phases, scale, f,
                                 reinterpret_cast<double*>(w.hat.deviceData()));
   };
   transform(in, out, weigh, "apply");
@@ -132,9 +139,7 @@ void CudaEigenbasis::uploadWeights(const Eigen::MatrixXd& weights) {
     if (w.weights == nullptr) {
       checkCuda(cudaMalloc(&w.weights, sizeof(double) * weights.size()), "cudaMalloc");
     }
-    checkCuda(cudaMemcpy(w.weights, weights.data(), sizeof(double) * weights.size(),
-                         cudaMemcpyHostToDevice),
-              "cudaMemcpy (to the device)");
+    copyToDevice(w.state(), w.weights, weights.data(), sizeof(double) * weights.size());
   }
   w.weighted = true;
 }
@@ -145,7 +150,7 @@ void CudaEigenbasis::applyWeights(const CudaMatrix& in, CudaMatrix& out) {
     throw std::logic_error("CudaEigenbasis::applyWeights: no weights for this basis");
   }
   const auto weigh = [&] {
-    cuda_kernels::weighEntrywise(in.size(), w.weights,
+    cuda_kernels::weighEntrywise(w.state(), in.size(), w.weights,
                                  reinterpret_cast<double*>(w.hat.deviceData()));
   };
   transform(in, out, weigh, "applyWeights");
@@ -157,12 +162,13 @@ void CudaEigenbasis::diagonalPhasesOf(const CudaMatrix& y, Eigen::VectorXd& out)
   out.resize(n);
   if (n == 0) return;
   Workspace& w = *workspace_;
-  gemm(CUBLAS_OP_N, y, CUBLAS_OP_N, w.vectors, w.product);      // y V
-  gemm(CUBLAS_OP_C, w.vectors, CUBLAS_OP_N, w.product, w.hat);  // Vᴴ y V
-  cuda_kernels::imaginaryDiagonal(n, reinterpret_cast<const double*>(w.hat.deviceData()),
+  requireDecomposedContext(y, "diagonalPhasesOf");
+  CudaContext::State& state = w.state();
+  gemm(state, CUBLAS_OP_N, y, CUBLAS_OP_N, w.vectors, w.product);      // y V
+  gemm(state, CUBLAS_OP_C, w.vectors, CUBLAS_OP_N, w.product, w.hat);  // Vᴴ y V
+  cuda_kernels::imaginaryDiagonal(state, n, reinterpret_cast<const double*>(w.hat.deviceData()),
                                   w.diagonal);
-  checkCuda(cudaMemcpy(out.data(), w.diagonal, sizeof(double) * n, cudaMemcpyDeviceToHost),
-            "cudaMemcpy (to the host)");
+  copyToHost(state, out.data(), w.diagonal, sizeof(double) * n);
 }
 
 void CudaEigenbasis::requireDecomposedSize(long rows, long cols, const char* function) const {
@@ -172,19 +178,30 @@ void CudaEigenbasis::requireDecomposedSize(long rows, long cols, const char* fun
   }
 }
 
+void CudaEigenbasis::requireDecomposedContext(const CudaMatrix& x, const char* function) const {
+  if (x.context() != workspace_->context) {
+    throwInvalid(std::string("CudaEigenbasis::") + function, "a matrix of another CudaContext",
+                 "must be in the decomposed matrix's context (cuda/cuda_context.h)");
+  }
+}
+
 template <class Weigh>
 void CudaEigenbasis::transform(const CudaMatrix& in, CudaMatrix& out, const Weigh& weigh,
                                const char* function) {
   Workspace& w = *workspace_;
   requireDecomposedSize(in.rows(), in.cols(), function);
   if (in.rows() == 0) return;
-  gemm(CUBLAS_OP_N, in, CUBLAS_OP_N, w.vectors, w.product);     // in V
-  gemm(CUBLAS_OP_C, w.vectors, CUBLAS_OP_N, w.product, w.hat);  // Vᴴ in V
-  weigh();                                                      // Â ← F ∘ Â
-  gemm(CUBLAS_OP_N, w.vectors, CUBLAS_OP_N, w.hat, w.product);  // V (F ∘ Â)
-  if (out.rows() != in.rows() || out.cols() != in.cols()) out = CudaMatrix(in.rows(), in.cols());
-  gemm(CUBLAS_OP_N, w.product, CUBLAS_OP_C, w.vectors, out);
-  cuda_kernels::makeSkewHermitian(out.rows(), reinterpret_cast<double*>(out.deviceData()));
+  requireDecomposedContext(in, function);
+  CudaContext::State& state = w.state();
+  gemm(state, CUBLAS_OP_N, in, CUBLAS_OP_N, w.vectors, w.product);     // in V
+  gemm(state, CUBLAS_OP_C, w.vectors, CUBLAS_OP_N, w.product, w.hat);  // Vᴴ in V
+  weigh();                                                             // Â ← F ∘ Â
+  gemm(state, CUBLAS_OP_N, w.vectors, CUBLAS_OP_N, w.hat, w.product);  // V (F ∘ Â)
+  if (out.rows() != in.rows() || out.cols() != in.cols() || out.context() != w.context) {
+    out = CudaMatrix(in.rows(), in.cols(), w.context);
+  }
+  gemm(state, CUBLAS_OP_N, w.product, CUBLAS_OP_C, w.vectors, out);
+  cuda_kernels::makeSkewHermitian(state, out.rows(), reinterpret_cast<double*>(out.deviceData()));
 }
 
 }  // namespace ddb

@@ -6,7 +6,8 @@
 // one kernel, F_ab = f(scale (θ_a − θ_b)) (core/phase_function.h) or given weights W_ab
 // (applyWeights), then projects the rounding
 // onto the skew-Hermitian matrices as the dense eigenbasis does
-// (core/skew_hermitian_eigenbasis.h). Workspaces are kept between decompositions of one size.
+// (core/skew_hermitian_eigenbasis.h). Workspaces are kept between decompositions of one size, in
+// the decomposed matrix's context (cuda/cuda_context.h), whose matrices alone it then takes.
 #pragma once
 
 #include <ddb/core/phase_function.h>
@@ -58,6 +59,8 @@ class CudaEigenbasis {
   void uploadWeights(const Eigen::MatrixXd& weights);
   // Throws std::logic_error unless rows = cols = the decomposed size.
   void requireDecomposedSize(long rows, long cols, const char* function) const;
+  // Throws InvalidArgument unless x is in the decomposed matrix's context.
+  void requireDecomposedContext(const CudaMatrix& x, const char* function) const;
   // out = V [F ∘ (Vᴴ in V)] Vᴴ, projected, where weigh() sets Â ← F ∘ Â on the device.
   template <class Weigh>
   void transform(const CudaMatrix& in, CudaMatrix& out, const Weigh& weigh, const char* function);

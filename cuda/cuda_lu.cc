@@ -1,7 +1,10 @@
-// CudaLu (cuda/cuda_lu.h): cuSOLVER's zgetrf and zgetrs with kept workspaces.
+// CudaLu (cuda/cuda_lu.h): cuSOLVER's zgetrf and zgetrs with kept workspaces, in the factored
+// matrix's context (cuda/cuda_context.h).
 #include <cuda_runtime.h>
+#include <ddb/core/errors.h>
 #include <ddb/cuda/cuda_lu.h>
 #include <ddb/cuda/detail/cuda_check.h>
+#include <ddb/cuda/detail/cuda_context_state.h>
 #include <ddb/cuda/detail/cuda_libraries.h>
 
 #include <string>
@@ -20,7 +23,7 @@ struct CudaLu::Workspace {
     cudaFree(scratch);
   }
   // Sized for n×n factors (a new size frees the old buffers first).
-  void reserve(CudaMatrix& a) {
+  void reserve(CudaContext::State& state, CudaMatrix& a) {
     if (a.rows() == n) return;
     cudaFree(pivots);
     cudaFree(info);
@@ -31,7 +34,7 @@ struct CudaLu::Workspace {
     n = -1;
     const int rows = static_cast<int>(a.rows());
     int length = 0;
-    checkCusolver(cusolverDnZgetrf_bufferSize(cusolverHandle(), rows, rows,
+    checkCusolver(cusolverDnZgetrf_bufferSize(state.cusolver, rows, rows,
                                               reinterpret_cast<cuDoubleComplex*>(a.deviceData()),
                                               rows, &length),
                   "cusolverDnZgetrf_bufferSize");
@@ -49,15 +52,15 @@ CudaLu::CudaLu(CudaLu&&) noexcept = default;
 CudaLu& CudaLu::operator=(CudaLu&&) noexcept = default;
 
 bool CudaLu::factor(CudaMatrix& a) {
-  workspace_->reserve(a);
+  CudaContext::State& state = stateOf(a);
+  workspace_->reserve(state, a);
   const int n = static_cast<int>(a.rows());
   checkCusolver(
-      cusolverDnZgetrf(cusolverHandle(), n, n, reinterpret_cast<cuDoubleComplex*>(a.deviceData()),
-                       n, workspace_->scratch, workspace_->pivots, workspace_->info),
+      cusolverDnZgetrf(state.cusolver, n, n, reinterpret_cast<cuDoubleComplex*>(a.deviceData()), n,
+                       workspace_->scratch, workspace_->pivots, workspace_->info),
       "cusolverDnZgetrf");
   int info = 0;
-  checkCuda(cudaMemcpy(&info, workspace_->info, sizeof(int), cudaMemcpyDeviceToHost),
-            "cudaMemcpy (to the host)");
+  copyToHost(state, &info, workspace_->info, sizeof(int));
   if (info < 0) {
     throw CudaError("cusolverDnZgetrf rejected its argument " + std::to_string(-info));
   }
@@ -65,9 +68,13 @@ bool CudaLu::factor(CudaMatrix& a) {
 }
 
 void CudaLu::solve(const CudaMatrix& factored, CudaMatrix& b) {
+  if (b.size() > 0 && b.context() != factored.context()) {
+    throwInvalid("b", "a matrix of another CudaContext",
+                 "must be in the factored matrix's context (cuda/cuda_context.h)");
+  }
   const int n = static_cast<int>(factored.rows());
   checkCusolver(
-      cusolverDnZgetrs(cusolverHandle(), CUBLAS_OP_N, n, static_cast<int>(b.cols()),
+      cusolverDnZgetrs(stateOf(factored).cusolver, CUBLAS_OP_N, n, static_cast<int>(b.cols()),
                        reinterpret_cast<const cuDoubleComplex*>(factored.deviceData()), n,
                        workspace_->pivots, reinterpret_cast<cuDoubleComplex*>(b.deviceData()), n,
                        workspace_->info),

@@ -1,9 +1,10 @@
-// CudaPoissonSolver (cuda/cuda_poisson_solver.h).
+// CudaPoissonSolver (cuda/cuda_poisson_solver.h), in its context (cuda/cuda_context.h).
 #include <cuda_runtime.h>
 #include <ddb/core/errors.h>
 #include <ddb/cuda/cuda_backend.h>
 #include <ddb/cuda/cuda_poisson_solver.h>
 #include <ddb/cuda/detail/cuda_check.h>
+#include <ddb/cuda/detail/cuda_context_state.h>
 #include <ddb/cuda/detail/poisson_kernels.h>
 #include <ddb/cuda/detail/sheared_factors.h>
 #include <ddb/cuda/detail/skewed_diagonals.h>
@@ -25,20 +26,20 @@ struct CudaPoissonSolver::Device {
   }
 };
 
-CudaPoissonSolver::CudaPoissonSolver(long n, double kappa_squared)
+CudaPoissonSolver::CudaPoissonSolver(long n, double kappa_squared,
+                                     std::shared_ptr<CudaContext> context)
     : device_(std::make_unique<Device>()) {
   if (n < 2) throwInvalid("N", std::to_string(n), "must be >= 2");
   HoppeYauLaplacian::requireShift(kappa_squared);
   Device& d = *device_;
   d.n = n;
-  d.sheared = CudaMatrix(skewed::width(n), n);
+  d.sheared = CudaMatrix(skewed::width(n), n, std::move(context));
   std::vector<double> lower, inverse_pivot;
   skewed::shearedFactors(n, kappa_squared, lower, inverse_pivot);
   const std::size_t entries = lower.size();
   for (auto [host, device] : {std::pair{&lower, &d.lower}, {&inverse_pivot, &d.inverse_pivot}}) {
     checkCuda(cudaMalloc(device, sizeof(double) * entries), "cudaMalloc");
-    checkCuda(cudaMemcpy(*device, host->data(), sizeof(double) * entries, cudaMemcpyHostToDevice),
-              "cudaMemcpy (to the device)");
+    copyToDevice(d.sheared.context()->state(), *device, host->data(), sizeof(double) * entries);
   }
 }
 
@@ -47,6 +48,9 @@ CudaPoissonSolver::CudaPoissonSolver(CudaPoissonSolver&&) noexcept = default;
 CudaPoissonSolver& CudaPoissonSolver::operator=(CudaPoissonSolver&&) noexcept = default;
 
 long CudaPoissonSolver::size() const { return device_->n; }
+const std::shared_ptr<CudaContext>& CudaPoissonSolver::context() const {
+  return device_->sheared.context();
+}
 
 void CudaPoissonSolver::solve(const CudaMatrix& W, CudaMatrix& out) {
   using B = MatrixBackend<CudaMatrix>;
@@ -56,6 +60,11 @@ void CudaPoissonSolver::solve(const CudaMatrix& W, CudaMatrix& out) {
         "matrix", std::to_string(W.rows()) + "x" + std::to_string(W.cols()),
         "must be " + std::to_string(d.n) + "x" + std::to_string(d.n) + " for this Poisson solver");
   }
+  if (W.context() != d.sheared.context()) {
+    throwInvalid("W", "a matrix of another CudaContext",
+                 "must be in the Poisson solver's context (cuda/cuda_context.h)");
+  }
+  CudaContext::State& state = d.sheared.context()->state();
   // The means as parts divided by N (tr/N rounded once in each part).
   const auto meanOf = [&](const CudaMatrix& x) {
     const std::complex<double> trace = B::trace(x);
@@ -63,11 +72,12 @@ void CudaPoissonSolver::solve(const CudaMatrix& W, CudaMatrix& out) {
   };
   const std::complex<double> mean = meanOf(W);
   auto* sheared = reinterpret_cast<double*>(d.sheared.deviceData());
-  cuda_kernels::toSkewed(d.n, reinterpret_cast<const double*>(W.deviceData()), mean.real(),
+  cuda_kernels::toSkewed(state, d.n, reinterpret_cast<const double*>(W.deviceData()), mean.real(),
                          mean.imag(), sheared);
-  cuda_kernels::sweepDiagonals(d.n, sheared, d.lower, d.inverse_pivot);
-  if (!B::sameShape(out, W)) out = CudaMatrix(d.n, d.n);
-  cuda_kernels::fromSkewed(d.n, sheared, reinterpret_cast<double*>(out.deviceData()));
+  cuda_kernels::sweepDiagonals(state, d.n, sheared, d.lower, d.inverse_pivot);
+  if (!B::sameShape(out, W) || out.context() != W.context())
+    out = CudaMatrix(d.n, d.n, W.context());
+  cuda_kernels::fromSkewed(state, d.n, sheared, reinterpret_cast<double*>(out.deviceData()));
   B::addToDiagonal(out, -meanOf(out));
 }
 

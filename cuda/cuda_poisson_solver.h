@@ -15,16 +15,21 @@ namespace ddb {
 class CudaPoissonSolver {
  public:
   /// For N×N matrices, N >= 2 (InvalidArgument naming N otherwise); the operator Δ_N − κ²
-  /// (κ² = 0: the Laplacian; HoppeYauLaplacian).
-  explicit CudaPoissonSolver(long n, double kappa_squared = 0.0);
+  /// (κ² = 0: the Laplacian; HoppeYauLaplacian); its factors and workspace in `context` (this
+  /// thread's when none is given), whose matrices alone it solves for.
+  explicit CudaPoissonSolver(long n, double kappa_squared = 0.0,
+                             std::shared_ptr<CudaContext> context = nullptr);
   ~CudaPoissonSolver();
   CudaPoissonSolver(CudaPoissonSolver&&) noexcept;
   CudaPoissonSolver& operator=(CudaPoissonSolver&&) noexcept;
 
-  /// out = (Δ − κ²)⁻¹(W − tr(W)/N · I); out may be W. InvalidArgument if W is not N×N.
+  /// out = (Δ − κ²)⁻¹(W − tr(W)/N · I); out may be W. InvalidArgument if W is not N×N or not
+  /// in the solver's context.
   void solve(const CudaMatrix& W, CudaMatrix& out);
 
   long size() const;
+  /// The context its factors are in.
+  const std::shared_ptr<CudaContext>& context() const;
 
  private:
   struct Device;

@@ -17,18 +17,29 @@ namespace ddb {
 /// SU(N) with its states in one GPU's memory.
 using CudaSUN = SUNOn<CudaMatrix>;
 
-/// The fluid at resolution n with k♯ = α·Id, its Poisson factors on the device.
-inline std::shared_ptr<const LiePoissonSystem<CudaSUN>> makeCudaZeitlinFluid(long n, double alpha) {
-  return makeZeitlinFluidOn<CudaMatrix>(CudaPoissonSolver(n), n, alpha);
+/// The fluid at resolution n with k♯ = α·Id, its Poisson factors on the device in `context`
+/// (cuda/cuda_context.h), whose states it takes.
+inline std::shared_ptr<const LiePoissonSystem<CudaSUN>> makeCudaZeitlinFluid(
+    long n, double alpha, std::shared_ptr<CudaContext> context) {
+  return makeZeitlinFluidOn<CudaMatrix>(CudaPoissonSolver(n, 0.0, std::move(context)), n, alpha);
 }
-
+/// ... in this thread's context (CudaContext::ofThisThread()).
+inline std::shared_ptr<const LiePoissonSystem<CudaSUN>> makeCudaZeitlinFluid(long n, double alpha) {
+  return makeCudaZeitlinFluid(n, alpha, nullptr);
+}
 /// ... on a rotating sphere and/or quasi-geostrophic (ZeitlinPhysics; InvalidArgument naming the
 /// parameter): states are absolute vorticities.
 inline std::shared_ptr<const LiePoissonSystem<CudaSUN>> makeCudaZeitlinFluid(
-    long n, double alpha, const ZeitlinPhysics& physics) {
+    long n, double alpha, const ZeitlinPhysics& physics, std::shared_ptr<CudaContext> context) {
   physics.validate();
-  return makeZeitlinFluidOn<CudaMatrix>(CudaPoissonSolver(n, physics.kappaSquared()), n, alpha,
-                                        toDevice(zeitlinPlanetaryVorticity(n, physics.rotation)));
+  CudaPoissonSolver poisson(n, physics.kappaSquared(), std::move(context));
+  CudaMatrix planetary =
+      toDevice(zeitlinPlanetaryVorticity(n, physics.rotation), poisson.context());
+  return makeZeitlinFluidOn<CudaMatrix>(std::move(poisson), n, alpha, std::move(planetary));
+}
+inline std::shared_ptr<const LiePoissonSystem<CudaSUN>> makeCudaZeitlinFluid(
+    long n, double alpha, const ZeitlinPhysics& physics) {
+  return makeCudaZeitlinFluid(n, alpha, physics, nullptr);
 }
 
 }  // namespace ddb

@@ -4,6 +4,7 @@
 // (docs/design/matrix-backend.md, "Element-wise operations"). Reductions add in a fixed tree,
 // so that a run repeats to the bit on one device (kill and resume: docs/reference/guarantees.md).
 #include <ddb/cuda/detail/cuda_check.h>
+#include <ddb/cuda/detail/cuda_context_state.h>
 #include <ddb/cuda/detail/cuda_kernels.h>
 #include <ddb/cuda/detail/poisson_kernels.h>
 #include <ddb/cuda/detail/skewed_diagonals.h>
@@ -33,9 +34,9 @@ __global__ void forEach(long count, F f) {
 }
 
 template <class F>
-void launch(long count, F f) {
+void launch(CudaContext::State& ctx, long count, F f) {
   if (count <= 0) return;
-  forEach<<<blocksFor(count), kThreads>>>(count, f);
+  forEach<<<blocksFor(count), kThreads, 0, ctx.stream>>>(count, f);
   checkCuda(cudaGetLastError(), "an element-wise kernel");
 }
 
@@ -86,26 +87,18 @@ __global__ void reduceFinal(const double* partials, int count, Combine combine, 
   if (threadIdx.x == 0) *result = shared[0];
 }
 
-// The device's scratch for the reductions: kReductionBlocks partials and the result.
-double* reductionScratch() {
-  thread_local double* scratch = nullptr;
-  if (scratch == nullptr) {
-    checkCuda(cudaMalloc(&scratch, sizeof(double) * (kReductionBlocks + 1)), "cudaMalloc");
-  }
-  return scratch;
-}
-
 template <class Term, class Combine>
-double reduce(long count, Term term, Combine combine, double identity) {
-  double* scratch = reductionScratch();
-  reducePartials<<<kReductionBlocks, kThreads>>>(count, term, combine, identity, scratch);
+double reduce(CudaContext::State& ctx, long count, Term term, Combine combine, double identity) {
+  // The context's scratch: kReductionBlocks partials and the result.
+  double* scratch = ctx.reduction.reserve<double>(kReductionBlocks + 1);
+  reducePartials<<<kReductionBlocks, kThreads, 0, ctx.stream>>>(count, term, combine, identity,
+                                                                scratch);
   checkCuda(cudaGetLastError(), "a reduction");
-  reduceFinal<<<1, kThreads>>>(scratch, kReductionBlocks, combine, identity,
-                               scratch + kReductionBlocks);
+  reduceFinal<<<1, kThreads, 0, ctx.stream>>>(scratch, kReductionBlocks, combine, identity,
+                                              scratch + kReductionBlocks);
   checkCuda(cudaGetLastError(), "a reduction");
   double result = 0.0;
-  checkCuda(cudaMemcpy(&result, scratch + kReductionBlocks, sizeof(double), cudaMemcpyDeviceToHost),
-            "cudaMemcpy of a reduction");
+  copyToHost(ctx, &result, scratch + kReductionBlocks, sizeof(double));
   return result;
 }
 
@@ -175,51 +168,54 @@ __global__ void makeSkewHermitianKernel(long n, double2* x) {
 
 }  // namespace
 
-void scale(long count, double a, const double* x, double* out) {
-  launch(count, [=] __device__(long k) { out[k] = a * x[k]; });
+void scale(CudaContext::State& ctx, long count, double a, const double* x, double* out) {
+  launch(ctx, count, [=] __device__(long k) { out[k] = a * x[k]; });
 }
-void divide(long count, double* x, double a) {
-  launch(count, [=] __device__(long k) { x[k] = x[k] / a; });
+void divide(CudaContext::State& ctx, long count, double* x, double a) {
+  launch(ctx, count, [=] __device__(long k) { x[k] = x[k] / a; });
 }
-void axpy(long count, double a, const double* x, double* y) {
-  launch(count, [=] __device__(long k) { y[k] = y[k] + a * x[k]; });
+void axpy(CudaContext::State& ctx, long count, double a, const double* x, double* y) {
+  launch(ctx, count, [=] __device__(long k) { y[k] = y[k] + a * x[k]; });
 }
-void sum(long count, double a, const double* x, double b, const double* y, double* out) {
-  launch(count, [=] __device__(long k) { out[k] = a * x[k] + b * y[k]; });
+void sum(CudaContext::State& ctx, long count, double a, const double* x, double b, const double* y,
+         double* out) {
+  launch(ctx, count, [=] __device__(long k) { out[k] = a * x[k] + b * y[k]; });
 }
-void sum(long count, double a, const double* x, double b, const double* y, double c,
-         const double* z, double* out) {
-  launch(count, [=] __device__(long k) { out[k] = (a * x[k] + b * y[k]) + c * z[k]; });
+void sum(CudaContext::State& ctx, long count, double a, const double* x, double b, const double* y,
+         double c, const double* z, double* out) {
+  launch(ctx, count, [=] __device__(long k) { out[k] = (a * x[k] + b * y[k]) + c * z[k]; });
 }
-void addSum(long count, double a, const double* x, double b, const double* y, double* out) {
-  launch(count, [=] __device__(long k) { out[k] = out[k] + (a * x[k] + b * y[k]); });
+void addSum(CudaContext::State& ctx, long count, double a, const double* x, double b,
+            const double* y, double* out) {
+  launch(ctx, count, [=] __device__(long k) { out[k] = out[k] + (a * x[k] + b * y[k]); });
 }
-void flushSubnormals(long count, double* x) {
-  launch(count, [=] __device__(long k) {
+void flushSubnormals(CudaContext::State& ctx, long count, double* x) {
+  launch(ctx, count, [=] __device__(long k) {
     // Subnormal: 0 < |x| < 2^-1022, the smallest normal double (NaN compares false).
     const double magnitude = fabs(x[k]);
     if (magnitude != 0.0 && magnitude < 2.2250738585072014e-308) x[k] = copysign(0.0, x[k]);
   });
 }
 
-void addAdjoint(long n, long m, double s, const double* x, double* out) {
+void addAdjoint(CudaContext::State& ctx, long n, long m, double s, const double* x, double* out) {
   if (n <= 0 || m <= 0) return;
   const dim3 grid((n + kTile - 1) / kTile, (m + kTile - 1) / kTile), block(kTile, kTileRows);
-  addAdjointKernel<<<grid, block>>>(n, m, s, reinterpret_cast<const double2*>(x),
-                                    reinterpret_cast<double2*>(out));
+  addAdjointKernel<<<grid, block, 0, ctx.stream>>>(n, m, s, reinterpret_cast<const double2*>(x),
+                                                   reinterpret_cast<double2*>(out));
   checkCuda(cudaGetLastError(), "the adjoint kernel");
 }
 
-void makeSkewHermitian(long n, double* x) {
+void makeSkewHermitian(CudaContext::State& ctx, long n, double* x) {
   if (n <= 0) return;
   const long tiles = (n + kTile - 1) / kTile;
   const dim3 grid(tiles, tiles), block(kTile, kTileRows);
-  makeSkewHermitianKernel<<<grid, block>>>(n, reinterpret_cast<double2*>(x));
+  makeSkewHermitianKernel<<<grid, block, 0, ctx.stream>>>(n, reinterpret_cast<double2*>(x));
   checkCuda(cudaGetLastError(), "the skew-Hermitian kernel");
 }
 
-void weighByPhases(long n, const double* phases, double scale, PhaseFunction f, double* x) {
-  launch(n * n, [=] __device__(long k) {
+void weighByPhases(CudaContext::State& ctx, long n, const double* phases, double scale,
+                   PhaseFunction f, double* x) {
+  launch(ctx, n * n, [=] __device__(long k) {
     const long a = k % n, b = k / n;
     double fr, fi;
     phaseFunctionParts(f, scale * (phases[a] - phases[b]), fr, fi);
@@ -229,50 +225,53 @@ void weighByPhases(long n, const double* phases, double scale, PhaseFunction f, 
   });
 }
 
-void weighEntrywise(long count, const double* weights, double* x) {
-  launch(count, [=] __device__(long k) {
+void weighEntrywise(CudaContext::State& ctx, long count, const double* weights, double* x) {
+  launch(ctx, count, [=] __device__(long k) {
     x[2 * k] = x[2 * k] * weights[k];
     x[2 * k + 1] = x[2 * k + 1] * weights[k];
   });
 }
 
-void imaginaryDiagonal(long n, const double* x, double* out) {
-  launch(n, [=] __device__(long i) { out[i] = x[2 * (i + i * n) + 1]; });
+void imaginaryDiagonal(CudaContext::State& ctx, long n, const double* x, double* out) {
+  launch(ctx, n, [=] __device__(long i) { out[i] = x[2 * (i + i * n) + 1]; });
 }
 
-void addToDiagonal(long rows, long count, double* x, double c_real, double c_imag) {
-  launch(count, [=] __device__(long i) {
+void addToDiagonal(CudaContext::State& ctx, long rows, long count, double* x, double c_real,
+                   double c_imag) {
+  launch(ctx, count, [=] __device__(long i) {
     const long at = 2 * (i + i * rows);
     x[at] = x[at] + c_real;
     x[at + 1] = x[at + 1] + c_imag;
   });
 }
 
-void gather(long count, const double* x, const long* indices, double* values) {
-  launch(count, [=] __device__(long s) {
+void gather(CudaContext::State& ctx, long count, const double* x, const long* indices,
+            double* values) {
+  launch(ctx, count, [=] __device__(long s) {
     values[2 * s] = x[2 * indices[s]];
     values[2 * s + 1] = x[2 * indices[s] + 1];
   });
 }
 
-double dot(long count, const double* x, const double* y) {
+double dot(CudaContext::State& ctx, long count, const double* x, const double* y) {
   return reduce(
-      count, [=] __device__(long k) { return x[k] * y[k]; }, Add(), 0.0);
+      ctx, count, [=] __device__(long k) { return x[k] * y[k]; }, Add(), 0.0);
 }
-double squaredDistance(long count, const double* x, const double* y) {
+double squaredDistance(CudaContext::State& ctx, long count, const double* x, const double* y) {
   return reduce(
-      count,
+      ctx, count,
       [=] __device__(long k) {
         const double d = x[k] - y[k];
         return d * d;
       },
       Add(), 0.0);
 }
-void traceOf(long rows, long count, const double* x, double* real, double* imag) {
+void traceOf(CudaContext::State& ctx, long rows, long count, const double* x, double* real,
+             double* imag) {
   *real = reduce(
-      count, [=] __device__(long i) { return x[2 * (i + i * rows)]; }, Add(), 0.0);
+      ctx, count, [=] __device__(long i) { return x[2 * (i + i * rows)]; }, Add(), 0.0);
   *imag = reduce(
-      count, [=] __device__(long i) { return x[2 * (i + i * rows) + 1]; }, Add(), 0.0);
+      ctx, count, [=] __device__(long i) { return x[2 * (i + i * rows) + 1]; }, Add(), 0.0);
 }
 
 namespace {
@@ -291,37 +290,30 @@ __global__ void columnSums(long n, const double2* x, bool exact, double* sums) {
 }
 }  // namespace
 
-double largestColumnSum(long n, long m, const double* x, bool exact) {
+double largestColumnSum(CudaContext::State& ctx, long n, long m, const double* x, bool exact) {
   if (m <= 0) return 0.0;
-  thread_local double* sums = nullptr;
-  thread_local long capacity = 0;
-  if (capacity < m) {
-    cudaFree(sums);  // nothing to do if it fails: the buffer is dropped either way
-    sums = nullptr;
-    capacity = 0;
-    checkCuda(cudaMalloc(&sums, sizeof(double) * m), "cudaMalloc");
-    capacity = m;
-  }
-  columnSums<<<m, kThreads>>>(n, reinterpret_cast<const double2*>(x), exact, sums);
+  double* sums = ctx.column_sums.reserve<double>(static_cast<std::size_t>(m));
+  columnSums<<<m, kThreads, 0, ctx.stream>>>(n, reinterpret_cast<const double2*>(x), exact, sums);
   checkCuda(cudaGetLastError(), "the column sums");
   const double* s = sums;
   return reduce(
-      m, [=] __device__(long j) { return s[j]; }, MaxWithNaN(), 0.0);
+      ctx, m, [=] __device__(long j) { return s[j]; }, MaxWithNaN(), 0.0);
 }
 
-long countNotFinite(long count, const double* x) {
+long countNotFinite(CudaContext::State& ctx, long count, const double* x) {
   return static_cast<long>(reduce(
-      count, [=] __device__(long k) { return isfinite(x[k]) ? 0.0 : 1.0; }, Add(), 0.0));
+      ctx, count, [=] __device__(long k) { return isfinite(x[k]) ? 0.0 : 1.0; }, Add(), 0.0));
 }
-long countNotZero(long count, const double* x) {
+long countNotZero(CudaContext::State& ctx, long count, const double* x) {
   return static_cast<long>(reduce(
-      count, [=] __device__(long k) { return x[k] != 0.0 ? 1.0 : 0.0; }, Add(), 0.0));
+      ctx, count, [=] __device__(long k) { return x[k] != 0.0 ? 1.0 : 0.0; }, Add(), 0.0));
 }
 
 // ---- The Poisson solve's passes (cuda/detail/poisson_kernels.h). ----
 
-void toSkewed(long n, const double* w, double mean_real, double mean_imag, double* skewed) {
-  launch(n * n, [=] __device__(long linear) {
+void toSkewed(CudaContext::State& ctx, long n, const double* w, double mean_real, double mean_imag,
+              double* skewed) {
+  launch(ctx, n * n, [=] __device__(long linear) {
     const long i = linear % n, j = linear / n, at = skewed::indexOf(n, i, j);
     if (i == j) {
       skewed[2 * at] = w[2 * linear] - mean_real;
@@ -341,17 +333,18 @@ __global__ void sweepColumns(long n, double* values, const double* lower,
 }
 }  // namespace
 
-void sweepDiagonals(long n, double* skewed, const double* lower, const double* inverse_pivot) {
+void sweepDiagonals(CudaContext::State& ctx, long n, double* skewed, const double* lower,
+                    const double* inverse_pivot) {
   // Small blocks: 2N − 1 threads in all, spread over as many multiprocessors as they fill.
   constexpr int kSweepThreads = 64;
   const long columns = skewed::width(n);
-  sweepColumns<<<(columns + kSweepThreads - 1) / kSweepThreads, kSweepThreads>>>(n, skewed, lower,
-                                                                                 inverse_pivot);
+  sweepColumns<<<(columns + kSweepThreads - 1) / kSweepThreads, kSweepThreads, 0, ctx.stream>>>(
+      n, skewed, lower, inverse_pivot);
   checkCuda(cudaGetLastError(), "the diagonal sweeps");
 }
 
-void fromSkewed(long n, const double* skewed, double* out) {
-  launch(n * n, [=] __device__(long linear) {
+void fromSkewed(CudaContext::State& ctx, long n, const double* skewed, double* out) {
+  launch(ctx, n * n, [=] __device__(long linear) {
     const long i = linear % n, j = linear / n, at = skewed::indexOf(n, i, j);
     out[2 * linear] = skewed[2 * at];
     out[2 * linear + 1] = skewed[2 * at + 1];

@@ -1,5 +1,5 @@
-// The cuBLAS and cuSOLVER handles of this thread, created on first use on the default stream,
-// and their status checks (cuda/cuda_backend.cc, cuda/cuda_lu.cc).
+// The status checks of cuBLAS and cuSOLVER calls (cuda/cuda_backend.cc, cuda/cuda_lu.cc,
+// cuda/cuda_eigenbasis.cc); their handles are a context's (cuda/detail/cuda_context_state.h).
 #pragma once
 
 #include <cublas_v2.h>
@@ -7,8 +7,6 @@
 
 namespace ddb {
 
-cublasHandle_t cublasHandle();
-cusolverDnHandle_t cusolverHandle();
 void checkCublas(cublasStatus_t status, const char* call);
 void checkCusolver(cusolverStatus_t status, const char* call);
 

@@ -2,13 +2,17 @@
 // complex entries as (re, im) pairs, the sheared layout of cuda/detail/skewed_diagonals.h.
 #pragma once
 
+#include <ddb/cuda/cuda_context.h>
+
 namespace ddb::cuda_kernels {
 
 /// skewed ← W sheared, the complex mean subtracted from the diagonal (W N×N).
-void toSkewed(long n, const double* w, double mean_real, double mean_imag, double* skewed);
+void toSkewed(CudaContext::State& ctx, long n, const double* w, double mean_real, double mean_imag,
+              double* skewed);
 /// Every diagonal's sweep (skewed::sweepColumn), one thread per column of the sheared array.
-void sweepDiagonals(long n, double* skewed, const double* lower, const double* inverse_pivot);
+void sweepDiagonals(CudaContext::State& ctx, long n, double* skewed, const double* lower,
+                    const double* inverse_pivot);
 /// out ← the N×N matrix of the sheared array.
-void fromSkewed(long n, const double* skewed, double* out);
+void fromSkewed(CudaContext::State& ctx, long n, const double* skewed, double* out);
 
 }  // namespace ddb::cuda_kernels

@@ -9,6 +9,7 @@
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 // CudaError's own header, and CudaMatrix's.
+#include <ddb/cuda/cuda_context.h>
 #include <ddb/cuda/cuda_error.h>
 #include <ddb/cuda/cuda_matrix.h>
 // docs/guide/gpu.md, "Run": the damping and forcing for the device's states.
@@ -70,6 +71,12 @@ static_assert(std::is_same_v<ddb::CudaSUN::Algebra<double>, ddb::CudaMatrix>);
       static_cast<Eigen::MatrixXcd (*)(const ddb::CudaMatrix&)>(&ddb::toHost),
       static_cast<void (*)(const ddb::CudaMatrix&, Eigen::MatrixXcd&)>(&ddb::toHost),
       static_cast<void (*)(const Eigen::MatrixXcd&, ddb::CudaMatrix&)>(&ddb::toDevice),
+      static_cast<ddb::CudaMatrix (*)(const Eigen::MatrixXcd&,
+                                      const std::shared_ptr<ddb::CudaContext>&)>(&ddb::toDevice),
+      static_cast<SystemPtr (*)(long, double, std::shared_ptr<ddb::CudaContext>)>(
+          &ddb::makeCudaZeitlinFluid),
+      &ddb::CudaContext::create, &ddb::CudaContext::ofThisThread, &ddb::CudaContext::synchronize,
+      &ddb::CudaMatrix::context,
       static_cast<std::vector<std::unique_ptr<ddb::ExactFlow<ddb::CudaSUN>>> (*)(
           const ddb::ZeitlinHamiltonian&, const ddb::ZeitlinDampingAndForcing&)>(
           &ddb::cudaZeitlinExactFlows),

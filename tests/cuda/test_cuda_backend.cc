@@ -5,10 +5,12 @@
 // kBackendMatrixGroups family on Zeitlin's fluid (within 1e-12 of the dense run after 100 steps,
 // or 10 times the dense run's own motion from a W0 moved by one ulp where the flow amplifies
 // rounding more: GPU reductions and products add in another order) and the spectrum kept over
-// 1000 steps at N = 1024, and the damped and forced fluid. Without a GPU every test but the first
-// is skipped, by ctest's skip, naming why (GTEST_SKIP).
+// 1000 steps at N = 1024, the damped and forced fluid, and the contexts (cuda/cuda_context.h).
+// Without a GPU every test but CudaDevice's and CudaContext's first is skipped, by ctest's skip,
+// naming why (GTEST_SKIP).
 #include <ddb/core/skew_hermitian_eigenbasis.h>
 #include <ddb/cuda/cuda_backend.h>
+#include <ddb/cuda/cuda_context.h>
 #include <ddb/cuda/cuda_device.h>
 #include <ddb/cuda/cuda_poisson_solver.h>
 #include <ddb/cuda/cuda_zeitlin_exact_flows.h>
@@ -29,6 +31,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace ddb {
@@ -473,6 +476,77 @@ TEST(CudaRelaxation, ARunRepeatsToTheBit) {
   };
   const Matrix first = once(), second = once();
   EXPECT_TRUE(sameBits(first, second));
+}
+
+// Contexts (cuda/cuda_context.h): made on a device or refused with the runtime's reason.
+TEST(CudaContext, IsMadeOnADeviceOrSaysWhyNot) {
+  if (const auto why = cudaUnavailable()) {
+    EXPECT_THAT([] { CudaContext::create(); }, ::testing::ThrowsMessage<CudaError>(*why));
+    return;
+  }
+  const auto a = CudaContext::create(), b = CudaContext::create();
+  EXPECT_NE(a, b);
+  EXPECT_EQ(CudaContext::ofThisThread(), CudaContext::ofThisThread());
+  EXPECT_EQ(toDevice(randomMatrix(3, 3, 1), a).context(), a);
+  EXPECT_EQ(toDevice(randomMatrix(3, 3, 1)).context(), CudaContext::ofThisThread());
+  a->synchronize();
+}
+
+// Each context's stream orders its own run: the same run in two contexts of their own and in
+// this thread's takes the same bits, and what a run makes stays in its context.
+TEST(CudaContext, RunsInTwoContextsTakeTheSameBits) {
+  SKIP_WITHOUT_GPU();
+  const Eigen::Index n = 48;
+  const Matrix W0 = randomVorticity(n, 26);
+  const auto runIn = [&](const std::shared_ptr<CudaContext>& context) {
+    const auto fluid = makeCudaZeitlinFluid(n, 0.5, context);
+    auto method = makeMethod<CudaSUN>("sddb-cay", fluid);
+    RelaxOptions options;
+    options.max_steps = 20;
+    options.tolerance = 0.0;
+    const CudaMatrix start = context ? toDevice(W0, context) : toDevice(W0);
+    Relaxation<CudaSUN> run(*method, *fluid, start, zeitlinDefaultStep(W0, 0.5), options);
+    while (run.advance()) {
+    }
+    EXPECT_EQ(run.current().context(), context ? context : CudaContext::ofThisThread());
+    return toHost(run.current());
+  };
+  const Matrix own = runIn(nullptr);
+  EXPECT_TRUE(sameBits(runIn(CudaContext::create()), own));
+  EXPECT_TRUE(sameBits(runIn(CudaContext::create()), own));
+}
+
+// The operands of one operation share a context: two contexts' streams are not ordered with
+// each other, so a mix is refused by name, where it would read entries still being written.
+TEST(CudaContext, OperandsOfTwoContextsAreRefused) {
+  SKIP_WITHOUT_GPU();
+  const Matrix m = randomMatrix(8, 8, 2);
+  const auto a = CudaContext::create(), b = CudaContext::create();
+  const CudaMatrix x = toDevice(m, a);
+  CudaMatrix y = toDevice(m, b), out;
+  const auto refused =
+      ::testing::ThrowsMessage<InvalidArgument>(::testing::HasSubstr("CudaContext"));
+  EXPECT_THAT([&] { Device::axpy(1.0, x, y); }, refused);
+  EXPECT_THAT([&] { Device::innerProduct(x, y); }, refused);
+  EXPECT_THAT([&] { Device::multiply(x, y, out); }, refused);
+  CudaPoissonSolver poisson(8, 0.0, a);
+  EXPECT_THAT([&] { poisson.solve(y, out); }, refused);
+  // An output takes its input's context.
+  Device::scale(2.0, x, y);
+  EXPECT_EQ(y.context(), a);
+  EXPECT_TRUE(sameBits(toHost(y), Matrix(2.0 * m)));
+}
+
+// A matrix keeps its context alive: one made in a thread that has ended is still read, its
+// context's stream and scratch with it (nothing of the backend is the thread's).
+TEST(CudaContext, AMatrixOutlivesTheThreadThatMadeIt) {
+  SKIP_WITHOUT_GPU();
+  const Matrix m = randomMatrix(64, 64, 3);
+  CudaMatrix x;
+  std::thread([&] { x = toDevice(m); }).join();
+  EXPECT_NE(x.context(), CudaContext::ofThisThread());
+  EXPECT_TRUE(sameBits(toHost(x), m));
+  EXPECT_NEAR(Device::frobeniusNorm(x), m.norm(), 1e-12 * m.norm());
 }
 
 // The Casimirs on the device: 1000 steps at N = 1024 keep W's spectrum to 1e-13.
