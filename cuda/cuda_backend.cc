@@ -119,6 +119,7 @@ void B::zeroLike(X& x, const X& like) {
 }
 
 void B::multiply(const X& a, const X& b, X& out) {
+  sharedState(a, b);  // before out is replaced: a mix is refused with out as it was
   if (out.rows() != a.rows() || out.cols() != b.cols() ||
       (out.size() > 0 && out.context() != a.context())) {
     out = CudaMatrix(a.rows(), b.cols(), a.context());

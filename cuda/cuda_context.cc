@@ -37,9 +37,9 @@ CudaContext::State::State() {
   }
 }
 
-// Not checked: a destructor does not throw. What is queued runs before the stream goes
-// (cudaStreamDestroy returns at once and releases the stream once its work is done).
+// Not checked: a destructor does not throw. What is queued finishes before the handles go.
 CudaContext::State::~State() {
+  cudaStreamSynchronize(stream);
   cusolverDnDestroy(cusolver);
   cublasDestroy(cublas);
   cudaStreamDestroy(stream);
@@ -73,10 +73,11 @@ void copyToHost(CudaContext::State& state, void* host, const void* device, std::
 
 void copyToDevice(CudaContext::State& state, void* device, const void* host, std::size_t bytes) {
   if (bytes == 0) return;
-  // From pageable memory the call returns once `host` has been read (CUDA's API
-  // synchronisation rules), so the caller may reuse it.
+  // Waited for: CUDA guarantees that an asynchronous copy from pageable memory has read `host`
+  // on return only for the synchronous cudaMemcpy, and the callers free or reuse it at once.
   checkCuda(cudaMemcpyAsync(device, host, bytes, cudaMemcpyHostToDevice, state.stream),
             "cudaMemcpyAsync (to the device)");
+  checkCuda(cudaStreamSynchronize(state.stream), "cudaStreamSynchronize (to the device)");
 }
 
 }  // namespace ddb

@@ -7,12 +7,14 @@
 #include <ddb/cuda/detail/cuda_context_state.h>
 #include <ddb/cuda/detail/cuda_libraries.h>
 
+#include <memory>
 #include <string>
 
 namespace ddb {
 
 struct CudaLu::Workspace {
   long n = -1;
+  std::shared_ptr<CudaContext> context;  // the factored matrix's
   int* pivots = nullptr;
   int* info = nullptr;
   cuDoubleComplex* scratch = nullptr;
@@ -22,9 +24,10 @@ struct CudaLu::Workspace {
     cudaFree(info);
     cudaFree(scratch);
   }
-  // Sized for n×n factors (a new size frees the old buffers first).
+  // Sized for n×n factors in a's context (a new size or context frees the old buffers first:
+  // cudaFree waits for the device, so no solve of another stream still reads them).
   void reserve(CudaContext::State& state, CudaMatrix& a) {
-    if (a.rows() == n) return;
+    if (a.rows() == n && a.context() == context) return;
     cudaFree(pivots);
     cudaFree(info);
     cudaFree(scratch);
@@ -43,6 +46,7 @@ struct CudaLu::Workspace {
     checkCuda(cudaMalloc(&scratch, sizeof(cuDoubleComplex) * (length > 0 ? length : 1)),
               "cudaMalloc");
     n = a.rows();
+    context = a.context();
   }
 };
 
@@ -68,9 +72,10 @@ bool CudaLu::factor(CudaMatrix& a) {
 }
 
 void CudaLu::solve(const CudaMatrix& factored, CudaMatrix& b) {
-  if (b.size() > 0 && b.context() != factored.context()) {
+  if (factored.context() != workspace_->context ||
+      (b.size() > 0 && b.context() != factored.context())) {
     throwInvalid("b", "a matrix of another CudaContext",
-                 "must be in the factored matrix's context (cuda/cuda_context.h)");
+                 "must be in the context of the matrix factored last (cuda/cuda_context.h)");
   }
   const int n = static_cast<int>(factored.rows());
   checkCusolver(

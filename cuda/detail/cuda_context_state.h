@@ -61,7 +61,7 @@ inline CudaContext::State& stateOf(const CudaMatrix& x) {
 
 /// host ← device's `bytes`, once what is queued in `state` before has run.
 void copyToHost(CudaContext::State& state, void* host, const void* device, std::size_t bytes);
-/// device ← host's `bytes`, in `state`'s order.
+/// device ← host's `bytes`, in `state`'s order; `host` may be reused on return.
 void copyToDevice(CudaContext::State& state, void* device, const void* host, std::size_t bytes);
 
 }  // namespace ddb

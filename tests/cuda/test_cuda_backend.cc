@@ -531,6 +531,11 @@ TEST(CudaContext, OperandsOfTwoContextsAreRefused) {
   EXPECT_THAT([&] { Device::multiply(x, y, out); }, refused);
   CudaPoissonSolver poisson(8, 0.0, a);
   EXPECT_THAT([&] { poisson.solve(y, out); }, refused);
+  // LU keeps its pivots in the context it factored in: a solve in another is refused.
+  CudaLu lu;
+  CudaMatrix factored = toDevice(Matrix(m + 8.0 * Matrix::Identity(8, 8)), a);
+  ASSERT_TRUE(lu.factor(factored));
+  EXPECT_THAT([&] { lu.solve(factored, y); }, refused);
   // An output takes its input's context.
   Device::scale(2.0, x, y);
   EXPECT_EQ(y.context(), a);
