@@ -36,14 +36,12 @@ cuDoubleComplex* complexData(CudaMatrix& x) {
 // ordered with each other, so a matrix of another context is refused (an empty one has none).
 template <class... More>
 State& sharedState(const CudaMatrix& x, const More&... more) {
-  const auto differs = [&](const CudaMatrix& y) {
-    return x.size() > 0 && y.size() > 0 && y.context() != x.context();
+  const auto require = [&](const CudaMatrix& y) {
+    if (x.size() > 0 && y.size() > 0) {
+      requireContext(y, x.context(), "matrix", "the context of the operation's other operands");
+    }
   };
-  if ((differs(more) || ...)) {
-    throwInvalid("matrix", "one of another CudaContext",
-                 "must be in the same context as the operation's other operands "
-                 "(cuda/cuda_context.h)");
-  }
+  (require(more), ...);
   return stateOf(x);
 }
 

@@ -1,6 +1,7 @@
 // CudaContext (cuda/cuda_context.h): its stream, handles and scratch
 // (cuda/detail/cuda_context_state.h), and the transfers in a context's order.
 #include <cuda_runtime.h>
+#include <ddb/core/errors.h>
 #include <ddb/cuda/cuda_context.h>
 #include <ddb/cuda/cuda_device.h>
 #include <ddb/cuda/detail/cuda_check.h>
@@ -62,6 +63,14 @@ const std::shared_ptr<CudaContext>& CudaContext::ofThisThread() {
 
 void CudaContext::synchronize() {
   checkCuda(cudaStreamSynchronize(state_->stream), "cudaStreamSynchronize");
+}
+
+void requireContext(const CudaMatrix& x, const std::shared_ptr<CudaContext>& context,
+                    const std::string& parameter, const std::string& whose) {
+  if (x.context() != context) {
+    throwInvalid(parameter, "a matrix of another CudaContext",
+                 "must be in " + whose + " (cuda/cuda_context.h)");
+  }
 }
 
 void copyToHost(CudaContext::State& state, void* host, const void* device, std::size_t bytes) {

@@ -179,10 +179,8 @@ void CudaEigenbasis::requireDecomposedSize(long rows, long cols, const char* fun
 }
 
 void CudaEigenbasis::requireDecomposedContext(const CudaMatrix& x, const char* function) const {
-  if (x.context() != workspace_->context) {
-    throwInvalid(std::string("CudaEigenbasis::") + function, "a matrix of another CudaContext",
-                 "must be in the decomposed matrix's context (cuda/cuda_context.h)");
-  }
+  requireContext(x, workspace_->context, std::string("CudaEigenbasis::") + function,
+                 "the decomposed matrix's context");
 }
 
 template <class Weigh>

@@ -72,11 +72,9 @@ bool CudaLu::factor(CudaMatrix& a) {
 }
 
 void CudaLu::solve(const CudaMatrix& factored, CudaMatrix& b) {
-  if (factored.context() != workspace_->context ||
-      (b.size() > 0 && b.context() != factored.context())) {
-    throwInvalid("b", "a matrix of another CudaContext",
-                 "must be in the context of the matrix factored last (cuda/cuda_context.h)");
-  }
+  requireContext(factored, workspace_->context, "factored",
+                 "the context of the matrix factored last");
+  if (b.size() > 0) requireContext(b, factored.context(), "b", "the factored matrix's context");
   const int n = static_cast<int>(factored.rows());
   checkCusolver(
       cusolverDnZgetrs(stateOf(factored).cusolver, CUBLAS_OP_N, n, static_cast<int>(b.cols()),

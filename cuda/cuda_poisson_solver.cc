@@ -60,10 +60,7 @@ void CudaPoissonSolver::solve(const CudaMatrix& W, CudaMatrix& out) {
         "matrix", std::to_string(W.rows()) + "x" + std::to_string(W.cols()),
         "must be " + std::to_string(d.n) + "x" + std::to_string(d.n) + " for this Poisson solver");
   }
-  if (W.context() != d.sheared.context()) {
-    throwInvalid("W", "a matrix of another CudaContext",
-                 "must be in the Poisson solver's context (cuda/cuda_context.h)");
-  }
+  requireContext(W, d.sheared.context(), "W", "the Poisson solver's context");
   CudaContext::State& state = d.sheared.context()->state();
   // The means as parts divided by N (tr/N rounded once in each part).
   const auto meanOf = [&](const CudaMatrix& x) {

@@ -13,6 +13,8 @@
 
 #include <complex>
 #include <cstddef>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace ddb {
@@ -58,6 +60,11 @@ struct CudaContext::State {
 inline CudaContext::State& stateOf(const CudaMatrix& x) {
   return (x.context() ? x.context() : CudaContext::ofThisThread())->state();
 }
+
+/// Refuses x (InvalidArgument naming `parameter`) unless it is in `context`, which `whose` names:
+/// the operations of two contexts' streams are not ordered with each other.
+void requireContext(const CudaMatrix& x, const std::shared_ptr<CudaContext>& context,
+                    const std::string& parameter, const std::string& whose);
 
 /// host ← device's `bytes`, once what is queued in `state` before has run.
 void copyToHost(CudaContext::State& state, void* host, const void* device, std::size_t bytes);
