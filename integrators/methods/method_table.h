@@ -403,6 +403,10 @@ using SUN = SUNOn<Eigen::MatrixXcd>;
 template <class X>
 struct DualNumberSUNOn;
 using DualNumberSUN = DualNumberSUNOn<Eigen::MatrixXcd>;
+namespace detail {
+/// SE(3) composed from SO(3)'s functions (groups/semidirect_product.h), named for the macro below.
+using SE3Composed = SemidirectProduct<SO3, DefiningRepresentation<SO3>>;
+}  // namespace detail
 
 }  // namespace ddb
 
@@ -420,3 +424,4 @@ DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SE3);
 DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SON);
 DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SUN);
 DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::DualNumberSUN);
+DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::detail::SE3Composed);
