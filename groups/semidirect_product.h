@@ -352,9 +352,11 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G, Representation>> {
         Vector<T>(halfStep(x) * (vector(y) + actionOfAlgebra<T>(factor(y)) * vector(x) * T(0.5))));
   }
   /// (dcay^{-1}_(ω,v))*(π, γ) = ((dcay^{-1}_ω)*π + v ⋄ γ'/2, γ'), γ' = Aᵀγ: the transpose of
-  /// dcayInv.
+  /// dcayInv. It, cayAdDual and cayTransport are always inlined, as SE3's closed forms are: in
+  /// a method table's unit GCC left them calls, and SE(3) composed's ddb-cay step took 1.2 times
+  /// SE3's (docs/results/benchmarks.md, "A method table's unit and GCC's inlining").
   template <class T>
-  static Dual<T> dcayInvDual(const Algebra<T>& x, const Dual<T>& mu) {
+  EIGEN_ALWAYS_INLINE static Dual<T> dcayInvDual(const Algebra<T>& x, const Dual<T>& mu) {
     const Vector<T> gamma = halfStepTransposed<T>(x, vector(mu));
     return join(FactorDual<T>(G::dcayInvDual(factor(x), factor(mu)) +
                               diamond<T>(vector(x), gamma) * T(0.5)),
@@ -365,7 +367,7 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G, Representation>> {
   /// cay(ω)ᵀγ is applied as γ + A⁻ᵀΩᵀγ (cay(ω) = (I + Ω/2)A⁻¹, and I + Ω/2 − A = Ω), so that
   /// the only rounding of order ulp(γ) is the final sum, as in SO3::cayAdDual.
   template <class T>
-  static Dual<T> cayAdDual(const Algebra<T>& x, const Dual<T>& mu) {
+  EIGEN_ALWAYS_INLINE static Dual<T> cayAdDual(const Algebra<T>& x, const Dual<T>& mu) {
     const FactorAlgebra<T> w = factor(x);
     const Vector<T> gamma = vector(mu);
     if constexpr (kOwnMatrices && kVectorForms) {  // r = A⁻¹v = (cay(ω)v + v)/2
@@ -388,7 +390,8 @@ struct SemidirectProduct : LieGroupBase<SemidirectProduct<G, Representation>> {
   }
   /// Ad*_{cay(a) cay(b)} μ = Ad*_{cay(b)} Ad*_{cay(a)} μ, the DDB update (paper, eq. (4.12)).
   template <class T>
-  static Dual<T> cayTransport(const Algebra<T>& a, const Algebra<T>& b, const Dual<T>& mu) {
+  EIGEN_ALWAYS_INLINE static Dual<T> cayTransport(const Algebra<T>& a, const Algebra<T>& b,
+                                                  const Dual<T>& mu) {
     return cayAdDual<T>(b, cayAdDual<T>(a, mu));
   }
   /// The matrix of (dcay^{-1}_x)*: [[D_G, Δ_v Aᵀ/2], [0, Aᵀ]], D_G G's matrix and Δ_v the matrix
