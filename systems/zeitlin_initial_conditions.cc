@@ -1,5 +1,7 @@
 // The fluid's seeded initial vorticities (systems/zeitlin_initial_conditions.h), compiled once
 // into the library.
+#include <ddb/systems/hoppe_yau_laplacian.h>
+#include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 
 #include <Eigen/QR>
@@ -53,6 +55,22 @@ Eigen::MatrixXcd zonalVorticity(Eigen::Index n, std::uint64_t seed) {
   Eigen::VectorXcd d(n);
   for (Eigen::Index j = 0; j < n; ++j) d(j) = std::complex<double>(0.0, source.next());
   return detail::normalised(d.asDiagonal());
+}
+
+Eigen::MatrixXcd lowModeVorticity(Eigen::Index n, Eigen::Index l_max, std::uint64_t seed) {
+  detail::requireResolution(n);
+  if (l_max < 1 || l_max > n - 1) {
+    throwInvalid("l_max", std::to_string(l_max),
+                 "must be in [1, N - 1 = " + std::to_string(n - 1) + "]");
+  }
+  detail::NormalSource source(seed);
+  Eigen::VectorXd omega = Eigen::VectorXd::Zero(n * n);
+  for (Eigen::Index l = 1; l <= l_max; ++l) {
+    for (Eigen::Index m = -l; m <= l; ++m) {
+      omega(SphericalHarmonicBasis::index(l, m)) = source.next() / double(l);
+    }
+  }
+  return detail::normalised(SphericalHarmonicBasis(HoppeYauLaplacian(n)).matrix(omega));
 }
 
 }  // namespace ddb

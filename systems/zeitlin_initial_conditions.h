@@ -6,7 +6,9 @@
 //           matrix with the phases of R's diagonal removed: Haar-distributed) — a point of
 //           the isospectral orbit of the l = 1 element X₃; its energy maximum E/Z = ½ is
 //           reached at the pure l = 1 states of that orbit (X₃'s rotations);
-//   zonal:  i diag(d), d normal with its mean removed: a steady state ([P, W] = 0).
+//   zonal:  i diag(d), d normal with its mean removed: a steady state ([P, W] = 0);
+//   low modes (lowModeVorticity): Σ ω_lm T_lm over 1 ≤ l ≤ L with ω_lm normal of deviation 1/l, a
+//           smooth large-scale field (mhd-relax's magnetic potential Θ₀; examples/python/mhd.py).
 // std::mt19937_64 and a Box–Muller normal written here, so that the numbers do not depend
 // on the standard library's distribution implementation.
 #pragma once
@@ -74,5 +76,10 @@ Eigen::MatrixXcd randomUnitary(Eigen::Index n, std::uint64_t seed);
 Eigen::MatrixXcd l1Vorticity(Eigen::Index n, std::uint64_t seed);
 
 Eigen::MatrixXcd zonalVorticity(Eigen::Index n, std::uint64_t seed);
+
+/// Σ ω_lm T_lm over 1 ≤ l ≤ l_max (the basis of systems/spherical_harmonic_basis.h), ω_lm
+/// normal with deviation 1/l, scaled as the others. InvalidArgument naming N, or l_max outside
+/// [1, N − 1].
+Eigen::MatrixXcd lowModeVorticity(Eigen::Index n, Eigen::Index l_max, std::uint64_t seed);
 
 }  // namespace ddb

@@ -124,8 +124,9 @@ void rejectIfGiven(const CLI::App& cli, const std::string& flag, const std::stri
   usageError(flag, value, "does not apply to " + context);
 }
 
-void addSeedOption(CLI::App& cli, std::uint64_t& seed, const std::string& description) {
-  cli.add_option("--seed", seed, description)
+void addSeedOption(CLI::App& cli, std::uint64_t& seed, const std::string& description,
+                   const std::string& flag) {
+  cli.add_option(flag, seed, description)
       ->capture_default_str()
       ->check(fitsIn<std::uint64_t>())
       ->check(

@@ -70,9 +70,10 @@ CLI::Validator fitsIn() {
       "");
 }
 
-/// Adds `--seed` (default 1) with `description`; a negative value is refused, which
-/// CLI11 would otherwise wrap around to 2^64 - 1 without a word.
-void addSeedOption(CLI::App& cli, std::uint64_t& seed, const std::string& description);
+/// Adds `flag` (a seed, default `seed`'s value) with `description`; a negative value is refused,
+/// which CLI11 would otherwise wrap around to 2^64 - 1 without a word.
+void addSeedOption(CLI::App& cli, std::uint64_t& seed, const std::string& description,
+                   const std::string& flag = "--seed");
 
 /// Adds `--out` (the run folder: one writer, another run's files refused) and `--overwrite`
 /// (docs/reference/command-lines-and-files.md, "Run folders: one writer, `--overwrite`").

@@ -1,5 +1,8 @@
 #include "common/hdf5.h"
 
+#include <array>
+#include <ctime>
+
 #include "common/exit_status.h"
 
 namespace ddb::app::hdf5 {
@@ -86,6 +89,49 @@ std::string readStringAttribute(hid_t on, const char* name, const std::filesyste
   std::string value = text != nullptr ? text : "";
   H5free_memory(text);
   return value;
+}
+
+Handle createDataset(hid_t on, const char* name, hid_t type, const RowShape& row,
+                     const std::filesystem::path& file) {
+  constexpr hsize_t kNumberChunk = 1024;
+  const std::string what = std::string("create the dataset ") + name;
+  std::array<hsize_t, 3> dims{0, row.dims[0], row.dims[1]};
+  std::array<hsize_t, 3> max{H5S_UNLIMITED, row.dims[0], row.dims[1]};
+  std::array<hsize_t, 3> chunk{row.rank == 0 ? kNumberChunk : 1, row.dims[0], row.dims[1]};
+  const Handle space(H5Screate_simple(row.rank + 1, dims.data(), max.data()), file, what);
+  const Handle properties(H5Pcreate(H5P_DATASET_CREATE), file, what);
+  checkStatus(H5Pset_chunk(properties.get(), row.rank + 1, chunk.data()), file, what);
+  return Handle(H5Dcreate2(on, name, type, space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT),
+                file, what);
+}
+
+void resize(hid_t dataset, const RowShape& row, hsize_t rows, const std::filesystem::path& file) {
+  std::array<hsize_t, 3> dims{rows, row.dims[0], row.dims[1]};
+  checkStatus(H5Dset_extent(dataset, dims.data()), file, "resize a dataset");
+}
+
+void appendRow(hid_t dataset, hid_t type, const RowShape& row, hsize_t at, const void* data,
+               const std::filesystem::path& file) {
+  resize(dataset, row, at + 1, file);
+  const Handle file_space(H5Dget_space(dataset), file, "append a frame");
+  std::array<hsize_t, 3> start{at, 0, 0};
+  std::array<hsize_t, 3> count{1, row.dims[0], row.dims[1]};
+  checkStatus(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr,
+                                  count.data(), nullptr),
+              file, "append a frame");
+  const Handle memory_space(H5Screate_simple(row.rank + 1, count.data(), nullptr), file,
+                            "append a frame");
+  checkStatus(H5Dwrite(dataset, type, memory_space.get(), file_space.get(), H5P_DEFAULT, data),
+              file, "append a frame");
+}
+
+std::string utcNow() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
 }
 
 }  // namespace ddb::app::hdf5

@@ -7,6 +7,7 @@
 
 #include <hdf5.h>
 
+#include <array>
 #include <filesystem>
 #include <string>
 
@@ -77,5 +78,28 @@ void readAttribute(hid_t on, const char* name, hid_t type, void* value,
 
 /// Reads the scalar string attribute `name` of `on` (as writeAttribute writes it).
 std::string readStringAttribute(hid_t on, const char* name, const std::filesystem::path& file);
+
+/// The shape of one frame's row of an extendable per-frame dataset: rank 0 (a number), 1 (a
+/// vector of dims[0]) or 2 (a dims[0] × dims[1] matrix). A frame is one row of each dataset.
+struct RowShape {
+  int rank = 0;
+  std::array<hsize_t, 2> dims{};
+};
+
+/// Creates in `on` (a file or group) the extendable dataset `name` of `type` with no rows,
+/// chunked by rows (a number's dataset by 1024 rows: a chunk per frame would cost a chunk index
+/// entry per number).
+Handle createDataset(hid_t on, const char* name, hid_t type, const RowShape& row,
+                     const std::filesystem::path& file);
+
+/// Sets the row count of `dataset` to `rows`.
+void resize(hid_t dataset, const RowShape& row, hsize_t rows, const std::filesystem::path& file);
+
+/// Writes `data` (of `type` in memory) as row `at` of `dataset`, which has `at` rows.
+void appendRow(hid_t dataset, hid_t type, const RowShape& row, hsize_t at, const void* data,
+               const std::filesystem::path& file);
+
+/// The current time as ISO 8601 UTC ("2026-11-24T15:40:00Z"), for the files' `created`.
+std::string utcNow();
 
 }  // namespace ddb::app::hdf5

@@ -4,7 +4,9 @@
 #include <ddb/groups/sun.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 
+#include "common/atomic_file.h"
 #include "common/cli.h"
+#include "common/csv_row.h"
 #include "common/number_csv.h"
 
 namespace ddb::app {
@@ -73,6 +75,17 @@ InitialVorticity initialVorticity(const CLI::App& cli, const VorticityOptions& o
   if (o.init == "random") return {randomVorticity(o.n, o.seed), o.init};
   if (o.init == "l1") return {l1Vorticity(o.n, o.seed), o.init};
   return {zonalVorticity(o.n, o.seed), o.init};
+}
+
+void writeMatrixCsv(const std::filesystem::path& path, const Eigen::MatrixXcd& W) {
+  AtomicFile file(path);
+  CsvRow row(static_cast<std::size_t>(2 * W.cols()));
+  for (Eigen::Index j = 0; j < W.rows(); ++j) {
+    for (Eigen::Index k = 0; k < W.cols(); ++k) row.put(W(j, k).real());
+    for (Eigen::Index k = 0; k < W.cols(); ++k) row.put(W(j, k).imag());
+    row.writeTo(file);
+  }
+  file.commit();
 }
 
 }  // namespace ddb::app

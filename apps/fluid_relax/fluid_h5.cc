@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
-#include <ctime>
 #include <stdexcept>
 #include <system_error>
 #include <tuple>
@@ -16,19 +15,13 @@ namespace ddb::fluid {
 
 namespace {
 
+using app::hdf5::appendRow;
 using app::hdf5::check;
 using app::hdf5::checkStatus;
+using app::hdf5::createDataset;
 using app::hdf5::Handle;
-
-// Rows of the one-number-per-frame datasets in one chunk: a chunk per frame would cost a
-// chunk index entry per number.
-constexpr hsize_t kScalarChunk = 1024;
-
-/// The shape of one frame's row of a dataset: rank 0 (a number), 1 (N²) or 2 (N×N).
-struct RowShape {
-  int rank = 0;
-  std::array<hsize_t, 2> dims{};
-};
+using app::hdf5::resize;
+using app::hdf5::RowShape;
 
 /// The row shapes of fluid.hdf5's datasets at resolution N.
 struct Shapes {
@@ -43,21 +36,6 @@ struct Shapes {
 /// The field diagnostics' datasets of one number per frame.
 constexpr std::array<const char*, 3> kFieldNumbers{"gamma", "enstrophy_steady",
                                                    "enstrophy_remainder"};
-
-/// Creates the extendable dataset `name` of `type` with no rows.
-Handle createDataset(hid_t file, const char* name, hid_t type, const RowShape& row,
-                     const std::filesystem::path& path) {
-  const std::string what = std::string("create the dataset ") + name;
-  std::array<hsize_t, 3> dims{0, row.dims[0], row.dims[1]};
-  std::array<hsize_t, 3> max{H5S_UNLIMITED, row.dims[0], row.dims[1]};
-  std::array<hsize_t, 3> chunk{row.rank == 0 ? kScalarChunk : 1, row.dims[0], row.dims[1]};
-  const Handle space(H5Screate_simple(row.rank + 1, dims.data(), max.data()), path, what);
-  const Handle properties(H5Pcreate(H5P_DATASET_CREATE), path, what);
-  checkStatus(H5Pset_chunk(properties.get(), row.rank + 1, chunk.data()), path, what);
-  return Handle(
-      H5Dcreate2(file, name, type, space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT), path,
-      what);
-}
 
 /// Opens the dataset `name` and checks that its rows have the shape `row`; returns it and
 /// its row count.
@@ -85,28 +63,6 @@ std::pair<Handle, hsize_t> openDataset(hid_t file, const char* name, const RowSh
   return {std::move(dataset), dims[0]};
 }
 
-/// Sets the row count of `dataset` to `rows`.
-void resize(hid_t dataset, const RowShape& row, hsize_t rows, const std::filesystem::path& path) {
-  std::array<hsize_t, 3> dims{rows, row.dims[0], row.dims[1]};
-  checkStatus(H5Dset_extent(dataset, dims.data()), path, "resize a dataset");
-}
-
-/// Writes `data` (of `type` in memory) as row `at` of `dataset`, which has `at` rows.
-void appendRow(hid_t dataset, hid_t type, const RowShape& row, hsize_t at, const void* data,
-               const std::filesystem::path& path) {
-  resize(dataset, row, at + 1, path);
-  const Handle file_space(H5Dget_space(dataset), path, "append a frame");
-  std::array<hsize_t, 3> start{at, 0, 0};
-  std::array<hsize_t, 3> count{1, row.dims[0], row.dims[1]};
-  checkStatus(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr,
-                                  count.data(), nullptr),
-              path, "append a frame");
-  const Handle memory_space(H5Screate_simple(row.rank + 1, count.data(), nullptr), path,
-                            "append a frame");
-  checkStatus(H5Dwrite(dataset, type, memory_space.get(), file_space.get(), H5P_DEFAULT, data),
-              path, "append a frame");
-}
-
 double readDoubleAttribute(hid_t file, const char* name, const std::filesystem::path& path) {
   double value = 0.0;
   app::hdf5::readAttribute(file, name, H5T_NATIVE_DOUBLE, &value, path);
@@ -118,15 +74,6 @@ double readDoubleAttribute(hid_t file, const char* name, const std::filesystem::
 FluidH5::FluidH5(std::filesystem::path path, long n, double hbar)
     : path_(std::move(path)), n_(n), hbar_(hbar), complex_(app::hdf5::complexType(path_)) {
   row_major_.resize(n, n);
-}
-
-std::string FluidH5::utcNow() {
-  const std::time_t now = std::time(nullptr);
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
 }
 
 FluidH5 FluidH5::create(const std::filesystem::path& path, const FluidH5Attributes& attributes) {

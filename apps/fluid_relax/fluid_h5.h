@@ -54,9 +54,6 @@ struct FluidH5Frame {
 
 class FluidH5 {
  public:
-  /// The current time as ISO 8601 UTC ("2026-11-24T15:40:00Z"), for `created`.
-  static std::string utcNow();
-
   /// Creates `path` (replacing a file of that name) with no frames. Throws IoError
   /// naming `path`.
   static FluidH5 create(const std::filesystem::path& path, const FluidH5Attributes& attributes);

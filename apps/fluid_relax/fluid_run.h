@@ -57,6 +57,7 @@
 #include "common/cli.h"
 #include "common/energy_rises.h"
 #include "common/exit_status.h"
+#include "common/initial_vorticity.h"
 #include "common/json.h"
 #include "common/logging.h"
 #include "common/progress.h"
@@ -286,7 +287,7 @@ int runFluidRelaxation(Placement& where, const Options& o, const Settings& s,
     // The relative vorticity W = Q − F, as --init-file reads it.
     if (result.ok()) {
       const Matrix W_final = result.final - (Q0 - s.W0);
-      writeMatrixCsv(s.out / "W_final.csv", W_final);
+      app::writeMatrixCsv(s.out / "W_final.csv", W_final);
       writeOmegaCsv(s.out / "omega_initial.csv", files->basis(), s.W0);
       writeOmegaCsv(s.out / "omega_final.csv", files->basis(), W_final);
     }

@@ -60,9 +60,9 @@ void addOptions(CLI::App& cli, Options& o, Eigen::Index max_n) {
   cli.add_option("--forcing-rate", o.forcing_rate,
                  "the forcing's mean energy injection rate epsilon >= 0 (energy per unit time)")
       ->capture_default_str();
-  cli.add_option("--forcing-seed", o.forcing_seed,
-                 "seed of the forcing's random stream (a checkpoint keeps its position)")
-      ->capture_default_str();
+  app::addSeedOption(cli, o.forcing_seed,
+                     "seed of the forcing's random stream (a checkpoint keeps its position)",
+                     "--forcing-seed");
   cli.add_option("--forcing-file", o.forcing_file,
                  "a fixed forcing Phi, dW/dt gains Phi: a CSV as --init-file's (N rows x 2N "
                  "columns, traceless skew-Hermitian), Strang-split as --viscosity");

@@ -139,19 +139,8 @@ FluidH5Attributes h5Attributes(const Options& o, const Settings& s, double hbar)
     a.seed = o.seed;
   }
   a.version = app::projectVersion();
-  a.created = FluidH5::utcNow();
+  a.created = app::hdf5::utcNow();
   return a;
-}
-
-void writeMatrixCsv(const std::filesystem::path& path, const Eigen::MatrixXcd& W) {
-  app::AtomicFile file(path);
-  app::CsvRow row(static_cast<std::size_t>(2 * W.cols()));
-  for (Eigen::Index j = 0; j < W.rows(); ++j) {
-    for (Eigen::Index k = 0; k < W.cols(); ++k) row.put(W(j, k).real());
-    for (Eigen::Index k = 0; k < W.cols(); ++k) row.put(W(j, k).imag());
-    row.writeTo(file);
-  }
-  file.commit();
 }
 
 void writeOmegaCsv(const std::filesystem::path& path, const SphericalHarmonicBasis& basis,

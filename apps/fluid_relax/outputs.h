@@ -102,9 +102,6 @@ class HistoryFiles {
 int makeFigures(const Options& o, const std::filesystem::path& out, int status,
                 const char* plot_script, const char* animate_script);
 
-/// W in the layout of --init-file: row j is Re W[j, :] then Im W[j, :].
-void writeMatrixCsv(const std::filesystem::path& path, const Eigen::MatrixXcd& W);
-
 /// The real spherical-harmonic coefficients ω_lm of W (docs/reference/conventions.md §2), one row
 /// "l,m,omega" each, for the figures.
 void writeOmegaCsv(const std::filesystem::path& path, const SphericalHarmonicBasis& basis,

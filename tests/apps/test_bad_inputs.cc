@@ -105,7 +105,8 @@ TEST(BadInputs, EveryRowOfTheTableExitsTwoWithItsMessageAndWritesNothing) {
   std::ofstream(tmp / "rect.csv") << "0,1,2\n-1,0,3\n";
 
   const std::map<std::string, std::string> programs{{"ddb-compare", DDB_COMPARE_PATH},
-                                                    {"fluid-relax", FLUID_RELAX_PATH}};
+                                                    {"fluid-relax", FLUID_RELAX_PATH},
+                                                    {"mhd-relax", MHD_RELAX_PATH}};
   RunEnvironment environment;
   environment.timeout_s = 20;  // a row that runs instead of failing must not hang ctest
   for (const Row& row : rows) {
@@ -139,7 +140,8 @@ TEST(BadInputs, EveryRowOfTheTableExitsTwoWithItsMessageAndWritesNothing) {
 TEST(BadInputs, ABadDdbNumThreadsExitsTwoAndWritesNothing) {
   const fs::path tmp = freshFolder("ddb_bad_threads_", "scratch");
   const std::map<std::string, std::string> programs{{"ddb-compare", DDB_COMPARE_PATH},
-                                                    {"fluid-relax", FLUID_RELAX_PATH}};
+                                                    {"fluid-relax", FLUID_RELAX_PATH},
+                                                    {"mhd-relax", MHD_RELAX_PATH}};
   for (const auto& [app, path] : programs) {
     for (const std::string value : {"0", "-2", "two", "65", "3x"}) {
       RunEnvironment environment;

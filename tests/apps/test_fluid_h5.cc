@@ -37,7 +37,7 @@ FluidH5Attributes attributes() {
   a.init = "random";
   a.seed = 7;
   a.version = "test";
-  a.created = FluidH5::utcNow();
+  a.created = ddb::app::hdf5::utcNow();
   return a;
 }
 

@@ -33,18 +33,6 @@ fs::path freshFolder(const std::string& name) {
   return ddb::test::freshFolder("fluid_relax_test_", name);
 }
 
-/// W from the layout of W_final.csv and --init-file.
-Matrix readMatrix(const fs::path& path) {
-  const auto rows = readCsv(path, nullptr);
-  const auto n = static_cast<Eigen::Index>(rows.size());
-  Matrix W(n, n);
-  for (Eigen::Index j = 0; j < n; ++j) {
-    EXPECT_EQ(static_cast<Eigen::Index>(rows[j].size()), 2 * n);
-    for (Eigen::Index k = 0; k < n; ++k) W(j, k) = {rows[j][k], rows[j][n + k]};
-  }
-  return W;
-}
-
 /// summary.json's number `key`; NaN if it is missing or not a number (null).
 double jsonNumber(const nlohmann::ordered_json& json, const std::string& key) {
   const auto at = json.find(key);

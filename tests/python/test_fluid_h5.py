@@ -9,7 +9,6 @@ from the frames' matrices and coefficients, and against the sums they must have.
 ctest sets FLUID_RELAX to the app of this build and DDB_ANIMATE_SCRIPT to
 scripts/animate_fluid.py (tests/CMakeLists.txt).
 """
-import csv
 import datetime
 import json
 import math
@@ -19,6 +18,7 @@ import sys
 
 import numpy as np
 import pytest
+from app_outputs import app_path, read_csv
 
 h5py = pytest.importorskip("h5py", reason="h5py is not installed (Debian: python3-h5py)")
 
@@ -26,16 +26,7 @@ N = 8
 
 
 def app():
-    path = os.environ.get("FLUID_RELAX")
-    if not path:
-        pytest.skip("FLUID_RELAX (the fluid-relax of this build) is not set")
-    return path
-
-
-def read_csv(path):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+    return app_path("FLUID_RELAX")
 
 
 def omega_in_quflow_order(path):

@@ -3,6 +3,7 @@
 // (docs/reference/command-lines-and-files.md).
 #pragma once
 
+#include <gtest/gtest.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -161,6 +162,21 @@ inline std::vector<std::vector<double>> readCsv(const fs::path& path, std::strin
     rows.push_back(row);
   }
   return rows;
+}
+
+/// A matrix from --init-file's CSV layout (W_final.csv: row j is Re W[j, :] then Im W[j, :]).
+inline Eigen::MatrixXcd readMatrix(const fs::path& path) {
+  const auto rows = readCsv(path, nullptr);
+  const auto n = static_cast<Eigen::Index>(rows.size());
+  Eigen::MatrixXcd W(n, n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    if (static_cast<Eigen::Index>(rows[j].size()) != 2 * n) {
+      ADD_FAILURE() << path << " row " << j << " has " << rows[j].size() << " numbers, not 2N";
+      return W;
+    }
+    for (Eigen::Index k = 0; k < n; ++k) W(j, k) = {rows[j][k], rows[j][n + k]};
+  }
+  return W;
 }
 
 /// W in --init-file's CSV layout (row j: Re W[j, :] then Im W[j, :]), every digit kept.

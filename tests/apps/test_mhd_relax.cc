@@ -1,0 +1,146 @@
+// mhd-relax end to end at N = 8 and 12 (docs/reference/command-lines-and-files.md, "mhd-relax"):
+// the files against the contract (columns, rows, JSON keys), the final fields against the library
+// called directly, every Casimir tr Θᵏ and tr(WΘᵏ) of the group (an O(N⁴) set the app does not
+// evaluate) kept to rounding, the total energy monotone for α > 0, a magnetic equilibrium reached
+// under --until-steady, and with Θ₀ = 0 fluid-relax's run to the bit. Bad inputs are rows of
+// docs/reference/bad-inputs.md (test_bad_inputs.cc).
+#include <ddb/groups/dual_number_sun.h>
+#include <ddb/integrators/drivers/integrate.h>
+#include <ddb/integrators/methods/method_table.h>
+#include <ddb/systems/zeitlin_initial_conditions.h>
+#include <ddb/systems/zeitlin_mhd.h>
+#include <gmock/gmock.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "app_test_support.h"
+
+namespace mhd_relax_tests {
+
+using namespace ddb::test;
+using Matrix = Eigen::MatrixXcd;
+using State = ddb::DualMatrix<Matrix>;
+
+AppResult run(const std::string& arguments) { return runProgram(MHD_RELAX_PATH, arguments); }
+
+/// The app's generated fields (--init random --seed, --theta-lmax, --theta-seed, --theta-scale),
+/// from the library's generators as docs/reference/command-lines-and-files.md defines them.
+State initialState(long n, std::uint64_t seed, long lmax, std::uint64_t theta_seed, double scale) {
+  const Matrix W0 = ddb::randomVorticity(n, seed);
+  const Matrix shape = ddb::lowModeVorticity(n, lmax, theta_seed);
+  return ddb::zeitlinMhdState(W0, shape * (scale * W0.norm() / shape.norm()));
+}
+
+TEST(MhdRelax, WritesContractFilesMatchingTheLibraryAndKeepsEveryCasimir) {
+  for (long n : {8, 12}) {
+    const fs::path out = freshFolder("mhd_relax_test_", "contract");
+    const double alpha = 0.03, h = 0.01;
+    const long steps = 60;
+    const std::string args = "--quiet --n " + std::to_string(n) +
+                             " --alpha 0.03 --h 0.01 --steps 60 --every 7 --seed 3 "
+                             "--theta-seed 5 --theta-lmax 3 --theta-scale 0.2 --out " +
+                             out.string();
+    const AppResult r = run(args);
+    ASSERT_EQ(r.status, 0) << args << "\n" << r.output;
+    for (const char* name :
+         {"history.csv", "fluid.hdf5", "summary.json", "W_final.csv", "theta_final.csv"}) {
+      EXPECT_TRUE(fs::exists(out / name)) << name;
+    }
+    EXPECT_FALSE(fs::exists(out / "history.csv.partial"));
+    EXPECT_FALSE(fs::exists(out / "fluid.hdf5.partial"));
+
+    std::string header;
+    const auto rows = readCsv(out / "history.csv", &header);
+    EXPECT_EQ(header,
+              "t,h,kinetic_energy,magnetic_energy,energy,cross_helicity,residual,"
+              "equilibrium_residual,invariant_drift");
+    ASSERT_EQ(rows.size(), 10u);  // k = 0, 7, ..., 56 and the last, 60
+    EXPECT_NEAR(rows.back()[0], steps * h, 1e-12);
+    for (size_t i = 0; i < rows.size(); ++i) {
+      ASSERT_EQ(rows[i].size(), 9u);
+      for (double v : rows[i]) EXPECT_TRUE(std::isfinite(v));
+      EXPECT_EQ(rows[i][4], rows[i][2] + rows[i][3]);
+      EXPECT_LE(rows[i][8], 1e-13) << "invariant drift, row " << i;
+      // The cross helicity is the ε-part's k = 1 Casimir.
+      EXPECT_NEAR(rows[i][5], rows[0][5], 1e-13 * std::abs(rows[0][5]));
+      if (i > 0) {
+        EXPECT_LT(rows[i][4], rows[i - 1][4]) << "the total energy falls, row " << i;
+      }
+    }
+
+    // The final fields against the library's own integrate() of the same state.
+    const State mu0 = initialState(n, 3, 3, 5, 0.2);
+    const auto system = ddb::makeZeitlinMhd(n, alpha);
+    const auto method = ddb::makeMethod<ddb::DualNumberSUN>("ddb-cay", system);
+    State expected;
+    ddb::integrate(*method, mu0, 0.0, h, steps,
+                   [&](long, double, const State& mu) { expected = mu; });
+    const Matrix W = readMatrix(out / "W_final.csv");
+    const Matrix Theta = readMatrix(out / "theta_final.csv");
+    ASSERT_EQ(W.rows(), n);
+    EXPECT_LT((W - expected.eps).norm(), 1e-13 * expected.eps.norm());
+    EXPECT_LT((Theta - expected.real).norm(), 1e-13 * expected.real.norm());
+    // Every Casimir of SU(N) ⋉ su(N)* (tr Hᵏ, k = 2..N, and tr(HᵏK), k = 0..N−1), which the
+    // app's O(N³) drift column does not evaluate.
+    const Eigen::VectorXd c0 = ddb::DualNumberSUN::casimirs(mu0);
+    const Eigen::VectorXd c1 = ddb::DualNumberSUN::casimirs(ddb::zeitlinMhdState(W, Theta));
+    for (Eigen::Index i = 0; i < c0.size(); ++i) {
+      EXPECT_NEAR(c1(i), c0(i), 1e-12 * std::max(1.0, std::abs(c0(i)))) << "Casimir " << i;
+    }
+
+    const auto summary = readJson(out / "summary.json");
+    EXPECT_EQ(summary["status"], "ok");
+    EXPECT_EQ(summary["n"], n);
+    EXPECT_EQ(summary["steps"], steps);
+    EXPECT_EQ(summary["stop"], "step cap");
+    EXPECT_EQ(summary["theta_init"], "low-modes");
+    EXPECT_EQ(summary["energy_rises"], 0);
+    EXPECT_EQ(summary["energy_initial"].get<double>(), rows.front()[4]);
+    EXPECT_EQ(summary["energy_final"].get<double>(), rows.back()[4]);
+    EXPECT_LE(summary["invariant_drift_max"].get<double>(), 1e-13);
+    EXPECT_GE(summary["iterations_max"].get<double>(), 1.0);
+    fs::remove_all(out);
+  }
+}
+
+TEST(MhdRelax, UntilSteadyStopsAtAMagneticEquilibrium) {
+  const fs::path out = freshFolder("mhd_relax_test_", "steady");
+  const AppResult r =
+      run("--quiet --n 8 --alpha 0.5 --h 0.05 --adaptive --t-end 1e4 "
+          "--until-steady 1e-6 --every 1000 --out " +
+          out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto summary = readJson(out / "summary.json");
+  EXPECT_EQ(summary["stop"], "steady");
+  EXPECT_LE(summary["residual_final"].get<double>(), 1e-6);
+  // At the equilibrium [P, Θ] = 0 and [P, W] + [B, Θ] = 0, computed here from the final fields
+  // with the library's Laplacian.
+  const Matrix W = readMatrix(out / "W_final.csv");
+  const Matrix Theta = readMatrix(out / "theta_final.csv");
+  const ddb::HoppeYauLaplacian laplacian(8);
+  Matrix P(8, 8), B(8, 8);
+  laplacian.solve(W, P);
+  laplacian.apply(Theta, B);
+  const double scale = (P.norm() + B.norm()) * (W.norm() + Theta.norm());
+  EXPECT_LT((P * Theta - Theta * P).norm(), 1e-5 * scale);
+  EXPECT_LT((P * W - W * P + B * Theta - Theta * B).norm(), 1e-5 * scale);
+  EXPECT_LT(summary["energy_final"].get<double>(), summary["energy_initial"].get<double>());
+  fs::remove_all(out);
+}
+
+TEST(MhdRelax, WithoutMagneticFieldItIsFluidRelaxToTheBit) {
+  const fs::path mhd = freshFolder("mhd_relax_test_", "fluid");
+  const fs::path fluid = freshFolder("mhd_relax_test_", "fluid_reference");
+  const std::string common = "--quiet --n 10 --alpha 0.2 --h 0.02 --steps 30 --seed 4 ";
+  const AppResult a = run(common + "--theta-scale 0 --out " + mhd.string());
+  ASSERT_EQ(a.status, 0) << a.output;
+  const AppResult b = runProgram(FLUID_RELAX_PATH, common + "--out " + fluid.string());
+  ASSERT_EQ(b.status, 0) << b.output;
+  EXPECT_EQ(readFile(mhd / "W_final.csv"), readFile(fluid / "W_final.csv"));
+  EXPECT_EQ(readMatrix(mhd / "theta_final.csv").norm(), 0.0);
+  fs::remove_all(mhd);
+  fs::remove_all(fluid);
+}
+
+}  // namespace mhd_relax_tests
