@@ -6,6 +6,7 @@
 
 #include <ddb/integrators/methods/ddb.h>
 #include <ddb/integrators/methods/method_table.h>
+#include <ddb/systems/hoppe_yau_laplacian.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
@@ -148,6 +149,33 @@ TEST(ZeitlinFluid, AtAlphaZeroDdbCayleyIsTheIsospectralMidpoint) {
   std::cout << "DDB Cayley vs isospectral midpoint after 100 steps: "
             << (ddb - midpoint).norm() / W0.norm() << " relative\n";
   EXPECT_LT((ddb - midpoint).norm(), 1e-13 * W0.norm());
+}
+
+TEST(ZeitlinInitialConditions, LowModesHaveOnlyTheirDegreesAndTheOthersScale) {
+  // Degree ≤ L ⟺ Π_{l=1..L} (Δ + l(l + 1)) W = 0 (Δ T_lm = −l(l + 1) T_lm), with Δ applied as the
+  // matrix Laplacian, not through the basis the field is made of.
+  const Eigen::Index n = 12;
+  const HoppeYauLaplacian laplacian(n);
+  for (Eigen::Index l_max : {1, 3, 5}) {
+    const Matrix W = lowModeVorticity(n, l_max, 7);
+    EXPECT_LT((W + W.adjoint()).norm(), 1e-15 * W.norm());
+    EXPECT_LT(std::abs(W.trace()), 1e-14);
+    EXPECT_NEAR(W.norm(), std::sqrt(double(n)), 1e-13);
+    // Rounding grows with the factors' norms, at most L(L + 1) + l(l + 1) each; a degree above L
+    // would leave Π |l(l + 1) − l'(l' + 1)| ≥ 10⁷ times its coefficient at L = 5.
+    Matrix rest = W, next(n, n);
+    double bound = W.norm();
+    for (Eigen::Index l = 1; l <= l_max; ++l) {
+      laplacian.apply(rest, next);
+      rest = next + double(l * (l + 1)) * rest;
+      bound *= double(l_max * (l_max + 1) + l * (l + 1));
+      if (l < l_max) EXPECT_GT(rest.norm(), 1e-3 * W.norm()) << "degree " << l + 1 << " is there";
+    }
+    EXPECT_LT(rest.norm(), 1e-13 * bound) << "l_max " << l_max;
+  }
+  EXPECT_THROW(lowModeVorticity(n, 0, 1), InvalidArgument);
+  EXPECT_THROW(lowModeVorticity(n, n, 1), InvalidArgument);
+  EXPECT_EQ(lowModeVorticity(n, 3, 7), lowModeVorticity(n, 3, 7));
 }
 
 TEST(ZeitlinFluid, ZonalAndL1StatesAreFixedByOneStep) {
