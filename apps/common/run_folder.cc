@@ -1,5 +1,6 @@
 #include "common/run_folder.h"
 
+#include <ddb/core/binary_record.h>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <sys/types.h>
@@ -8,6 +9,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <iterator>
 #include <optional>
 
@@ -172,6 +174,35 @@ std::uint64_t requireRegularFile(const std::string& flag, const std::string& tex
                path.string() + " is " + kind + ", not a regular file: refusing to read it");
   }
   return static_cast<std::uint64_t>(info.st_size);
+}
+
+std::string readRegularFile(const std::string& flag, const std::string& text,
+                            const std::filesystem::path& path) {
+  // Its kind before it is opened (a FIFO would block, /dev/zero never end), and exactly the bytes
+  // it has: nothing is allocated beyond the file's length.
+  const std::uint64_t size = requireRegularFile(flag, text, path);
+  std::ifstream file(path, std::ios::binary);
+  std::string bytes(size, '\0');
+  if (!file || !file.read(bytes.data(), static_cast<std::streamsize>(size))) {
+    usageError(flag, text, "cannot read " + path.string());
+  }
+  return bytes;
+}
+
+std::uint64_t digestOfPrefix(const std::string& flag, const std::string& text,
+                             const std::filesystem::path& path, std::uint64_t length) {
+  std::ifstream in(path, std::ios::binary);
+  std::vector<char> block(std::size_t{1} << 20);
+  std::uint64_t digest = kFnv1a64Basis;
+  for (std::uint64_t left = length; left > 0;) {
+    const auto size = static_cast<std::size_t>(std::min<std::uint64_t>(left, block.size()));
+    if (!in.read(block.data(), static_cast<std::streamsize>(size))) {
+      usageError(flag, text, "cannot read " + path.string());
+    }
+    digest = fnv1a64(std::string_view(block.data(), size), digest);
+    left -= size;
+  }
+  return digest;
 }
 
 }  // namespace ddb::app

@@ -77,4 +77,15 @@ void removeTemporaries(const std::filesystem::path& folder, const RunFiles& file
 std::uint64_t requireRegularFile(const std::string& flag, const std::string& text,
                                  const std::filesystem::path& path);
 
+/// requireRegularFile(), then the file's bytes (a resume's checkpoint); a file that cannot be
+/// read is a UsageError naming `flag`, `text` and the file.
+std::string readRegularFile(const std::string& flag, const std::string& text,
+                            const std::filesystem::path& path);
+
+/// The FNV-1a hash (core/binary_record.h) of the first `length` bytes of `path`, which has at
+/// least that many (JournalFile::digest of a journal a resume continues); a file that cannot be
+/// read is a UsageError naming `flag` and `text`.
+std::uint64_t digestOfPrefix(const std::string& flag, const std::string& text,
+                             const std::filesystem::path& path, std::uint64_t length);
+
 }  // namespace ddb::app

@@ -1,9 +1,6 @@
 #include "fluid_relax/checkpoint.h"
 
-#include <spdlog/fmt/fmt.h>
-
 #include <cmath>
-#include <fstream>
 #include <iterator>
 #include <set>
 #include <sstream>
@@ -11,6 +8,7 @@
 #include "common/atomic_file.h"
 #include "common/cli.h"
 #include "common/exit_status.h"
+#include "common/resume.h"
 #include "common/run_folder.h"
 
 namespace ddb::fluid {
@@ -125,11 +123,7 @@ void putSettingsBesidesW0(BinaryRecordWriter& out, const Settings& s) {
   out.put(s.h);
   out.put(s.default_h);
   out.put(s.steps);
-  out.put(s.relax.tolerance);
-  out.put(s.relax.max_steps);
-  out.put(s.relax.t_end);
-  out.put(s.relax.control.adaptive);
-  out.put(s.relax.control.tolerance);
+  app::putRelaxCaps(out, s.relax);
   out.put(s.relax.newton);
   out.put(s.init);
   out.put(s.physics.rotation);
@@ -150,11 +144,7 @@ void getSettingsBesidesW0(BinaryRecordReader& in, Settings& s, std::int32_t layo
   in.get(s.h);
   in.get(s.default_h);
   in.get(s.steps);
-  in.get(s.relax.tolerance);
-  in.get(s.relax.max_steps);
-  in.get(s.relax.t_end);
-  in.get(s.relax.control.adaptive);
-  in.get(s.relax.control.tolerance);
+  app::getRelaxCaps(in, s.relax);
   in.get(s.relax.newton);
   in.get(s.init);
   if (layout >= kLayoutWithPhysics) {
@@ -213,17 +203,8 @@ void getSettings(BinaryRecordReader& in, Settings& s, std::int32_t layout) {
 }
 
 std::string readCheckpointBytes(const std::string& dir) {
-  const std::filesystem::path path = std::filesystem::path(dir) / kCheckpointFile;
-  // Its existence was checked with the folder's lock (lockResumeFolder); its kind before it is
-  // opened (a FIFO would block, /dev/zero never end), and exactly the bytes it has: nothing is
-  // allocated beyond the file's length.
-  const std::uint64_t size = app::requireRegularFile("--resume", dir, path);
-  std::ifstream file(path, std::ios::binary);
-  std::string bytes(size, '\0');
-  if (!file || !file.read(bytes.data(), static_cast<std::streamsize>(size))) {
-    app::usageError("--resume", dir, "cannot read " + path.string());
-  }
-  return bytes;
+  // Its existence was checked with the folder's lock (lockResumeFolder).
+  return app::readRegularFile("--resume", dir, std::filesystem::path(dir) / kCheckpointFile);
 }
 
 // The checkpoint in `bytes`, read from DIR for `--resume DIR`; a truncated or corrupted one
@@ -324,33 +305,6 @@ void writeCheckpoint(const std::filesystem::path& out, const BinaryRecordWriter&
 
 Checkpoint readCheckpoint(const std::string& dir) {
   return parseCheckpoint(dir, readCheckpointBytes(dir));
-}
-
-void resumeRelaxation(BinaryRecordReader& relaxation, const RelaxOptions& caps,
-                      const std::string& dir,
-                      const std::function<RelaxState(BinaryRecordReader&)>& load) {
-  RelaxState at;
-  try {
-    at = load(relaxation);
-    relaxation.expectEnd();
-  } catch (const CorruptRecord& corrupt) {
-    app::usageError(
-        "--resume", dir,
-        std::string(kCheckpointFile) + " is corrupt (" + corrupt.what() + "): refusing to use it");
-  }
-  const bool time_capped = std::isfinite(caps.t_end);
-  if (!time_capped && at.k >= caps.max_steps) {
-    app::usageError("--resume", dir,
-                    fmt::format("the run has taken {} steps, its cap {}; give a larger --steps "
-                                "or --t-end",
-                                at.k, caps.max_steps));
-  }
-  if (time_capped && at.t >= caps.t_end * (1 - 1e-12)) {
-    app::usageError("--resume", dir,
-                    fmt::format("the run has reached t = {}, its cap; give a larger --t-end or "
-                                "--steps",
-                                at.t));
-  }
 }
 
 }  // namespace ddb::fluid

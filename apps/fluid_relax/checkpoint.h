@@ -15,7 +15,6 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -86,14 +85,5 @@ void getRunDefinition(BinaryRecordReader& in, Options& o, GivenFlags& given, Set
 /// (its checksum, a size beyond the file, a setting out of its domain), or one that is not a
 /// regular file (a FIFO, a device, a folder), is a UsageError naming --resume and the file.
 Checkpoint readCheckpoint(const std::string& dir);
-
-/// Loads a checkpoint's relaxation record (Checkpoint::relaxation, or fluid-relax-mpi's
-/// RankZeroRecordReader of it) with `load`, which returns the loaded state
-/// (Relaxation::load, or fluid-relax-mpi's reader of the same record), and checks that the
-/// resumed run's cap (`caps`: max_steps, t_end) lies beyond it: a corrupt record or a cap
-/// already reached is a UsageError naming --resume DIR.
-void resumeRelaxation(BinaryRecordReader& relaxation, const RelaxOptions& caps,
-                      const std::string& dir,
-                      const std::function<RelaxState(BinaryRecordReader&)>& load);
 
 }  // namespace ddb::fluid

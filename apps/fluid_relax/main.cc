@@ -13,6 +13,7 @@
 
 #include "common/cli.h"
 #include "common/exit_status.h"
+#include "common/resume.h"
 #include "common/run_folder.h"
 #include "fluid_relax/checkpoint.h"
 #include "fluid_relax/device.h"
@@ -42,7 +43,7 @@ int runRelax(int argc, char** argv) {
   std::optional<app::RunFolderLock> lock;
   if (!o.resume.empty()) {
     // The lock first: the checkpoint and the files are read as their one writer left them.
-    lock.emplace(lockResumeFolder(o.resume));
+    lock.emplace(app::lockResumeFolder(o.resume, kCheckpointFile));
     Checkpoint c = readCheckpoint(o.resume);
     resumeSettings(cli, o, c);
     requireRunsOn(device, c.settings.W0.rows());

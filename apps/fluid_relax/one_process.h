@@ -13,6 +13,7 @@
 #include <string>
 
 #include "common/json.h"
+#include "common/resume.h"
 #include "fluid_relax/checkpoint.h"
 #include "fluid_relax/options.h"
 #include "fluid_relax/step_flags.h"
@@ -45,7 +46,7 @@ class OneProcess {
   template <class Load>
   void loadCheckpoint(Checkpoint& c, const RelaxOptions& caps, const std::string& dir,
                       const Load& load) {
-    resumeRelaxation(c.relaxation, caps, dir, load);
+    app::resumeRelaxation(c.relaxation, caps, dir, kCheckpointFile, load);
   }
   std::string describe() const { return ""; }
   std::string progressLabel() const { return ""; }

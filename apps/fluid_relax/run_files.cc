@@ -1,9 +1,6 @@
 #include "fluid_relax/run_files.h"
 
-#include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <vector>
 
 #include "common/cli.h"
 #include "common/exit_status.h"
@@ -13,27 +10,6 @@
 
 namespace ddb::fluid {
 
-namespace {
-
-/// The FNV-1a hash of the first `length` bytes of `path`, read a block at a time.
-std::uint64_t digestOfPrefix(const std::string& dir, const std::filesystem::path& path,
-                             std::uint64_t length) {
-  std::ifstream in(path, std::ios::binary);
-  std::vector<char> block(std::size_t{1} << 20);
-  std::uint64_t digest = kFnv1a64Basis;
-  for (std::uint64_t left = length; left > 0;) {
-    const auto size = static_cast<std::size_t>(std::min<std::uint64_t>(left, block.size()));
-    if (!in.read(block.data(), static_cast<std::streamsize>(size))) {
-      app::usageError("--resume", dir, "cannot read " + path.string());
-    }
-    digest = fnv1a64(std::string_view(block.data(), size), digest);
-    left -= size;
-  }
-  return digest;
-}
-
-}  // namespace
-
 const app::RunFiles& runFiles() {
   static const app::RunFiles files{{kHistoryCsv, app::JournalFile::partialOf(kHistoryCsv).string(),
                                     kCheckpointFile, "W_final.csv", "omega_initial.csv",
@@ -42,15 +18,6 @@ const app::RunFiles& runFiles() {
                                     "fluid.partial.mp4", "history.png", "vorticity_sphere.png",
                                     "history.png.tmp.png", "vorticity_sphere.png.tmp.png"}};
   return files;
-}
-
-app::RunFolderLock lockResumeFolder(const std::string& dir) {
-  const std::filesystem::path checkpoint = std::filesystem::path(dir) / kCheckpointFile;
-  app::RunFolderLock::refuseIfHeld("--resume", dir, dir);
-  if (!std::filesystem::exists(std::filesystem::symlink_status(checkpoint))) {
-    app::usageError("--resume", dir, "no checkpoint to resume from: " + checkpoint.string());
-  }
-  return app::RunFolderLock("--resume", dir, dir);
 }
 
 void checkResumeFolder(const std::string& dir, Checkpoint& c) {
@@ -65,7 +32,7 @@ void checkResumeFolder(const std::string& dir, Checkpoint& c) {
                         " its checkpoint recorded: it is not the history its checkpoint "
                         "continues (restore it to resume)");
   }
-  const std::uint64_t digest = digestOfPrefix(dir, history, recorded);
+  const std::uint64_t digest = app::digestOfPrefix("--resume", dir, history, recorded);
   if (c.files.history_digest && *c.files.history_digest != digest) {
     app::usageError("--resume", dir,
                     history.string() + " is not the history its checkpoint continues (its first " +

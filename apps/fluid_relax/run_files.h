@@ -14,11 +14,6 @@ namespace ddb::fluid {
 /// Every output, the journal, the checkpoint, the figures and their temporaries.
 const app::RunFiles& runFiles();
 
-/// Takes `--resume DIR`'s lock, before the checkpoint is read: a folder without a checkpoint
-/// is a UsageError that creates nothing; one that another process holds is refused naming its
-/// pid (RunFolderLock).
-app::RunFolderLock lockResumeFolder(const std::string& dir);
-
 /// The checks of `--resume DIR`'s folder against its checkpoint `c`: history.csv (or the
 /// .partial a killed or failed run left) is a regular file holding at least the recorded bytes,
 /// whose hash is the recorded one, so that it is this run's history and not another's; with

@@ -22,6 +22,7 @@
 #include <utility>
 
 #include "common/json.h"
+#include "common/resume.h"
 #include "fluid_relax/checkpoint.h"
 #include "fluid_relax/fluid_run.h"
 #include "fluid_relax_mpi/mpi_input.h"
@@ -104,7 +105,7 @@ class DistributedPlacement {
   void loadCheckpoint(fluid::Checkpoint& c, const RelaxOptions& caps, const std::string& dir,
                       const Load& load) {
     RankZeroRecordReader record(grid_, std::move(c.relaxation));
-    agreed([&] { fluid::resumeRelaxation(record, caps, dir, load); });
+    agreed([&] { app::resumeRelaxation(record, caps, dir, fluid::kCheckpointFile, load); });
   }
   std::string describe() const {
     return fmt::format(" on {} ranks ({}x{} grid, block {})", grid_.size(), grid_.rows(),

@@ -14,6 +14,7 @@
 #include "common/cli.h"
 #include "common/exit_status.h"
 #include "common/initial_vorticity.h"
+#include "common/resume.h"
 #include "fluid_relax/run_files.h"
 
 namespace ddb::fluid_mpi {
@@ -136,7 +137,7 @@ MpiRun mpiRun(const CLI::App& cli, const MpiOptions& o, const ProcessGrid& grid)
     fluid::Checkpoint& c = *run.resume;
     if (const int status = onRankZero(grid, [&] {
           // The lock first: the checkpoint and the files are read as their one writer left them.
-          run.lock.emplace(fluid::lockResumeFolder(dir));
+          run.lock.emplace(app::lockResumeFolder(dir, fluid::kCheckpointFile));
           c = fluid::readCheckpoint(dir);
         })) {
       throw Reported{status};

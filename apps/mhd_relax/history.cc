@@ -48,17 +48,24 @@ double InvariantDrift::operator()(const State& mu) const {
 }
 
 HistoryFiles::HistoryFiles(const Options& o, const Settings& s,
-                           const LiePoissonSystem<DualNumberSUN>& system)
+                           const LiePoissonSystem<DualNumberSUN>& system, const FileLengths* resume)
     : hamiltonian_(dynamic_cast<const ZeitlinMhdHamiltonian&>(system.hamiltonian())),
       diagnostics_(hamiltonian_),
       probe_(system),
       basis_(hamiltonian_.poisson()),
       drift_(zeitlinMhdState(s.W0, s.Theta0)),
-      csv_(s.out / "history.csv"),
-      row_(kHistoryColumns),
-      h5_(s.out / "fluid.hdf5", {s.W0.rows(), s.alpha, s.h, hamiltonian_.hbar(), o.method, s.init,
-                                 s.theta_init, app::projectVersion(), app::hdf5::utcNow()}) {
-  csv_.write(kHistoryHeader);
+      row_(kHistoryColumns) {
+  const Eigen::Index n = s.W0.rows();
+  if (resume != nullptr) {
+    csv_.emplace(s.out / "history.csv", resume->history_bytes, resume->history_digest);
+    h5_.emplace(s.out / "fluid.hdf5", n, hamiltonian_.hbar(), resume->frames);
+  } else {
+    csv_.emplace(s.out / "history.csv");
+    csv_->write(kHistoryHeader);
+    h5_.emplace(s.out / "fluid.hdf5",
+                MhdH5Attributes{n, s.alpha, s.h, hamiltonian_.hbar(), o.method, s.init,
+                                s.theta_init, app::projectVersion(), app::hdf5::utcNow()});
+  }
 }
 
 void HistoryFiles::write(long k, double t, double h, const State& mu) {
@@ -77,13 +84,19 @@ void HistoryFiles::write(long k, double t, double h, const State& mu) {
         n.cross_helicity, n.residual, n.equilibrium_residual, n.invariant_drift}) {
     row_.put(v);
   }
-  row_.writeTo(csv_);
-  h5_.append(basis_.coefficients(mu.eps), basis_.coefficients(mu.real), n);
+  row_.writeTo(*csv_);
+  h5_->append(basis_.coefficients(mu.eps), basis_.coefficients(mu.real), n);
+}
+
+FileLengths HistoryFiles::sync() {
+  h5_->flush();
+  const std::uint64_t bytes = csv_->sync();
+  return {bytes, csv_->digest(), h5_->frames()};
 }
 
 void HistoryFiles::commit() {
-  csv_.commit();
-  h5_.commit();
+  csv_->commit();
+  h5_->commit();
 }
 
 }  // namespace ddb::mhd

@@ -14,6 +14,7 @@
 
 #include "common/csv_row.h"
 #include "common/journal_file.h"
+#include "mhd_relax/checkpoint.h"
 #include "mhd_relax/mhd_h5.h"
 #include "mhd_relax/options.h"
 
@@ -40,15 +41,19 @@ class InvariantDrift {
 
 class HistoryFiles {
  public:
-  /// New files in s.out for the run of `o`, `s` on `system` (makeZeitlinMhd). Throws IoError.
-  HistoryFiles(const Options& o, const Settings& s, const LiePoissonSystem<DualNumberSUN>& system);
+  /// New files in s.out for the run of `o`, `s` on `system` (makeZeitlinMhd), or (`resume`)
+  /// the files of a resumed run continued from the lengths its checkpoint recorded (the folder
+  /// checked by checkResumeFolder). Throws IoError.
+  HistoryFiles(const Options& o, const Settings& s, const LiePoissonSystem<DualNumberSUN>& system,
+               const FileLengths* resume);
   /// The row of state k at time t reached by a step h (0 for k = 0).
   void write(long k, double t, double h, const State& mu);
   /// The numbers of the last row written.
   const MhdFrameNumbers& last() const { return last_; }
+  /// Makes the rows written durable (before a checkpoint) and returns their lengths.
+  FileLengths sync();
   /// Completes history.csv and fluid.hdf5 under their names.
   void commit();
-  const SphericalHarmonicBasis& basis() const { return basis_; }
 
  private:
   const ZeitlinMhdHamiltonian& hamiltonian_;
@@ -57,9 +62,9 @@ class HistoryFiles {
   SphericalHarmonicBasis basis_;
   InvariantDrift drift_;
   MhdFrameNumbers last_;
-  app::JournalFile csv_;
   app::CsvRow row_;
-  MhdH5 h5_;
+  std::optional<app::JournalFile> csv_;
+  std::optional<MhdH5> h5_;
 };
 
 }  // namespace ddb::mhd

@@ -1,11 +1,13 @@
 #include "mhd_relax/mhd_h5.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <system_error>
 #include <utility>
 
 #include "common/atomic_file.h"
 #include "common/exit_status.h"
+#include "common/journal_file.h"
 
 namespace ddb::mhd {
 
@@ -13,23 +15,45 @@ namespace {
 
 using app::hdf5::Handle;
 
-/// Creates in `on` the datasets quflow reads, `state` (ω_lm, qtype "shr"), `time` and `qtime`.
-void createQuflowDatasets(hid_t on, long n, const std::filesystem::path& file, Handle& state,
-                          Handle& time, Handle& qtime) {
-  const app::hdf5::RowShape number, omega{1, {static_cast<hsize_t>(n * n), 0}};
-  state = app::hdf5::createDataset(on, "state", H5T_IEEE_F64LE, omega, file);
-  app::hdf5::writeAttribute(state.get(), "qtype", "shr", file);
-  time = app::hdf5::createDataset(on, "time", H5T_IEEE_F64LE, number, file);
-  qtime = app::hdf5::createDataset(on, "qtime", H5T_IEEE_F64LE, number, file);
-  const std::int64_t n64 = n;
-  app::hdf5::writeAttribute(on, "N", H5T_NATIVE_INT64, &n64, file);
+/// The per-frame datasets of one number, by name, after the two `state`s.
+constexpr const char* kNumbers[] = {
+    "time",           "qtime",           "theta/time",     "theta/qtime", "step",
+    "kinetic_energy", "magnetic_energy", "cross_helicity", "residual",    "equilibrium_residual",
+    "invariant_drift"};
+
+app::hdf5::RowShape omegaRow(long n) { return {1, {static_cast<hsize_t>(n * n), 0}}; }
+
+/// Opens the dataset `name` of `file` and checks that its rows have the shape `row`; returns it
+/// and its row count.
+std::pair<Handle, hsize_t> openDataset(hid_t file, const char* name, const app::hdf5::RowShape& row,
+                                       const std::filesystem::path& path) {
+  if (H5Lexists(file, "theta", H5P_DEFAULT) <= 0 || H5Lexists(file, name, H5P_DEFAULT) <= 0) {
+    throw app::IoError(path.string() + ": not an mhd-relax HDF5 file: no dataset " + name);
+  }
+  Handle dataset(H5Dopen2(file, name, H5P_DEFAULT), path, std::string("open ") + name);
+  const Handle space(H5Dget_space(dataset.get()), path, std::string("open ") + name);
+  std::array<hsize_t, 2> dims{};
+  if (H5Sget_simple_extent_ndims(space.get()) != row.rank + 1) {
+    throw app::IoError(path.string() + ": not an mhd-relax HDF5 file: dataset " + name +
+                       " has another rank");
+  }
+  H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
+  if (row.rank == 1 && dims[1] != row.dims[0]) {
+    throw app::IoError(path.string() + ": dataset " + name + " has rows of another N");
+  }
+  return {std::move(dataset), dims[0]};
+}
+
+/// The file a resume continues: the partial one, or the one a finished run completed.
+std::filesystem::path resumeFileOf(const std::filesystem::path& path) {
+  return app::JournalFile::resumeFileOf(path);
 }
 
 }  // namespace
 
 MhdH5::MhdH5(std::filesystem::path path, const MhdH5Attributes& attributes)
     : path_(std::move(path)),
-      partial_(path_.string() + ".partial"),
+      partial_(app::JournalFile::partialOf(path_)),
       n_(attributes.n),
       hbar_(attributes.hbar) {
   app::hdf5::quiet();
@@ -38,20 +62,18 @@ MhdH5::MhdH5(std::filesystem::path path, const MhdH5Attributes& attributes)
     file_ = Handle(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), file,
                    "create the file");
     const hid_t root = file_.get();
-    createQuflowDatasets(root, n_, file, state_, time_, qtime_);
     const Handle theta(H5Gcreate2(root, "theta", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), file,
                        "create the group theta");
-    createQuflowDatasets(theta.get(), n_, file, theta_state_, theta_time_, theta_qtime_);
-    const app::hdf5::RowShape number;
-    step_ = app::hdf5::createDataset(root, "step", H5T_STD_I64LE, number, file);
-    const std::pair<Handle*, const char*> numbers[] = {{&kinetic_, "kinetic_energy"},
-                                                       {&magnetic_, "magnetic_energy"},
-                                                       {&cross_, "cross_helicity"},
-                                                       {&residual_, "residual"},
-                                                       {&equilibrium_, "equilibrium_residual"},
-                                                       {&drift_, "invariant_drift"}};
-    for (const auto& [handle, name] : numbers) {
-      *handle = app::hdf5::createDataset(root, name, H5T_IEEE_F64LE, number, file);
+    const std::int64_t n64 = n_;
+    for (const hid_t group : {root, theta.get()}) {
+      const Handle state =
+          app::hdf5::createDataset(group, "state", H5T_IEEE_F64LE, omegaRow(n_), file);
+      app::hdf5::writeAttribute(state.get(), "qtype", "shr", file);
+      app::hdf5::writeAttribute(group, "N", H5T_NATIVE_INT64, &n64, file);
+    }
+    for (const char* name : kNumbers) {
+      const hid_t type = std::string(name) == "step" ? H5T_STD_I64LE : H5T_IEEE_F64LE;
+      app::hdf5::createDataset(root, name, type, app::hdf5::RowShape{}, file);
     }
     app::hdf5::writeAttribute(root, "alpha", H5T_NATIVE_DOUBLE, &attributes.alpha, file);
     app::hdf5::writeAttribute(root, "h", H5T_NATIVE_DOUBLE, &attributes.h, file);
@@ -61,14 +83,77 @@ MhdH5::MhdH5(std::filesystem::path path, const MhdH5Attributes& attributes)
     app::hdf5::writeAttribute(root, "theta_init", attributes.theta_init, file);
     app::hdf5::writeAttribute(root, "version", attributes.version, file);
     app::hdf5::writeAttribute(root, "created", attributes.created, file);
+    openDatasets();
   } catch (const app::IoError&) {
     // No half-written file (docs/reference/bad-inputs.md): the file goes if it was created.
     const bool created = static_cast<bool>(file_);
-    file_ = Handle();
+    close();
     std::error_code ignored;
     if (created) std::filesystem::remove(file, ignored);
     throw;
   }
+}
+
+MhdH5::MhdH5(std::filesystem::path path, long n, double hbar, long frames)
+    : path_(std::move(path)), partial_(app::JournalFile::partialOf(path_)), n_(n), hbar_(hbar) {
+  app::hdf5::quiet();
+  const std::filesystem::path from = resumeFileOf(path_);
+  if (from != partial_ && std::rename(from.c_str(), partial_.c_str()) != 0) {
+    throw app::IoError(path_.string() + ": cannot rename it to " + partial_.string());
+  }
+  if (H5Fis_hdf5(partial_.c_str()) <= 0) {
+    throw app::IoError(partial_.string() + ": not an HDF5 file (or missing)");
+  }
+  file_ = Handle(H5Fopen(partial_.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), partial_, "open the file");
+  openDatasets();
+  if (frames < 0 || frames > frames_) {
+    throw app::IoError(partial_.string() + ": has " + std::to_string(frames_) +
+                       " frames, fewer than the " + std::to_string(frames) + " to keep");
+  }
+  app::hdf5::resize(state_.get(), omegaRow(n_), static_cast<hsize_t>(frames), partial_);
+  app::hdf5::resize(theta_state_.get(), omegaRow(n_), static_cast<hsize_t>(frames), partial_);
+  for (const Handle* d : {&time_, &qtime_, &theta_time_, &theta_qtime_, &step_, &kinetic_,
+                          &magnetic_, &cross_, &residual_, &equilibrium_, &drift_}) {
+    app::hdf5::resize(d->get(), app::hdf5::RowShape{}, static_cast<hsize_t>(frames), partial_);
+  }
+  frames_ = frames;
+  flush();
+}
+
+void MhdH5::checkResumable(const std::filesystem::path& path, long n, long frames) {
+  app::hdf5::quiet();
+  const std::filesystem::path file = resumeFileOf(path);
+  if (H5Fis_hdf5(file.c_str()) <= 0) throw app::IoError(file.string() + ": not an HDF5 file");
+  const Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), file, "open the file");
+  hsize_t shortest = openDataset(h5.get(), "state", omegaRow(n), file).second;
+  shortest = std::min(shortest, openDataset(h5.get(), "theta/state", omegaRow(n), file).second);
+  for (const char* name : kNumbers) {
+    shortest = std::min(shortest, openDataset(h5.get(), name, app::hdf5::RowShape{}, file).second);
+  }
+  if (shortest < static_cast<hsize_t>(frames)) {
+    throw app::IoError(file.string() + ": has " + std::to_string(shortest) +
+                       " frames, fewer than the " + std::to_string(frames) +
+                       " its checkpoint recorded");
+  }
+}
+
+void MhdH5::openDatasets() {
+  const hid_t file = file_.get();
+  auto [state, rows] = openDataset(file, "state", omegaRow(n_), partial_);
+  state_ = std::move(state);
+  hsize_t shortest = rows;
+  const auto open = [&](Handle& into, const char* name, const app::hdf5::RowShape& row) {
+    auto [dataset, count] = openDataset(file, name, row, partial_);
+    into = std::move(dataset);
+    shortest = std::min(shortest, count);
+  };
+  open(theta_state_, "theta/state", omegaRow(n_));
+  Handle* numbers[] = {&time_,     &qtime_, &theta_time_, &theta_qtime_, &step_, &kinetic_,
+                       &magnetic_, &cross_, &residual_,   &equilibrium_, &drift_};
+  for (std::size_t i = 0; i < std::size(kNumbers); ++i) {
+    open(*numbers[i], kNumbers[i], app::hdf5::RowShape{});
+  }
+  frames_ = static_cast<long>(shortest);
 }
 
 void MhdH5::append(const Eigen::VectorXd& omega_w, const Eigen::VectorXd& omega_theta,
@@ -78,14 +163,14 @@ void MhdH5::append(const Eigen::VectorXd& omega_w, const Eigen::VectorXd& omega_
                        std::to_string(n_));
   }
   const auto at = static_cast<hsize_t>(frames_);
-  const app::hdf5::RowShape number, omega{1, {static_cast<hsize_t>(n_ * n_), 0}};
+  const app::hdf5::RowShape number;
   const double qtime = numbers.t / hbar_;
   const std::int64_t step = numbers.step;
   const auto put = [&](const Handle& dataset, const double& value) {
     app::hdf5::appendRow(dataset.get(), H5T_NATIVE_DOUBLE, number, at, &value, partial_);
   };
-  app::hdf5::appendRow(state_.get(), H5T_NATIVE_DOUBLE, omega, at, omega_w.data(), partial_);
-  app::hdf5::appendRow(theta_state_.get(), H5T_NATIVE_DOUBLE, omega, at, omega_theta.data(),
+  app::hdf5::appendRow(state_.get(), H5T_NATIVE_DOUBLE, omegaRow(n_), at, omega_w.data(), partial_);
+  app::hdf5::appendRow(theta_state_.get(), H5T_NATIVE_DOUBLE, omegaRow(n_), at, omega_theta.data(),
                        partial_);
   for (const Handle* time : {&time_, &theta_time_}) put(*time, numbers.t);
   for (const Handle* q : {&qtime_, &theta_qtime_}) put(*q, qtime);
@@ -99,13 +184,6 @@ void MhdH5::append(const Eigen::VectorXd& omega_w, const Eigen::VectorXd& omega_
   ++frames_;
 }
 
-MhdH5::~MhdH5() {
-  if (committed_) return;
-  close();
-  std::error_code ignored;
-  std::filesystem::remove(partial_, ignored);
-}
-
 void MhdH5::close() noexcept {
   for (Handle* handle :
        {&state_, &time_, &qtime_, &theta_state_, &theta_time_, &theta_qtime_, &step_, &kinetic_,
@@ -114,13 +192,16 @@ void MhdH5::close() noexcept {
   }
 }
 
-void MhdH5::commit() {
+void MhdH5::flush() {
   app::hdf5::checkStatus(H5Fflush(file_.get(), H5F_SCOPE_GLOBAL), partial_, "flush the file");
+}
+
+void MhdH5::commit() {
+  flush();
   close();
   if (std::rename(partial_.c_str(), path_.c_str()) != 0) {
     throw app::IoError(path_.string() + ": cannot rename " + partial_.string() + " onto it");
   }
-  committed_ = true;
   app::syncFolderOf(path_);
 }
 

@@ -22,44 +22,10 @@ namespace {
 // Legendre solve's numbers: refused as bad input (as fluid-relax refuses its own), with a margin.
 constexpr double kMaxDissipativeStep = 1e150;
 
-/// --steps or --t-end (exactly one; --steps 1000 if neither) into s.relax's cap, with h known.
-void readCap(const CLI::App& cli, const Options& o, Settings& s) {
-  const bool by_time = cli.count("--t-end") > 0;
-  if (by_time && cli.count("--steps") > 0) {
-    throw app::UsageError("--steps, --t-end: give at most one of them (both given)");
-  }
-  if (!by_time) {
-    const long steps = cli.count("--steps") > 0 ? o.steps : 1000;
-    if (steps < 1 || steps > kMaxSteps) {
-      app::usageError("--steps", std::to_string(o.steps), "must be in [1, 1e9]");
-    }
-    s.relax.max_steps = steps;
-    return;
-  }
-  const double t_end = app::parseNumber("--t-end", o.t_end, o.t_end);
-  if (!(t_end > 0 && std::isfinite(t_end))) {
-    app::usageError("--t-end", o.t_end, "must be finite and > 0");
-  }
-  if (o.relax.adaptive) {
-    // --h is only the first step, which the step control grows: the cap is the time.
-    s.relax.max_steps = kMaxSteps;
-    s.relax.t_end = t_end;
-    return;
-  }
-  const double count = std::round(t_end / s.h);
-  if (!(count <= static_cast<double>(kMaxSteps))) {
-    app::usageError("--t-end", o.t_end,
-                    fmt::format("more than 1e9 steps of h = {} (or give --adaptive, whose --h is "
-                                "only the first step)",
-                                s.h));
-  }
-  s.relax.max_steps = std::max(1L, static_cast<long>(count));
-}
-
 /// Warns (valid input only: bad input gives its one line and nothing else) where --t-end is not
 /// a whole number of steps.
 void warnIfTimeIsNotReached(const CLI::App& cli, const Options& o, const Settings& s) {
-  if (cli.count("--t-end") == 0 || o.relax.adaptive) return;
+  if (cli.count("--t-end") == 0 || s.relax.control.adaptive) return;
   const double t_end = app::parseNumber("--t-end", o.t_end, o.t_end);
   const double reached = static_cast<double>(s.relax.max_steps) * s.h;
   if (std::abs(reached - t_end) > 1e-9 * t_end) {
@@ -122,6 +88,73 @@ void requireRepresentableStep(const CLI::App& cli, const Options& o, const Setti
 
 }  // namespace
 
+void readStepCap(const CLI::App& cli, const Options& o, Settings& s, bool keep_if_none) {
+  const bool by_time = cli.count("--t-end") > 0, by_steps = cli.count("--steps") > 0;
+  if (by_time && by_steps) {
+    throw app::UsageError("--steps, --t-end: give at most one of them (both given)");
+  }
+  if (keep_if_none && !by_time && !by_steps) return;
+  s.relax.t_end = std::numeric_limits<double>::infinity();
+  if (!by_time) {
+    const long steps = by_steps ? o.steps : 1000;
+    if (steps < 1 || steps > kMaxSteps) {
+      app::usageError("--steps", std::to_string(o.steps), "must be in [1, 1e9]");
+    }
+    s.relax.max_steps = steps;
+    return;
+  }
+  const double t_end = app::parseNumber("--t-end", o.t_end, o.t_end);
+  if (!(t_end > 0 && std::isfinite(t_end))) {
+    app::usageError("--t-end", o.t_end, "must be finite and > 0");
+  }
+  if (s.relax.control.adaptive) {
+    // --h is only the first step, which the step control grows: the cap is the time.
+    s.relax.max_steps = kMaxSteps;
+    s.relax.t_end = t_end;
+    return;
+  }
+  const double count = std::round(t_end / s.h);
+  if (!(count <= static_cast<double>(kMaxSteps))) {
+    app::usageError("--t-end", o.t_end,
+                    fmt::format("more than 1e9 steps of h = {} (or give --adaptive, whose --h is "
+                                "only the first step)",
+                                s.h));
+  }
+  s.relax.max_steps = std::max(1L, static_cast<long>(count));
+}
+
+void rejectFlagsBesideResume(const CLI::App& cli, const Options& o) {
+  for (const CLI::Option* option : cli.get_options()) {
+    const std::string name = option->get_name();
+    if (option->count() == 0 || name.rfind("--", 0) != 0) continue;
+    if (name == "--out" && std::filesystem::path(o.out).lexically_normal() ==
+                               std::filesystem::path(o.resume).lexically_normal()) {
+      continue;
+    }
+    if (name != "--resume" && name != "--steps" && name != "--t-end" &&
+        name != "--checkpoint-every" && name != "--plot" && name != "--quiet" &&
+        name != "--verbose") {
+      app::usageError(name, option->as<std::string>(),
+                      "does not apply to --resume: the checkpoint's run is continued as it was "
+                      "defined (give --steps or --t-end for a new cap)");
+    }
+  }
+  if (cli.count("--checkpoint-every") > 0 && o.checkpoint_every < 1) {
+    app::usageError("--checkpoint-every", std::to_string(o.checkpoint_every), "must be >= 1");
+  }
+}
+
+Options resumedOptions(const Options& given, const Options& recorded) {
+  Options o = recorded;
+  o.steps = given.steps;
+  o.t_end = given.t_end;
+  o.checkpoint_every = given.checkpoint_every;
+  o.plot = given.plot;
+  o.log = given.log;
+  o.resume = given.resume;
+  return o;
+}
+
 std::vector<std::pair<std::string, std::string>> mhdMethods() {
   const auto system = makeZeitlinMhd(2, 1.0);
   std::vector<std::pair<std::string, std::string>> methods;
@@ -169,6 +202,12 @@ void addOptions(CLI::App& cli, Options& o) {
   cli.add_option("--every", o.every, "write every K-th state and the last one")
       ->capture_default_str()
       ->check(app::fitsIn<long>());
+  cli.add_option("--checkpoint-every", o.checkpoint_every,
+                 "write OUT/checkpoint.ddb every K steps (default: every 5 minutes) and at the end")
+      ->check(app::fitsIn<long>());
+  cli.add_option("--resume", o.resume,
+                 "continue the run in DIR from its checkpoint.ddb, to the bit (with --steps or "
+                 "--t-end for a new cap)");
   app::addRunFolderFlags(cli, o.out, o.overwrite);
   cli.add_flag("--plot", o.plot, "render mhd.png (python3 with matplotlib)");
   app::addLogFlags(cli, o.log);
@@ -176,10 +215,10 @@ void addOptions(CLI::App& cli, Options& o) {
   cli.footer("\nInitial vorticities (--init):\n" + app::describeChoices(app::initDescriptions()) +
              "\nMethods (--method):\n" + app::describeChoices(mhdMethods()) +
              "\nFiles in --out: history.csv, fluid.hdf5 (W and Theta per row), summary.json, "
-             "W_final.csv, theta_final.csv, mhd.png with --plot\n"
+             "checkpoint.ddb, W_final.csv, theta_final.csv, mhd.png with --plot\n"
              "(docs/reference/command-lines-and-files.md, \"mhd-relax\").\nExit status: 0 ok, 1 a "
              "step failed or a file could not be written, 2 bad input (nothing written), 130/143 "
-             "stopped by SIGINT/SIGTERM (outputs written).\n");
+             "stopped by SIGINT/SIGTERM (outputs and a checkpoint written; --resume continues).\n");
 }
 
 Settings settings(const CLI::App& cli, const Options& o) {
@@ -198,9 +237,12 @@ Settings settings(const CLI::App& cli, const Options& o) {
   s.alpha = app::parseNumber("--alpha", o.alpha, o.alpha);
   s.h = app::parseNumber("--h", o.h, o.h);
   if (!(s.h > 0)) app::usageError("--h", o.h, "must be > 0");
-  readCap(cli, o, s);
-  if (o.every < 1) app::usageError("--every", std::to_string(o.every), "must be >= 1");
   app::readRelaxFlags(o.relax, s.relax);
+  readStepCap(cli, o, s, false);
+  if (o.every < 1) app::usageError("--every", std::to_string(o.every), "must be >= 1");
+  if (cli.count("--checkpoint-every") > 0 && o.checkpoint_every < 1) {
+    app::usageError("--checkpoint-every", std::to_string(o.checkpoint_every), "must be >= 1");
+  }
   if (o.relax.adaptive && !findMethod(o.method)->keeps_casimirs) {
     app::usageError("--adaptive", o.method,
                     "needs a method that keeps the Casimirs (the DDB family), not this --method");

@@ -23,6 +23,9 @@ constexpr const char* kApp = "mhd-relax";
 // O(N³) invariants.
 constexpr Eigen::Index kMaxN = 1024;
 constexpr long kMaxSteps = 1000000000L;
+// Without --checkpoint-every, a checkpoint after the first step that ends this long after the
+// last one: a killed run loses at most about this much work (fluid-relax's rule).
+constexpr double kCheckpointSeconds = 300.0;
 
 /// The methods of the method table that run on SU(N) ⋉ su(N)* (methodApplies), with the table's
 /// descriptions.
@@ -38,7 +41,9 @@ struct Options {
   /// ‖Θ₀‖_F = --theta-scale · ‖W₀‖_F.
   std::string theta_file, theta_scale = "0.1";
   std::string out = "results-mhd";
-  app::RelaxFlags relax;  // --until-steady, --adaptive, --adaptive-tol
+  app::RelaxFlags relax;      // --until-steady, --adaptive, --adaptive-tol
+  long checkpoint_every = 0;  // steps; 0: every kCheckpointSeconds of wall time
+  std::string resume;         // the run folder to resume, or empty
   bool overwrite = false, plot = false;
   app::LogFlags log;
 };
@@ -57,8 +62,23 @@ struct Settings {
 /// Adds every option, --version and the --help footer.
 void addOptions(CLI::App& cli, Options& o);
 
-/// Every check of the input in the order the messages name them: the method, α, --steps or
-/// --t-end, --every, the relaxation flags, W₀, Θ₀, h and a first step that does not overflow.
+/// Every check of the input in the order the messages name them: the method, α, h, the
+/// relaxation flags, --steps or --t-end, --every, --checkpoint-every, W₀, Θ₀ and a first step
+/// that does not overflow.
 Settings settings(const CLI::App& cli, const Options& o);
+
+/// The cap of --steps or --t-end (at most one; --steps 1000 if neither) into s.relax, for the
+/// step s.h and s.relax.control.adaptive; a resumed run's new cap, which keeps the checkpoint's
+/// if neither is given (`keep_if_none`).
+void readStepCap(const CLI::App& cli, const Options& o, Settings& s, bool keep_if_none);
+
+/// For --resume: refuses every flag but --steps, --t-end, --checkpoint-every, --plot, the
+/// logging flags and an --out that is the --resume folder (the checkpoint's run is continued as
+/// it was defined, in its folder), and a --checkpoint-every below 1.
+void rejectFlagsBesideResume(const CLI::App& cli, const Options& o);
+
+/// The checkpoint's options with this command line's --steps, --t-end, --checkpoint-every,
+/// --plot, --resume and logging flags.
+Options resumedOptions(const Options& given, const Options& recorded);
 
 }  // namespace ddb::mhd

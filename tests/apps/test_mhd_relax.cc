@@ -10,9 +10,13 @@
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <ddb/systems/zeitlin_mhd.h>
 #include <gmock/gmock.h>
+#include <signal.h>
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
 
 #include "app_test_support.h"
 
@@ -141,6 +145,82 @@ TEST(MhdRelax, WithoutMagneticFieldItIsFluidRelaxToTheBit) {
   EXPECT_EQ(readMatrix(mhd / "theta_final.csv").norm(), 0.0);
   fs::remove_all(mhd);
   fs::remove_all(fluid);
+}
+
+/// Runs mhd-relax in the background until its first checkpoint appears, then sends `signal`;
+/// returns the exit status (−signal if it killed it).
+int startAndSignal(const std::string& arguments, const fs::path& out, int signal) {
+  std::vector<std::string> words{MHD_RELAX_PATH};
+  std::stringstream ss(arguments + " --out " + out.string());
+  for (std::string word; ss >> word;) words.push_back(word);
+  const pid_t child = startUntilCheckpoint(words, out);
+  ::kill(child, signal);
+  return waitForExit(child);
+}
+
+/// The files of a finished run that must equal an uninterrupted run's byte for byte (summary.json
+/// has the runtime, fluid.hdf5 its time of creation: its datasets are compared in
+/// tests/python/test_mhd_h5.py).
+void expectSameFiles(const fs::path& a, const fs::path& b) {
+  for (const char* name : {"history.csv", "W_final.csv", "theta_final.csv"}) {
+    EXPECT_EQ(readFile(a / name), readFile(b / name)) << name;
+  }
+  EXPECT_FALSE(fs::exists(b / "history.csv.partial"));
+  EXPECT_FALSE(fs::exists(b / "fluid.hdf5.partial"));
+}
+
+TEST(MhdRelax, AKilledOrInterruptedRunResumesToTheByte) {
+  const std::string run_flags = "--quiet --n 16 --steps 3000 --every 7 --checkpoint-every 50 ";
+  const fs::path whole = freshFolder("mhd_relax_test_", "whole");
+  ASSERT_EQ(run(run_flags + "--out " + whole.string()).status, 0);
+  for (const int signal : {SIGKILL, SIGINT}) {
+    const fs::path out = freshFolder("mhd_relax_test_", "stopped");
+    const int status = startAndSignal(run_flags, out, signal);
+    if (signal == SIGKILL) {
+      ASSERT_EQ(status, -SIGKILL);
+      ASSERT_FALSE(fs::exists(out / "summary.json")) << "the run finished before the kill";
+    } else {
+      ASSERT_EQ(status, 130);
+      EXPECT_EQ(readJson(out / "summary.json")["status"], "interrupted");
+    }
+    const AppResult resumed = run("--quiet --resume " + out.string());
+    ASSERT_EQ(resumed.status, 0) << resumed.output;
+    expectSameFiles(whole, out);
+    EXPECT_EQ(readJson(out / "summary.json")["steps"], 3000);
+    fs::remove_all(out);
+  }
+  // A finished run continued to a later cap: the longer run's files.
+  const fs::path longer = freshFolder("mhd_relax_test_", "longer");
+  ASSERT_EQ(run("--quiet --n 16 --steps 3100 --every 7 --out " + longer.string()).status, 0);
+  const AppResult more = run("--quiet --resume " + whole.string() + " --steps 3100");
+  ASSERT_EQ(more.status, 0) << more.output;
+  expectSameFiles(longer, whole);
+  fs::remove_all(whole);
+  fs::remove_all(longer);
+}
+
+TEST(MhdRelax, AResumeRefusesWhatWouldChangeTheRun) {
+  const fs::path out = freshFolder("mhd_relax_test_", "refused");
+  ASSERT_EQ(run("--quiet --n 8 --steps 10 --out " + out.string()).status, 0);
+  const std::string before = readFile(out / "checkpoint.ddb");
+  for (const std::string extra : {"--alpha 0.5", "--n 12", "--method rk4", "--theta-scale 0"}) {
+    const AppResult r = run("--quiet --resume " + out.string() + " --steps 20 " + extra);
+    EXPECT_EQ(r.status, 2) << extra;
+    EXPECT_THAT(r.error, ::testing::HasSubstr("does not apply to --resume")) << extra;
+  }
+  const AppResult reached = run("--quiet --resume " + out.string() + " --steps 10");
+  EXPECT_EQ(reached.status, 2);
+  EXPECT_THAT(reached.error, ::testing::HasSubstr("give a larger --steps"));
+  // An altered history is another run's.
+  std::ofstream(out / "history.csv", std::ios::app) << "1,2,3\n";
+  std::string history = readFile(out / "history.csv");
+  history[40] = history[40] == '1' ? '2' : '1';
+  std::ofstream(out / "history.csv", std::ios::trunc) << history;
+  const AppResult altered = run("--quiet --resume " + out.string() + " --steps 20");
+  EXPECT_EQ(altered.status, 2);
+  EXPECT_THAT(altered.error, ::testing::HasSubstr("is not the history its checkpoint continues"));
+  EXPECT_EQ(readFile(out / "checkpoint.ddb"), before) << "a refused resume changed nothing";
+  fs::remove_all(out);
 }
 
 }  // namespace mhd_relax_tests

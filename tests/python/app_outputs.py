@@ -1,7 +1,10 @@
 """What the app tests of this folder share: the app of this build from the environment ctest
-sets (tests/CMakeLists.txt), and an app's CSV file as columns."""
+sets (tests/CMakeLists.txt), an app's CSV file as columns, and a run killed mid-way."""
 import csv
 import os
+import signal
+import subprocess
+import time
 
 import numpy as np
 import pytest
@@ -20,3 +23,15 @@ def read_csv(path):
     with open(path, newline="") as f:
         rows = list(csv.DictReader(f))
     return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+
+
+def kill_after_first_checkpoint(command, out):
+    """Starts `command` (whose --out is `out`), sends it SIGKILL once out/checkpoint.ddb exists (at
+    most 60 s) and waits for it; checks that it had not finished."""
+    process = subprocess.Popen(command, stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 60
+    while not (out / "checkpoint.ddb").exists() and time.monotonic() < deadline:
+        time.sleep(0.001)
+    process.send_signal(signal.SIGKILL)
+    process.wait()
+    assert not (out / "summary.json").exists(), "the run finished before the kill"

@@ -18,7 +18,7 @@ import sys
 
 import numpy as np
 import pytest
-from app_outputs import app_path, read_csv
+from app_outputs import app_path, kill_after_first_checkpoint, read_csv
 
 h5py = pytest.importorskip("h5py", reason="h5py is not installed (Debian: python3-h5py)")
 
@@ -167,20 +167,11 @@ def test_a_killed_and_resumed_run_has_one_frame_per_row_and_the_uninterrupted_fr
     """SIGKILL right after the first checkpoint, then --resume: fluid.hdf5 is cut back to the
     checkpoint's frames and continued, so that it holds exactly the uninterrupted run's
     frames (docs/reference/command-lines-and-files.md, "Checkpoints")."""
-    import signal
-    import time
     args = ["--n", "12", "--seed", "4", "--every", "7", "--checkpoint-every", "50",
             "--steps", "4000", "--h5", "--quiet"]
     whole, killed = tmp_path / "whole", tmp_path / "killed"
     subprocess.run([app(), *args, "--out", str(whole)], check=True, capture_output=True)
-    process = subprocess.Popen([app(), *args, "--out", str(killed)],
-                               stderr=subprocess.DEVNULL)
-    deadline = time.monotonic() + 60
-    while not (killed / "checkpoint.ddb").exists() and time.monotonic() < deadline:
-        time.sleep(0.001)
-    process.send_signal(signal.SIGKILL)
-    process.wait()
-    assert not (killed / "summary.json").exists(), "the run finished before the kill"
+    kill_after_first_checkpoint([app(), *args, "--out", str(killed)], killed)
     subprocess.run([app(), "--resume", str(killed), "--quiet"], check=True, capture_output=True)
     rows = len(read_csv(killed / "history.csv")["t"])
     with h5py.File(whole / "fluid.hdf5", "r") as a, h5py.File(killed / "fluid.hdf5", "r") as b:
