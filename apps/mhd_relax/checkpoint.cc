@@ -20,8 +20,10 @@ void putOptions(BinaryRecordWriter& out, const Options& o) {
   out.tag("options");
   for (const long v : {o.n, o.steps, o.every, o.theta_lmax}) out.put(v);
   for (const std::uint64_t v : {o.seed, o.theta_seed}) out.put(v);
+  // Not --out: a run resumes in the folder it is in (moved or copied), and two runs of one
+  // command in two folders write the same checkpoint.
   for (const std::string* text : {&o.alpha, &o.h, &o.t_end, &o.method, &o.init, &o.init_file,
-                                  &o.theta_file, &o.theta_scale, &o.out}) {
+                                  &o.theta_file, &o.theta_scale}) {
     out.put(*text);
   }
 }
@@ -31,7 +33,7 @@ void getOptions(BinaryRecordReader& in, Options& o) {
   for (long* v : {&o.n, &o.steps, &o.every, &o.theta_lmax}) in.get(*v);
   for (std::uint64_t* v : {&o.seed, &o.theta_seed}) in.get(*v);
   for (std::string* text : {&o.alpha, &o.h, &o.t_end, &o.method, &o.init, &o.init_file,
-                            &o.theta_file, &o.theta_scale, &o.out}) {
+                            &o.theta_file, &o.theta_scale}) {
     in.get(*text);
   }
 }

@@ -170,4 +170,21 @@ TEST(Determinism, FluidRelaxWritesTheSameFilesTwice) {
   }
 }
 
+TEST(Determinism, MhdRelaxWritesTheSameFilesTwiceInEitherLocale) {
+  // fluid.hdf5 holds its time of creation; its frames are compared in tests/python/test_mhd_h5.py.
+  const std::string arguments = "--quiet --n 10 --steps 30 --every 7 --alpha 0.05 --h 0.02 --out ";
+  const fs::path first = freshFolder("mhd_determinism_", "first");
+  const fs::path second = freshFolder("mhd_determinism_", "second");
+  RunEnvironment comma;
+  if (commaLocaleInstalled()) comma.variables = {std::string("LC_ALL=") + kCommaLocale};
+  ASSERT_EQ(runProgram(MHD_RELAX_PATH, arguments + first.string()).status, 0);
+  ASSERT_EQ(runProgram(MHD_RELAX_PATH, arguments + second.string(), comma).status, 0);
+  for (const fs::path& folder : {first, second}) {
+    EXPECT_TRUE(fs::remove(folder / "fluid.hdf5"));
+  }
+  // history.csv, checkpoint.ddb, W_final.csv, theta_final.csv, summary.json, run.lock.
+  EXPECT_EQ(fileNames(first).size(), 6u);
+  expectSameFilesApartFromRuntimes(first, second);
+}
+
 }  // namespace determinism_tests
