@@ -27,6 +27,7 @@ app::hdf5::RowShape omegaRow(long n) { return {1, {static_cast<hsize_t>(n * n), 
 /// and its row count.
 std::pair<Handle, hsize_t> openDataset(hid_t file, const char* name, const app::hdf5::RowShape& row,
                                        const std::filesystem::path& path) {
+  // H5Lexists of "theta/..." needs the group to exist: it is looked up first.
   if (H5Lexists(file, "theta", H5P_DEFAULT) <= 0 || H5Lexists(file, name, H5P_DEFAULT) <= 0) {
     throw app::IoError(path.string() + ": not an mhd-relax HDF5 file: no dataset " + name);
   }
@@ -42,11 +43,6 @@ std::pair<Handle, hsize_t> openDataset(hid_t file, const char* name, const app::
     throw app::IoError(path.string() + ": dataset " + name + " has rows of another N");
   }
   return {std::move(dataset), dims[0]};
-}
-
-/// The file a resume continues: the partial one, or the one a finished run completed.
-std::filesystem::path resumeFileOf(const std::filesystem::path& path) {
-  return app::JournalFile::resumeFileOf(path);
 }
 
 }  // namespace
@@ -97,7 +93,7 @@ MhdH5::MhdH5(std::filesystem::path path, const MhdH5Attributes& attributes)
 MhdH5::MhdH5(std::filesystem::path path, long n, double hbar, long frames)
     : path_(std::move(path)), partial_(app::JournalFile::partialOf(path_)), n_(n), hbar_(hbar) {
   app::hdf5::quiet();
-  const std::filesystem::path from = resumeFileOf(path_);
+  const std::filesystem::path from = app::JournalFile::resumeFileOf(path_);
   if (from != partial_ && std::rename(from.c_str(), partial_.c_str()) != 0) {
     throw app::IoError(path_.string() + ": cannot rename it to " + partial_.string());
   }
@@ -122,7 +118,7 @@ MhdH5::MhdH5(std::filesystem::path path, long n, double hbar, long frames)
 
 void MhdH5::checkResumable(const std::filesystem::path& path, long n, long frames) {
   app::hdf5::quiet();
-  const std::filesystem::path file = resumeFileOf(path);
+  const std::filesystem::path file = app::JournalFile::resumeFileOf(path);
   if (H5Fis_hdf5(file.c_str()) <= 0) throw app::IoError(file.string() + ": not an HDF5 file");
   const Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), file, "open the file");
   hsize_t shortest = openDataset(h5.get(), "state", omegaRow(n), file).second;
