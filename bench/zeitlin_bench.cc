@@ -236,7 +236,7 @@ void registerZeitlinBenchmarks() {
     benchmark::RegisterBenchmark(("zeitlin-euler/ddb-cay" + size).c_str(), stepFluid,
                                  std::string("ddb-cay"), 0.0, n, kWindow, false)
         ->Unit(benchmark::kMicrosecond);
-    for (const std::string method : {"ddb-cay", "sddb-cay", "rk4"}) {
+    for (const std::string method : {"ddb-cay", "sddb-cay", "ddb-exp-exact", "sddb-exp", "rk4"}) {
       benchmark::RegisterBenchmark(("zeitlin-mhd/" + method + size).c_str(), stepMhd, method, 0.5,
                                    n)
           ->Unit(benchmark::kMicrosecond);

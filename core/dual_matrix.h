@@ -15,8 +15,10 @@
 // A product whose factor is exactly zero is not formed: a part that is zero stays zero, and a
 // state with one part zero costs X's one product per product, with X's bits (the magnetic fluid
 // with Θ = 0 is the fluid, systems/zeitlin_mhd.h).
-// There is no Eigenbasis: the exponential methods and the Newton search, which need the
-// spectral calculus of a dual-number matrix, do not run on it (method_table.h says so by name).
+// On the dense and distributed complex parts the backend's Eigenbasis is DualEigenbasis
+// (core/dual_eigenbasis.h, which its users include): the exponential methods run on it; the
+// Newton search's preconditioner it has not (method_table.h says so by name). Other parts (CUDA's)
+// have no Eigenbasis.
 #pragma once
 
 #include <ddb/core/binary_record.h>
@@ -26,6 +28,8 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <complex>
+#include <type_traits>
 
 namespace ddb {
 
@@ -44,7 +48,34 @@ struct DualMatrix {
 };
 
 template <class X>
-struct MatrixBackend<DualMatrix<X>, void> {
+class DualEigenbasis;  // core/dual_eigenbasis.h
+
+namespace detail {
+/// Whether X's complex Eigenbasis works in its own coordinates (kEigenbasisCoordinates), as
+/// DualEigenbasis needs.
+template <class X, class = void>
+struct HasEigenbasisCoordinates : std::false_type {};
+template <class X>
+struct HasEigenbasisCoordinates<
+    X, std::enable_if_t<MatrixBackend<X>::kEigenbasisCoordinates &&
+                        std::is_same_v<typename MatrixBackend<X>::Scalar, std::complex<double>>>>
+    : std::true_type {};
+
+/// MatrixBackend<DualMatrix<X>>'s Eigenbasis, where X's has coordinates.
+template <class X, class = void>
+struct DualEigenbasisMember {};
+template <class X>
+struct DualEigenbasisMember<X, std::enable_if_t<HasEigenbasisCoordinates<X>::value>> {
+  using Eigenbasis = DualEigenbasis<X>;
+};
+}  // namespace detail
+
+/// DualEigenbasis weighs no entries: no orbit preconditioner (core/matrix_backend.h).
+template <class X>
+struct HasOrbitPreconditioner<DualMatrix<X>, void> : std::false_type {};
+
+template <class X>
+struct MatrixBackend<DualMatrix<X>, void> : detail::DualEigenbasisMember<X> {
   using D = DualMatrix<X>;
   using Part = MatrixBackend<X>;
   using Scalar = typename Part::Scalar;

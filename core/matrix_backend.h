@@ -50,6 +50,9 @@ struct MatrixBackend {
   /// core/phase_function.h. Defined in core/skew_hermitian_eigenbasis.h, which its users
   /// include.
   using Eigenbasis = SkewHermitianEigenbasis<X>;
+  /// Eigenbasis works in its own coordinates too (toBasis, fromBasis, mapEntries), on which the
+  /// dual numbers' eigenbasis is built (core/dual_eigenbasis.h).
+  static constexpr bool kEigenbasisCoordinates = true;
 
   // ---- Element-wise operations. Each entry of the result is its own expression of the
   // operands' entries at the same place, computed as written (left to right, no fused
@@ -358,6 +361,13 @@ template <class X, class = void>
 struct HasEigenbasis : std::false_type {};
 template <class X>
 struct HasEigenbasis<X, std::void_t<typename MatrixBackend<X>::Eigenbasis>> : std::true_type {};
+
+/// Whether X's Eigenbasis also weighs entries (setWeights, applyWeights, diagonalPhasesOf), as
+/// the Newton search's preconditioner on the orbit needs
+/// (integrators/solvers/orbit_preconditioner.h): every Eigenbasis does but the dual numbers'
+/// (core/dual_matrix.h).
+template <class X, class = void>
+struct HasOrbitPreconditioner : HasEigenbasis<X> {};
 
 /// requireFinite (errors.h) for a state of any backend: InvalidArgument naming `name` unless
 /// every entry of x is finite.

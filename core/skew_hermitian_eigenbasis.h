@@ -68,18 +68,37 @@ class SkewHermitianEigenbasis {
   /// so that skew-Hermitian `in` maps to skew-Hermitian out. out may be in.
   template <class Weight>
   void applyEntrywise(const Weight& weight, const Matrix& in, Matrix& out) {
-    const Complex& V = vectors();
-    productWithVectors(in);
-    hat_.noalias() = V.adjoint() * product_;
+    toBasis(in, hat_);
     for (Eigen::Index b = 0; b < hat_.cols(); ++b) {
       for (Eigen::Index a = 0; a < hat_.rows(); ++a) hat_(a, b) *= weight(a, b);
     }
-    product_.noalias() = V * hat_;
-    hat_.noalias() = product_ * V.adjoint();
+    fromBasis(hat_, out);
+  }
+
+  /// hat = Vᴴ in V: `in` in the eigenbasis (two products).
+  void toBasis(const Matrix& in, Complex& hat) {
+    productWithVectors(in);
+    hat.noalias() = vectors().adjoint() * product_;
+  }
+
+  /// m_ab ← f(a, b, m_ab) for every entry of a matrix in the eigenbasis' coordinates.
+  template <class F>
+  static void mapEntries(Complex& m, const F& f) {
+    for (Eigen::Index b = 0; b < m.cols(); ++b) {
+      for (Eigen::Index a = 0; a < m.rows(); ++a) m(a, b) = f(a, b, m(a, b));
+    }
+  }
+
+  /// out = V hat Vᴴ projected onto the skew-Hermitian matrices (two products); hat is
+  /// overwritten. The inverse of toBasis on skew-Hermitian matrices.
+  void fromBasis(Complex& hat, Matrix& out) {
+    const Complex& V = vectors();
+    product_.noalias() = V * hat;
+    hat.noalias() = product_ * V.adjoint();
     if constexpr (kReal) {
-      out = hat_.real();
+      out = hat.real();
     } else {
-      out = hat_;
+      out = hat;
     }
     MatrixBackend<Matrix>::makeSkewHermitian(out);
   }

@@ -38,6 +38,8 @@ struct MatrixBackend<DistributedMatrix> {
   using Entries = Eigen::MatrixXcd;
   using Lu = DistributedLu;
   using Eigenbasis = DistributedEigenbasis;
+  /// DistributedEigenbasis works in its own coordinates too (core/matrix_backend.h).
+  static constexpr bool kEigenbasisCoordinates = true;
   using Dense = MatrixBackend<Entries>;
 
   // The element-wise operations (core/matrix_backend.h) on the local arrays.

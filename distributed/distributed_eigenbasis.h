@@ -92,6 +92,32 @@ class DistributedEigenbasis {
     transform(in, out, [&](int k, int l) { return local_weights_(k, l); });
   }
 
+  /// hat = Vᴴ in V: `in` in the eigenbasis (two products); hat takes in's layout.
+  void toBasis(const DistributedMatrix& in, DistributedMatrix& hat) {
+    if (!hat.sameLayout(in)) hat = DistributedMatrix(in.layout());
+    multiplyInto(1.0, in, vectors_, 0.0, product_);                     // in V
+    multiplyInto(1.0, vectors_, product_, 0.0, hat, Factor::kAdjoint);  // Vᴴ in V
+  }
+
+  /// m_ab ← f(a, b, m_ab) for this rank's entries of a matrix in the eigenbasis' coordinates, at
+  /// their global indices.
+  template <class F>
+  void mapEntries(DistributedMatrix& m, const F& f) const {
+    Eigen::MatrixXcd& local = m.local();
+    for (int l = 0; l < local.cols(); ++l) {
+      for (int k = 0; k < local.rows(); ++k) local(k, l) = f(rowOf(k), colOf(l), local(k, l));
+    }
+  }
+
+  /// out = V hat Vᴴ projected onto the skew-Hermitian matrices (two products); hat is left
+  /// as it is. The inverse of toBasis on skew-Hermitian matrices.
+  void fromBasis(DistributedMatrix& hat, DistributedMatrix& out) {
+    multiplyInto(1.0, vectors_, hat, 0.0, product_);  // V hat
+    if (!out.sameLayout(hat)) out = DistributedMatrix(hat.layout());
+    multiplyInto(1.0, product_, vectors_, 0.0, out, Factor::kAsIs, Factor::kAdjoint);
+    adjoints_.makeSkewHermitian(out.local());
+  }
+
   /// The phases of a skew-Hermitian y on x's eigenvectors, on every rank: π_a = Im (Vᴴ y V)_aa
   /// (y's eigenvalues iπ_a when y commutes with x). Two products.
   void diagonalPhasesOf(const DistributedMatrix& y, Eigen::VectorXd& out) {
@@ -115,16 +141,12 @@ class DistributedEigenbasis {
   // weight(k, l).
   template <class Weight>
   void transform(const DistributedMatrix& in, DistributedMatrix& out, const Weight& weight) {
-    multiplyInto(1.0, in, vectors_, 0.0, product_);                      // in V
-    multiplyInto(1.0, vectors_, product_, 0.0, hat_, Factor::kAdjoint);  // Vᴴ in V
+    toBasis(in, hat_);
     Eigen::MatrixXcd& local = hat_.local();
     for (int l = 0; l < local.cols(); ++l) {
       for (int k = 0; k < local.rows(); ++k) local(k, l) *= weight(k, l);
     }
-    multiplyInto(1.0, vectors_, hat_, 0.0, product_);  // V (F ∘ Â)
-    if (!out.sameLayout(in)) out = DistributedMatrix(in.layout());
-    multiplyInto(1.0, product_, vectors_, 0.0, out, Factor::kAsIs, Factor::kAdjoint);
-    adjoints_.makeSkewHermitian(out.local());
+    fromBasis(hat_, out);
   }
 
   // The global row and column of this rank's local row k and column l.

@@ -1,7 +1,9 @@
 // Magnetohydrodynamics on the sphere (systems/zeitlin_mhd.h) on matrices distributed over MPI
 // ranks: SU(N) ⋉ su(N)* on DualMatrix<DistributedMatrix> (two block-cyclic matrices, W and Θ, of
-// one layout), with DistributedPoissonSolver's solve and apply. The method table's rows that need
-// no spectral calculus (makeMethod) and Relaxation run on it; every call is collective.
+// one layout), with DistributedPoissonSolver's solve and apply. The method table's rows that run on
+// the dense magnetic fluid (makeMethod; the exponential ones through DualEigenbasis on
+// DistributedEigenbasis, core/dual_eigenbasis.h) and Relaxation run on it; every call is
+// collective.
 #pragma once
 
 #include <ddb/core/dual_matrix.h>

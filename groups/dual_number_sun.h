@@ -12,6 +12,7 @@
 // Casimirs: tr μᵏ = tr Θᵏ + ε k tr(Θᵏ⁻¹W), both parts of every power trace (casimirs below).
 #pragma once
 
+#include <ddb/core/dual_eigenbasis.h>
 #include <ddb/core/dual_matrix.h>
 #include <ddb/core/errors.h>
 #include <ddb/groups/skew_hermitian_group.h>
@@ -26,8 +27,9 @@ namespace ddb {
 /// SU(N) ⋉ su(N)* with its states in two of a backend's matrices X (DualMatrix<X>): the closed
 /// forms of SkewHermitianGroup in dual-number arithmetic. As for SUNOn<X>, what runs is what is
 /// written against the matrix backend: the system's in-place evaluations, integrate(), and the
-/// methods of the method table that need no spectral calculus (the Cayley family, rk4,
-/// lobatto3c; method_table.h). The Casimirs need dense parts.
+/// methods of the method table, the exponential ones on dense parts (their spectral calculus is
+/// core/dual_eigenbasis.h); not the linearly implicit ones or the Newton search, which need a
+/// preconditioner the dual numbers have not (method_table.h). The Casimirs need dense parts.
 template <class X>
 struct DualNumberSUNOn : SkewHermitianGroup<DualNumberSUNOn<X>, detail::ComplexScalar> {
   using Base = SkewHermitianGroup<DualNumberSUNOn<X>, detail::ComplexScalar>;

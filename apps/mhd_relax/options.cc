@@ -229,8 +229,8 @@ Settings settings(const CLI::App& cli, const Options& o) {
     std::string list;
     for (const std::string& name : methods) list += (list.empty() ? "" : ", ") + name;
     app::usageError("--method", o.method,
-                    "does not run on SU(N) x| su(N)* (its states have no eigendecomposition, or "
-                    "the method is for other groups); valid: " +
+                    "does not run on SU(N) x| su(N)* (it needs the metric alpha * identity and "
+                    "the Newton search's preconditioner, or is for other groups); valid: " +
                         list);
   }
   app::requireChoice("--method", o.method, methods);

@@ -147,15 +147,35 @@ inline constexpr std::array<MethodInfo, 15> kMethods{{
 /// (its preconditioner), and compositions of such entries.
 inline bool needsEigenbasis(const MethodInfo& method);
 
-/// Whether G's states have the spectral calculus: the small groups need none (their exponential
-/// is a closed form), a matrix group's backend may lack it (SU(N) ⋉ su(N)*, core/dual_matrix.h).
-template <class G>
-constexpr bool groupHasEigenbasis() {
+/// Whether the entry needs the Newton search's preconditioner on the orbit (its Eigenbasis's
+/// weights): the linearly implicit factor, and compositions of it.
+inline bool needsOrbitPreconditioner(const MethodInfo& method);
+
+namespace detail {
+/// Trait<G's states>::value on a matrix group; true on the small groups, which need neither the
+/// spectral calculus (their exponential is a closed form) nor the orbit preconditioner (theirs is
+/// the identity).
+template <template <class, class> class Trait, class G>
+constexpr bool statesHave() {
   if constexpr (!isDynamicGroup<G>) {
     return true;
   } else {
-    return HasEigenbasis<typename G::template Dual<double>>::value;
+    return Trait<typename G::template Dual<double>, void>::value;
   }
+}
+}  // namespace detail
+
+/// Whether G's states have the spectral calculus: a matrix group's backend may lack it (a
+/// backend of one's own, core/matrix_backend.h).
+template <class G>
+constexpr bool groupHasEigenbasis() {
+  return detail::statesHave<HasEigenbasis, G>();
+}
+
+/// Whether G's states have the orbit preconditioner: not SU(N) ⋉ su(N)*'s (core/dual_matrix.h).
+template <class G>
+constexpr bool groupHasOrbitPreconditioner() {
+  return detail::statesHave<HasOrbitPreconditioner, G>();
 }
 
 /// The families G belongs to.
@@ -184,6 +204,14 @@ inline bool needsEigenbasis(const MethodInfo& method) {
   return method.kind == MethodKind::kLinearlyImplicitDdb ||
          method.retraction == RetractionKind::kExponential ||
          method.retraction == RetractionKind::kTruncatedExponential2;
+}
+
+inline bool needsOrbitPreconditioner(const MethodInfo& method) {
+  if (method.kind == MethodKind::kComposition) {
+    const MethodInfo* base = findMethod(method.base);
+    return base != nullptr && needsOrbitPreconditioner(*base);
+  }
+  return method.kind == MethodKind::kLinearlyImplicitDdb;
 }
 
 /// The names of the entries that run on any of `families`, in table order.
@@ -226,6 +254,7 @@ template <class G>
 bool methodApplies(const MethodInfo& method, const LiePoissonSystem<G>& system) {
   return (method.groups & groupFamilyOf<G>()) != 0 &&
          (groupHasEigenbasis<G>() || !needsEigenbasis(method)) &&
+         (groupHasOrbitPreconditioner<G>() || !needsOrbitPreconditioner(method)) &&
          (!method.needs_lagrangian || system.lagrangian() != nullptr) &&
          (!method.needs_scalar_metric || asScalarMetric(system.metric()) != nullptr);
 }
@@ -270,6 +299,21 @@ template <class G>
                "needs the spectral calculus of the matrices (the exponential map, or the Newton "
                "search's preconditioner), which " +
                    std::string(G::kName) + "'s have not; these run on it: " + list);
+}
+
+/// The message of an entry that needs the orbit preconditioner on a group whose matrices lack it.
+template <class G>
+[[noreturn]] void throwNeedsOrbitPreconditioner(const std::string& name) {
+  std::string list;
+  for (const MethodInfo& m : kMethods) {
+    if ((m.groups & groupFamilyOf<G>()) != 0 && !needsOrbitPreconditioner(m) &&
+        (groupHasEigenbasis<G>() || !needsEigenbasis(m))) {
+      list += (list.empty() ? "" : ", ") + std::string(m.name);
+    }
+  }
+  throwInvalid("method", name,
+               "needs the Newton search's preconditioner on the orbit, which " +
+                   std::string(G::kName) + "'s matrices have not; these run on it: " + list);
 }
 
 template <class G>
@@ -324,6 +368,9 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(const MethodInfo& method,
   const std::string name(method.name);
   if ((method.groups & groupFamilyOf<G>()) == 0) detail::throwNotAMethod<G>(name);
   if (!groupHasEigenbasis<G>() && needsEigenbasis(method)) detail::throwNeedsEigenbasis<G>(name);
+  if (!groupHasOrbitPreconditioner<G>() && needsOrbitPreconditioner(method)) {
+    detail::throwNeedsOrbitPreconditioner<G>(name);
+  }
   if (method.needs_lagrangian && system->lagrangian() == nullptr) {
     throwInvalid("method", name, "needs a Lagrangian, which '" + system->name() + "' has not");
   }
@@ -342,7 +389,7 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(const MethodInfo& method,
     case MethodKind::kDdb:
       return detail::withRetraction<G, Ddb>(method.retraction, system, form);
     case MethodKind::kLinearlyImplicitDdb:
-      if constexpr (groupHasEigenbasis<G>()) {
+      if constexpr (groupHasOrbitPreconditioner<G>()) {
         return detail::withRetraction<G, LinearlyImplicitDdb>(method.retraction, system, form);
       }
       break;

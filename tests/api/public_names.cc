@@ -5,6 +5,7 @@
 // Every header the docs show, as <ddb/...> or as a path of the library's folders.
 #include <ddb/core/autodiff.h>
 #include <ddb/core/dissipation_metric.h>
+#include <ddb/core/dual_eigenbasis.h>
 #include <ddb/core/dual_matrix.h>
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lagrangian.h>
@@ -896,7 +897,15 @@ static_assert(std::is_base_of_v<ddb::DissipationMetric<ddb::DualNumberSUN>,
   method->advance(mu, 0.0, 0.01);
   use(mu.real, mu.eps, diagnostics.kineticEnergy(mu), diagnostics.magneticEnergy(mu),
       diagnostics.crossHelicity(mu), diagnostics.equilibriumResidual(mu),
-      ddb::DualNumberSUN::casimirs(mu), ddb::needsEigenbasis(ddb::kMethods[0]));
+      ddb::DualNumberSUN::casimirs(mu), ddb::needsEigenbasis(ddb::kMethods[0]),
+      ddb::needsOrbitPreconditioner(ddb::kMethods[0]),
+      ddb::HasOrbitPreconditioner<ddb::DualMatrix<Eigen::MatrixXcd>>::value);
+  // The exponential methods' spectral calculus on dual-number matrices.
+  ddb::DualEigenbasis<Eigen::MatrixXcd> basis;
+  if (basis.compute(mu)) {
+    basis.apply(ddb::PhaseFunction::kCoadjointIncrement, 0.1, mu, mu);
+    use(basis.adRadius());
+  }
 }
 
 }  // namespace

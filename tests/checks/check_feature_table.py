@@ -4,9 +4,11 @@
 The rows of kMethods (integrators/methods/method_table.h) give each method's group families,
 whether it needs a Lagrangian or the metric α·I, its orders, whether it keeps the Casimirs and
 whether it needs the matrices' spectral calculus (an exponential retraction, the linearly implicit
-factor's Newton search, or a composition of such a row: method_table.h's needsEigenbasis); the
-systems below give their family, whether they have a Lagrangian, whether their metric is α·I and
-whether their matrices have the spectral calculus. From these this script makes the table the README must hold between its two markers.
+factor's Newton search, or a composition of such a row: method_table.h's needsEigenbasis) and
+whether it needs the orbit preconditioner's weights too (the linearly implicit factor:
+needsOrbitPreconditioner); the systems below give their family, whether they have a Lagrangian,
+whether their metric is α·I and whether their matrices have the spectral calculus and the
+preconditioner. From these this script makes the table the README must hold between its two markers.
 A method that runs on a system is marked ✓, or, on the GPU, "built, not yet run on a GPU": the
 CUDA backend is compiled and its host-side parts tested, but none of its device tests has run on
 a GPU yet (docs/results/gpu.md); a method that does not run there is marked —.
@@ -28,22 +30,23 @@ FAMILY = {"kFixedSizeGroups": 1, "kMatrixGroups": 2, "kBackendMatrixGroups": 4}
 RUNS = "✓"
 BUILT_NOT_RUN = "built, not yet run on a GPU"
 
-# (column, group family, has a Lagrangian, metric α·I, spectral calculus, the mark of a method
-# that runs there): systems/*.h and systems/zeitlin_fluid_on_backend.h; the heavy top has no
-# regular Lagrangian, the heavy top and the Kirchhoff bodies have k♯ = α diag(k); the magnetic
-# fluid's dual-number matrices have no spectral calculus and its metric swaps their parts
+# (column, group family, has a Lagrangian, metric α·I, spectral calculus, orbit preconditioner,
+# the mark of a method that runs there): systems/*.h and systems/zeitlin_fluid_on_backend.h; the
+# heavy top has no regular Lagrangian, the heavy top and the Kirchhoff bodies have
+# k♯ = α diag(k); the magnetic fluid's dual-number matrices have the spectral calculus
+# (core/dual_eigenbasis.h) but not the preconditioner, and its metric swaps their parts
 # (systems/zeitlin_mhd.h). The GPU's column stays
 # BUILT_NOT_RUN until the device tests have run on a GPU (docs/results/gpu.md).
 SYSTEMS = [
-    ("rigid body", 1, True, True, True, RUNS),
-    ("heavy top", 1, False, False, True, RUNS),
-    ("Kirchhoff", 1, True, False, True, RUNS),
-    ("planar Kirchhoff, SE(2)", 1, True, False, True, RUNS),
-    ("Manakov, SO(N)", 2, False, True, True, RUNS),
-    ("fluid, SU(N)", 2, False, True, True, RUNS),
-    ("fluid on MPI ranks", 4, False, True, True, RUNS),
-    ("fluid on one GPU", 4, False, True, True, BUILT_NOT_RUN),
-    ("MHD, SU(N) ⋉ su(N)*", 4, False, False, False, RUNS),
+    ("rigid body", 1, True, True, True, True, RUNS),
+    ("heavy top", 1, False, False, True, True, RUNS),
+    ("Kirchhoff", 1, True, False, True, True, RUNS),
+    ("planar Kirchhoff, SE(2)", 1, True, False, True, True, RUNS),
+    ("Manakov, SO(N)", 2, False, True, True, True, RUNS),
+    ("fluid, SU(N)", 2, False, True, True, True, RUNS),
+    ("fluid on MPI ranks", 4, False, True, True, True, RUNS),
+    ("fluid on one GPU", 4, False, True, True, True, BUILT_NOT_RUN),
+    ("MHD, SU(N) ⋉ su(N)*", 4, False, False, True, False, RUNS),
 ]
 
 ROW = re.compile(
@@ -70,17 +73,25 @@ def methods(root):
         return kind == "kLinearlyImplicitDdb" or retraction in ("kExponential",
                                                                 "kTruncatedExponential2")
 
-    return [row[:7] + (spectral(name),) for name, row in rows.items()]
+    def preconditioned(name):
+        _, _, _, _, _, _, _, kind, _, base = rows[name]
+        if kind == "kComposition":
+            return preconditioned(base)
+        return kind == "kLinearlyImplicitDdb"
+
+    return [row[:7] + (spectral(name), preconditioned(name)) for name, row in rows.items()]
 
 
 def table(root):
     head = ["method"] + [s[0] for s in SYSTEMS] + ["order", "keeps Casimirs"]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-    for name, families, casimirs, lagrangian, scalar, order, order0, spectral in methods(root):
+    for (name, families, casimirs, lagrangian, scalar, order, order0, spectral,
+         preconditioned) in methods(root):
         cells = [f"`{name}`"]
-        for _, family, has_lagrangian, has_scalar, has_spectral, mark in SYSTEMS:
+        for _, family, has_lagrangian, has_scalar, has_spectral, has_weights, mark in SYSTEMS:
             runs = (families & family) and (has_lagrangian or not lagrangian) and (
-                has_scalar or not scalar) and (has_spectral or not spectral)
+                has_scalar or not scalar) and (has_spectral or not spectral) and (
+                has_weights or not preconditioned)
             cells.append(mark if runs else "—")
         if order == 0:
             cells.append("adaptive")

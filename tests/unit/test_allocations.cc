@@ -7,6 +7,7 @@
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_forcing.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
+#include <ddb/systems/zeitlin_mhd.h>
 #include <ddb/systems/zeitlin_viscosity.h>
 #include <gtest/gtest.h>
 
@@ -68,11 +69,15 @@ TEST(Allocations, Lobatto3cOnSuNAndSoNAllocatesNothingPerStep) {
 // OneStepMethod::advance's comment says: the DDB family with either retraction (the
 // exponential's eigendecompositions through LAPACK's ?heevd with kept workspaces; Eigen's
 // eigensolver, the fallback without LAPACK, allocates), RK4, Lobatto IIIC and the reference
-// (odeint's stepper states are sized once).
+// (odeint's stepper states are sized once); on the magnetic fluid every method that runs there,
+// the exponential ones through the dual numbers' eigenbasis (core/dual_eigenbasis.h).
 TEST(Allocations, EveryMatrixGroupMethodStepsWithoutAllocating) {
   Eigen::VectorXd J(5);
   J << 0.3, 0.5, 0.8, 1.1, 1.7;
   const Eigen::MatrixXd M = SON::vee(Eigen::MatrixXd(Eigen::MatrixXd::Random(5, 5)));
+  const auto mhd = makeZeitlinMhd(16, 0.5);
+  const DualMatrix<Eigen::MatrixXcd> mu =
+      zeitlinMhdState(randomVorticity(16, 1), 0.05 * randomVorticity(16, 2));
   for (const MethodInfo& info : kMethods) {
     if ((info.groups & kMatrixGroups) == 0) continue;
 #ifndef DDB_USE_LAPACK
@@ -88,6 +93,9 @@ TEST(Allocations, EveryMatrixGroupMethodStepsWithoutAllocating) {
         allocationsPerStep<SUN>(makeZeitlinFluid(16, 0.5), randomVorticity(16, 1), 0.01, name), 0)
         << name;
     EXPECT_EQ(allocationsPerStep<SON>(makeManakovBody(J, 0.5), M, 0.05, name), 0) << name;
+    if (methodApplies(info, *mhd)) {
+      EXPECT_EQ(allocationsPerStep<DualNumberSUN>(mhd, mu, 0.01, name), 0) << name << ", MHD";
+    }
   }
 }
 
