@@ -67,9 +67,9 @@ inline CompositeRule compositeRuleFor(double c) {
   CompositeRule rule;
   rule.panels = c > 4.0 ? static_cast<int>(std::ceil(c / 4.0)) : 1;
   const double local = c / rule.panels;
+  if (local == 0.0) return rule;  // the integrand is linear in t: two nodes are exact
   for (rule.nodes = 2; rule.nodes < GaussLegendreRule::kMaxNodes; ++rule.nodes) {
     const int q = rule.nodes;
-    if (local == 0.0) break;
     const double log_factor =
         4.0 * std::lgamma(q + 1.0) - std::log(2.0 * q + 1.0) - 3.0 * std::lgamma(2.0 * q + 1.0);
     const double log_bound = log_factor + (2 * q - 1) * std::log(local) + std::log(local + 2.0 * q);

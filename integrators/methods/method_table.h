@@ -196,22 +196,26 @@ inline const MethodInfo* findMethod(std::string_view name) {
   return nullptr;
 }
 
+namespace detail {
+/// The entry a composition composes (its base's recipe), else the entry itself; nullptr for a
+/// composition of a name that is not in the table.
+inline const MethodInfo* recipeOf(const MethodInfo& method) {
+  if (method.kind != MethodKind::kComposition) return &method;
+  const MethodInfo* base = findMethod(method.base);
+  return base != nullptr ? recipeOf(*base) : nullptr;
+}
+}  // namespace detail
+
 inline bool needsEigenbasis(const MethodInfo& method) {
-  if (method.kind == MethodKind::kComposition) {
-    const MethodInfo* base = findMethod(method.base);
-    return base != nullptr && needsEigenbasis(*base);
-  }
-  return method.kind == MethodKind::kLinearlyImplicitDdb ||
-         method.retraction == RetractionKind::kExponential ||
-         method.retraction == RetractionKind::kTruncatedExponential2;
+  const MethodInfo* recipe = detail::recipeOf(method);
+  return recipe != nullptr && (recipe->kind == MethodKind::kLinearlyImplicitDdb ||
+                               recipe->retraction == RetractionKind::kExponential ||
+                               recipe->retraction == RetractionKind::kTruncatedExponential2);
 }
 
 inline bool needsOrbitPreconditioner(const MethodInfo& method) {
-  if (method.kind == MethodKind::kComposition) {
-    const MethodInfo* base = findMethod(method.base);
-    return base != nullptr && needsOrbitPreconditioner(*base);
-  }
-  return method.kind == MethodKind::kLinearlyImplicitDdb;
+  const MethodInfo* recipe = detail::recipeOf(method);
+  return recipe != nullptr && recipe->kind == MethodKind::kLinearlyImplicitDdb;
 }
 
 /// The names of the entries that run on any of `families`, in table order.
@@ -286,34 +290,37 @@ template <class G>
   }
 }
 
-/// The message of an entry that needs the spectral calculus on a group whose matrices lack it.
+/// The entries of G's family that G's matrices can build (the spectral calculus and the
+/// preconditioner where they need them), as a message lists them: "a, b, c".
 template <class G>
-[[noreturn]] void throwNeedsEigenbasis(const std::string& name) {
+std::string buildableMethodList() {
   std::string list;
   for (const MethodInfo& m : kMethods) {
-    if ((m.groups & groupFamilyOf<G>()) != 0 && !needsEigenbasis(m)) {
+    if ((m.groups & groupFamilyOf<G>()) != 0 && (groupHasEigenbasis<G>() || !needsEigenbasis(m)) &&
+        (groupHasOrbitPreconditioner<G>() || !needsOrbitPreconditioner(m))) {
       list += (list.empty() ? "" : ", ") + std::string(m.name);
     }
   }
+  return list;
+}
+
+/// The message of an entry that needs the spectral calculus on a group whose matrices lack it.
+template <class G>
+[[noreturn]] void throwNeedsEigenbasis(const std::string& name) {
   throwInvalid("method", name,
                "needs the spectral calculus of the matrices (the exponential map, or the Newton "
                "search's preconditioner), which " +
-                   std::string(G::kName) + "'s have not; these run on it: " + list);
+                   std::string(G::kName) +
+                   "'s have not; these run on it: " + buildableMethodList<G>());
 }
 
 /// The message of an entry that needs the orbit preconditioner on a group whose matrices lack it.
 template <class G>
 [[noreturn]] void throwNeedsOrbitPreconditioner(const std::string& name) {
-  std::string list;
-  for (const MethodInfo& m : kMethods) {
-    if ((m.groups & groupFamilyOf<G>()) != 0 && !needsOrbitPreconditioner(m) &&
-        (groupHasEigenbasis<G>() || !needsEigenbasis(m))) {
-      list += (list.empty() ? "" : ", ") + std::string(m.name);
-    }
-  }
   throwInvalid("method", name,
                "needs the Newton search's preconditioner on the orbit, which " +
-                   std::string(G::kName) + "'s matrices have not; these run on it: " + list);
+                   std::string(G::kName) +
+                   "'s matrices have not; these run on it: " + buildableMethodList<G>());
 }
 
 template <class G>

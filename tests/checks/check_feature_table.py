@@ -66,18 +66,18 @@ def methods(root):
         rows[name] = (name, families, casimirs == "true", lagrangian == "true", scalar == "true",
                       int(order), int(order0), kind, retraction, base)
 
-    def spectral(name):
+    def recipe(name):
+        """(kind, retraction) of the row a composition composes, else of the row itself."""
         _, _, _, _, _, _, _, kind, retraction, base = rows[name]
-        if kind == "kComposition":
-            return spectral(base)
+        return recipe(base) if kind == "kComposition" else (kind, retraction)
+
+    def spectral(name):
+        kind, retraction = recipe(name)
         return kind == "kLinearlyImplicitDdb" or retraction in ("kExponential",
                                                                 "kTruncatedExponential2")
 
     def preconditioned(name):
-        _, _, _, _, _, _, _, kind, _, base = rows[name]
-        if kind == "kComposition":
-            return preconditioned(base)
-        return kind == "kLinearlyImplicitDdb"
+        return recipe(name)[0] == "kLinearlyImplicitDdb"
 
     return [row[:7] + (spectral(name), preconditioned(name)) for name, row in rows.items()]
 
