@@ -4,13 +4,16 @@
 // so Casimirs are constant and dH/dt = -k(ad*_ξ μ, ad*_ξ μ) (Proposition 3.3).
 #pragma once
 
+#include <ddb/core/butcher_tableau.h>
 #include <ddb/core/detail/jet_lift.h>
 #include <ddb/core/dissipation_metric.h>
 #include <ddb/core/errors.h>
+#include <ddb/core/explicit_runge_kutta_sweep.h>
 #include <ddb/core/group_traits.h>
 #include <ddb/core/lagrangian.h>
 #include <ddb/core/matrix_backend.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -68,6 +71,28 @@ struct FixedSizeFieldWorkspace {
 template <class G>
 using FieldWorkspace =
     std::conditional_t<isDynamicGroup<G>, MatrixFieldWorkspace<G>, FixedSizeFieldWorkspace<G>>;
+
+/// The workspaces of LiePoissonSystem::explicitStep, an explicit S-stage Runge–Kutta step: the
+/// slopes, the stage argument, the weighted sum and the field's parts. A small group's are
+/// fixed-size vectors, best kept on the caller's stack; a matrix group's are sized once by
+/// resize().
+template <class G, int S>
+struct ExplicitStages {
+  using Dual = typename G::template Dual<double>;
+  std::array<Dual, S> slopes;
+  Dual stage, sum;
+  FieldWorkspace<G> field;
+
+  /// Every workspace of mu's shape (and layout); nothing if they have it already.
+  void resize(const Dual& mu) {
+    using B = MatrixBackend<Dual>;
+    field.resize(mu);
+    if (B::sameShape(stage, mu)) return;
+    for (Dual& k : slopes) B::zeroLike(k, mu);
+    B::zeroLike(stage, mu);
+    B::zeroLike(sum, mu);
+  }
+};
 
 /// Matrix groups: ξ = P ∂H/∂μ(Pμ), with Pμ into `argument`. The one place where a matrix
 /// group's Hamiltonian is evaluated (docs/reference/conventions.md §2, "Systems on matrix groups");
@@ -238,6 +263,19 @@ class LiePoissonSystem {
     }
   }
 
+  /// One step μ ← μ + h Σ b_i k_i of the explicit four-stage `tableau` (ExplicitRungeKutta<G,
+  /// 4>: `rk4`), with its stages in w (core/explicit_runge_kutta_sweep.h). The system takes the
+  /// step so that a TypedLiePoissonSystem evaluates every stage with its field inlined: one
+  /// virtual call a step instead of one a stage, and a small group's stages stay in registers
+  /// (through a call they pass by memory, where a load that spans two stores of the caller
+  /// stalls: docs/design/architecture.md, "Explicit steps"). The bits of the sweep with
+  /// vectorFieldInto, which this generic system runs.
+  virtual void explicitStep(const ButcherTableau<4>& tableau, double h, ExplicitStages<G, 4>& w,
+                            Dual& mu) const {
+    explicitRungeKuttaSweep(tableau, h, mu, w,
+                            [&](const Dual& x, Dual& out) { vectorFieldInto(x, w.field, out); });
+  }
+
   /// In place: μ̇ into out as vectorFieldInto, and its parts into w on every group: the
   /// argument H saw, ξ, ad*_ξ μ (`commutator`), φ = k♯(ad*_ξ μ) and ξ + φ (`forced`).
   void fieldPartsInto(const Dual& mu, FieldWorkspace<G>& w, Dual& out) const {
@@ -372,6 +410,15 @@ class TypedLiePoissonSystem final : public LiePoissonSystem<G> {
                         const std::shared_ptr<const K>& metric,
                         std::shared_ptr<const Lagrangian<G>> lagrangian = nullptr)
       : LiePoissonSystem<G>(std::move(name), hamiltonian, metric, std::move(lagrangian)) {}
+
+  // The base's sweep, compiled where the system's type is known and final: its calls to
+  // fieldAt and fieldInto are this class's, inlined.
+  void explicitStep(const ButcherTableau<4>& tableau, double h, ExplicitStages<G, 4>& w,
+                    Dual& mu) const override {
+    explicitRungeKuttaSweep(tableau, h, mu, w, [&](const Dual& x, Dual& out) {
+      this->vectorFieldInto(x, w.field, out);
+    });
+  }
 
  protected:
   // The base holds exactly these objects (it has no assignment), so the casts are exact.

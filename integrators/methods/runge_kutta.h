@@ -6,6 +6,7 @@
 
 #include <ddb/core/detail/tiny_solver.h>
 #include <ddb/core/errors.h>
+#include <ddb/core/explicit_runge_kutta_sweep.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/core/matrix_backend.h>
 #include <ddb/integrators/methods/butcher_tableau.h>
@@ -34,72 +35,38 @@ class ExplicitRungeKutta : public OneStepMethod<G> {
 
   Dual step(const Dual& mu, double t, double h) override { return this->stepInPlace(mu, t, h); }
 
-  /// In place, the vector field evaluated into kept workspaces
-  /// (LiePoissonSystem::vectorFieldInto): no allocation once the size is known. The stages'
-  /// arithmetic is the backend's (core/matrix_backend.h: Eigen's expressions on a small group's
-  /// vectors, the matrix backend's operations on a matrix group's states).
+  /// In place, the stages in workspaces (ExplicitStages): on the stack for a fixed-size state,
+  /// where they stay in registers (kept in the object they would be stored and reloaded around
+  /// every field evaluation: 7% of a heavy-top step), kept and sized once for a matrix state: no
+  /// allocation once the size is known. The stages' arithmetic is the backend's
+  /// (core/explicit_runge_kutta_sweep.h). A four-stage tableau's step is the system's own
+  /// (LiePoissonSystem::explicitStep), which a TypedLiePoissonSystem takes with its field
+  /// inlined; other tableaus evaluate the field through vectorFieldInto, the same sweep and bits.
   void advance(Dual& mu, double, double h) override {
-    // A fixed-size state's stages on the stack, where they stay in registers (kept in the object
-    // they would be stored and reloaded around every field evaluation: 7% of a heavy-top step);
-    // a matrix state's kept, sized once.
     if constexpr (hasFixedSize<Dual>) {
-      Stages w;
-      run(w, mu, h);
+      ExplicitStages<G, S> w;
+      sweep(w, mu, h);
     } else {
       stages_.resize(mu);
-      run(stages_, mu, h);
+      sweep(stages_, mu, h);
     }
   }
 
  private:
-  using B = MatrixBackend<Dual>;
-
-  struct Stages {
-    std::array<Dual, S> slopes;
-    Dual stage, sum;
-    FieldWorkspace<G> field;
-
-    /// Every workspace of mu's shape (and layout); nothing if they have it already.
-    void resize(const Dual& mu) {
-      field.resize(mu);
-      if (B::sameShape(stage, mu)) return;
-      for (Dual& k : slopes) B::zeroLike(k, mu);
-      B::zeroLike(stage, mu);
-      B::zeroLike(sum, mu);
+  EIGEN_ALWAYS_INLINE void sweep(ExplicitStages<G, S>& w, Dual& mu, double h) const {
+    if constexpr (S == 4) {
+      system_->explicitStep(tableau_, h, w, mu);
+    } else {
+      explicitRungeKuttaSweep(tableau_, h, mu, w, [&](const Dual& x, Dual& out) {
+        system_->vectorFieldInto(x, w.field, out);
+      });
     }
-  };
-
-  // The stage loops are unrolled (the tableau stays data): the slopes of a small system then
-  // stay in registers between vector-field evaluations (docs/design/architecture.md, "Explicit
-  // steps"). The operations and their order are those of the plain loops (the same roundings
-  // without floating-point contraction).
-  EIGEN_ALWAYS_INLINE void run(Stages& w, Dual& mu, double h) {
-    runStages(mu, h, w.slopes, w.stage, w.sum,
-              [&](const Dual& x, Dual& out) { system_->vectorFieldInto(x, w.field, out); });
-  }
-
-  template <class Field>
-  EIGEN_ALWAYS_INLINE void runStages(Dual& mu, double h, std::array<Dual, S>& k, Dual& stage,
-                                     Dual& sum, const Field& field) {
-#pragma GCC unroll 16
-    for (int i = 0; i < S; ++i) {
-      B::copy(mu, stage);
-#pragma GCC unroll 16
-      for (int j = 0; j < i; ++j) {
-        if (tableau_.a[i][j] != 0.0) B::axpy(h * tableau_.a[i][j], k[j], stage);
-      }
-      field(stage, k[i]);
-    }
-    B::scale(tableau_.b[0], k[0], sum);
-#pragma GCC unroll 16
-    for (int i = 1; i < S; ++i) B::axpy(tableau_.b[i], k[i], sum);
-    B::axpy(h, sum, mu);
   }
 
   std::shared_ptr<const LiePoissonSystem<G>> system_;
   ButcherTableau<S> tableau_;
   struct NoStages {};
-  std::conditional_t<hasFixedSize<Dual>, NoStages, Stages> stages_;
+  std::conditional_t<hasFixedSize<Dual>, NoStages, ExplicitStages<G, S>> stages_;
 };
 
 template <class G, int S>

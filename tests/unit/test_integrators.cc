@@ -4,12 +4,14 @@
 #include <ddb/integrators/drivers/run.h>
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/integrators/methods/reference.h>
+#include <ddb/systems/heavy_top.h>
 #include <ddb/systems/paper_scenarios.h>
 #include <ddb/systems/rigid_body.h>
 #include <gmock/gmock.h>
 
 #include <array>
 #include <cmath>
+#include <typeinfo>
 
 #include "order_fit.h"
 #include "test_support.h"
@@ -232,6 +234,61 @@ TEST(ExplicitRungeKutta, Rk4IsTheClassicalFormulaWrittenOut) {
           << "h " << h;
     }
   }
+}
+
+// rk4's step through the system's own sweep (LiePoissonSystem::explicitStep): a system of
+// makeLiePoissonSystem compiles it with its field inlined, one built by LiePoissonSystem's own
+// constructor evaluates each stage through the base classes' virtual calls. The same
+// operations in the same order, so the same bits at every step, on SO(3) and SE(3).
+template <class G>
+void expectTheSameRk4Bits(std::shared_ptr<const LiePoissonSystem<G>> typed,
+                          std::shared_ptr<const LiePoissonSystem<G>> generic,
+                          const typename G::template Dual<double>& mu0, double h) {
+  ASSERT_NE(typeid(*typed), typeid(*generic));
+  ExplicitRungeKutta<G, 4> fast(typed, kClassicalRk4), plain(generic, kClassicalRk4);
+  typename G::template Dual<double> a = mu0, b = mu0;
+  for (int k = 0; k < 500; ++k) {
+    fast.advance(a, k * h, h);
+    plain.advance(b, k * h, h);
+    ASSERT_TRUE((a.array() == b.array()).all()) << "step " << k;
+  }
+  EXPECT_GT((a - mu0).norm(), 0.1);  // the states moved
+}
+
+TEST(ExplicitRungeKutta, TheTypedSystemsStepIsTheGenericSweepToTheBit) {
+  const double alpha = 0.5;
+  expectTheSameRk4Bits<SO3>(makeRigidBody(kInertia, alpha),
+                            std::make_shared<const LiePoissonSystem<SO3>>(
+                                "generic", std::make_shared<const RigidBodyHamiltonian>(kInertia),
+                                std::make_shared<const ScaledIdentityMetric<SO3>>(alpha)),
+                            kM0, 0.1);
+  const HeavyTopSetup top;
+  expectTheSameRk4Bits<SE3>(
+      top.system(),
+      std::make_shared<const LiePoissonSystem<SE3>>(
+          "generic", std::make_shared<const HeavyTopHamiltonian>(top.inertia, top.mgl, top.chi),
+          std::make_shared<const DiagonalMetric<SE3>>(top.alpha, top.metric)),
+      top.mu0, 0.05);
+}
+
+// A tableau of other than four stages takes the same sweep with the field through
+// vectorFieldInto: Kutta's third-order method (Hairer, Nørsett, Wanner I, II.1, Table 1.1),
+// its order fitted against the reference solver.
+TEST(ExplicitRungeKutta, KuttasThreeStageTableauHasOrderThree) {
+  const ButcherTableau<3> kutta{"kutta3",
+                                {{{0.0, 0.0, 0.0}, {0.5, 0.0, 0.0}, {-1.0, 2.0, 0.0}}},
+                                {1.0 / 6, 2.0 / 3, 1.0 / 6},
+                                {0.0, 0.5, 1.0}};
+  const double alpha = 0.5, t_end = 10.0;
+  const Eigen::Vector3d reference = referenceState(alpha, t_end);
+  std::vector<double> errors;
+  for (double h : kRkSteps) {
+    ExplicitRungeKutta<SO3, 3> method(makeRigidBody(kInertia, alpha), kutta);
+    errors.push_back((finalState(method, h, t_end) - reference).norm());
+  }
+  const OrderFit fit = fitOrder(kRkSteps, errors);
+  ASSERT_GE(fit.points, 4);
+  EXPECT_NEAR(fit.slope, 3.0, 0.25);
 }
 
 TEST(Integrate, RejectsBadInputNamingIt) {
