@@ -6,7 +6,6 @@
 
 #include <ddb/core/detail/tiny_solver.h>
 #include <ddb/core/errors.h>
-#include <ddb/core/explicit_runge_kutta_sweep.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/core/matrix_backend.h>
 #include <ddb/integrators/methods/butcher_tableau.h>
@@ -57,9 +56,7 @@ class ExplicitRungeKutta : public OneStepMethod<G> {
     if constexpr (S == 4) {
       system_->explicitStep(tableau_, h, w, mu);
     } else {
-      explicitRungeKuttaSweep(tableau_, h, mu, w, [&](const Dual& x, Dual& out) {
-        system_->vectorFieldInto(x, w.field, out);
-      });
+      LiePoissonSystem<G>::explicitSweep(*system_, tableau_, h, w, mu);
     }
   }
 

@@ -244,7 +244,10 @@ template <class G>
 void expectTheSameRk4Bits(std::shared_ptr<const LiePoissonSystem<G>> typed,
                           std::shared_ptr<const LiePoissonSystem<G>> generic,
                           const typename G::template Dual<double>& mu0, double h) {
-  ASSERT_NE(typeid(*typed), typeid(*generic));
+  const LiePoissonSystem<G>& fast_system = *typed;
+  const LiePoissonSystem<G>& plain_system = *generic;
+  ASSERT_NE(typeid(fast_system), typeid(LiePoissonSystem<G>));  // a TypedLiePoissonSystem
+  ASSERT_EQ(typeid(plain_system), typeid(LiePoissonSystem<G>));
   ExplicitRungeKutta<G, 4> fast(typed, kClassicalRk4), plain(generic, kClassicalRk4);
   typename G::template Dual<double> a = mu0, b = mu0;
   for (int k = 0; k < 500; ++k) {
