@@ -11,13 +11,13 @@
 // (docs/reference/conventions.md §2, "Zeitlin's fluid"); projecting them would change the scheme.
 #pragma once
 
+#include <ddb/core/detail/normal_matrix_functions.h>
 #include <ddb/core/errors.h>
 #include <ddb/core/lie_group.h>
 #include <ddb/core/matrix_backend.h>
 #include <ddb/core/skew_hermitian_eigenbasis.h>
 
 #include <Eigen/Core>
-#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
@@ -73,18 +73,12 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
   /// is diagonal), the branch with eigenvalues of −i log g in (−π, π].
   template <class X>
   static X log(const X& g) {
-    const Eigen::ComplexSchur<Complex> schur(toComplex(g));
-    const Complex& U = schur.matrixU();
-    const Eigen::VectorXcd logs = schur.matrixT().diagonal().unaryExpr(
-        [](const std::complex<double>& l) { return std::complex<double>(0, std::arg(l)); });
-    return vee(fromComplex<X>(U * logs.asDiagonal() * U.adjoint()));
+    return vee(fromComplex<X>(detail::unitaryLogarithm(toComplex(g))));
   }
 
   template <class X>
   static Casimirs<double> casimirs(const X& mu) {
-    Eigen::SelfAdjointEigenSolver<Complex> eigen(toComplex(mu) * std::complex<double>(0, -1),
-                                                 Eigen::EigenvaluesOnly);
-    return eigen.eigenvalues();  // ascending
+    return detail::hermitianEigenvalues(toComplex(mu) * std::complex<double>(0, -1));
   }
 
   /// ‖μ‖₂ of a skew-Hermitian μ: the largest |eigenvalue| of −iμ (its spectrum, a Casimir).

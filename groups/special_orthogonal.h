@@ -11,11 +11,11 @@
 // The bracket, ad*, Ad*, the Cayley map and its tangents are LieGroupBase's, through hat and vee.
 #pragma once
 
+#include <ddb/core/detail/normal_matrix_functions.h>
 #include <ddb/core/detail/scalar.h>
 #include <ddb/core/lie_group.h>
 
 #include <Eigen/Core>
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -138,12 +138,8 @@ struct SpecialOrthogonal : LieGroupBase<SpecialOrthogonal<N>> {
   /// log(R) = U diag(i arg λ) Uᴴ from the complex Schur form of R (orthogonal, so normal: the form
   /// is diagonal), the branch with the eigenvalues of −i log R in (−π, π].
   static Algebra<double> log(const Matrix<double>& R) {
-    using Complex = Eigen::Matrix<std::complex<double>, N, N>;
-    const Eigen::ComplexSchur<Complex> schur(Complex(R.template cast<std::complex<double>>()));
-    const Complex& U = schur.matrixU();
-    Complex logs = Complex::Zero();
-    for (int a = 0; a < N; ++a) logs(a, a) = {0.0, std::arg(schur.matrixT()(a, a))};
-    const Matrix<double> X = (U * logs * U.adjoint()).real();
+    const Matrix<double> X =
+        detail::unitaryLogarithm(R.template cast<std::complex<double>>()).real();
     return vee<double>(Matrix<double>((X - X.transpose()) * 0.5));
   }
 
@@ -172,11 +168,8 @@ struct SpecialOrthogonal : LieGroupBase<SpecialOrthogonal<N>> {
   /// eigenvalues λ of −iX, so the radius is the sum of the two largest λ (they come in ± pairs).
   /// exp is one-to-one below π and dexp⁻¹ has its poles at 2π, as for SO3 (|x| at N = 3).
   static double adRadius(const Algebra<double>& x) {
-    using Complex = Eigen::Matrix<std::complex<double>, N, N>;
-    const Complex H =
-        hat<double>(x).template cast<std::complex<double>>() * std::complex<double>(0.0, -1.0);
-    const Eigen::SelfAdjointEigenSolver<Complex> eigen(H, Eigen::EigenvaluesOnly);
-    const auto& lambda = eigen.eigenvalues();  // ascending
+    const Eigen::VectorXd lambda = detail::hermitianEigenvalues(
+        hat<double>(x).template cast<std::complex<double>>() * std::complex<double>(0.0, -1.0));
     return std::max(0.0, lambda(N - 1) + lambda(N - 2));
   }
 };
