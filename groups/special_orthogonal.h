@@ -168,9 +168,7 @@ struct SpecialOrthogonal : LieGroupBase<SpecialOrthogonal<N>> {
   /// eigenvalues λ of −iX, so the radius is the sum of the two largest λ (they come in ± pairs).
   /// exp is one-to-one below π and dexp⁻¹ has its poles at 2π, as for SO3 (|x| at N = 3).
   static double adRadius(const Algebra<double>& x) {
-    const Eigen::VectorXd lambda = detail::hermitianEigenvalues(
-        hat<double>(x).template cast<std::complex<double>>() * std::complex<double>(0.0, -1.0));
-    return std::max(0.0, lambda(N - 1) + lambda(N - 2));
+    return detail::skewSymmetricAdRadius(hat<double>(x));
   }
 };
 

@@ -18,4 +18,10 @@ Eigen::VectorXd hermitianEigenvalues(const Eigen::MatrixXcd& A);
 /// (−π, π].
 Eigen::MatrixXcd unitaryLogarithm(const Eigen::MatrixXcd& U);
 
+/// SpecialOrthogonal<N>::adRadius of the real skew-symmetric n×n X (n ≥ 2): the sum of the two
+/// largest eigenvalues of −iX, at least 0. The injectivity guard calls it before and after each
+/// Legendre solve of the exponential methods, so up to n = 16 it works in fixed-capacity storage
+/// and allocates nothing (tests/unit/test_allocations.cc); above, it allocates.
+double skewSymmetricAdRadius(const Eigen::Ref<const Eigen::MatrixXd>& X);
+
 }  // namespace ddb::detail

@@ -1,6 +1,7 @@
 // A step of any method on a matrix group allocates nothing once its workspaces exist
 // (docs/reference/conventions.md §4): every malloc of this binary is counted
 // (tools/malloc_counter.h).
+#include <ddb/groups/special_euclidean.h>
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/integrators/methods/strang_splitting.h>
 #include <ddb/systems/manakov_body.h>
@@ -126,6 +127,21 @@ TEST(Allocations, AViscousAndForcedStepAllocatesNothing) {
   const long before = tools::mallocCount();
   for (int k = 2; k < 22; ++k) method.advance(Q, k * 0.01, 0.01);
   EXPECT_EQ(tools::mallocCount() - before, 0);
+}
+
+// The exponential methods' injectivity guard (integrators/solvers/injectivity_guard.h) asks the
+// group's adRadius before and after every Legendre solve. On SpecialOrthogonal<N>, and through it
+// SpecialEuclidean<N>, that is an eigensolver, which works in fixed-capacity storage up to N = 16
+// (core/detail/normal_matrix_functions.h); at dynamic size it took 6 mallocs a call.
+TEST(Allocations, TheInjectivityGuardsRadiusOnSoNAndSeNAllocatesNothing) {
+  const SpecialOrthogonal<4>::Algebra<double> x4 = SpecialOrthogonal<4>::Algebra<double>::Random();
+  const SpecialOrthogonal<9>::Algebra<double> x9 = SpecialOrthogonal<9>::Algebra<double>::Random();
+  const SpecialEuclidean<4>::Algebra<double> y4 = SpecialEuclidean<4>::Algebra<double>::Random();
+  const long before = tools::mallocCount();
+  const double radii = SpecialOrthogonal<4>::adRadius(x4) + SpecialOrthogonal<9>::adRadius(x9) +
+                       SpecialEuclidean<4>::adRadius(y4);
+  EXPECT_EQ(tools::mallocCount() - before, 0);
+  EXPECT_GT(radii, 0.0);
 }
 
 TEST(Allocations, TheCounterSeesAnAllocation) {
