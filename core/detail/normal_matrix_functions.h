@@ -1,9 +1,10 @@
-// Two decompositions of dense complex normal matrices that the matrix groups' Casimirs and
-// logarithms rest on (groups/skew_hermitian_group.h, groups/special_orthogonal.h), compiled
-// once in the library (core/detail/normal_matrix_functions.cc) at the dynamic size. Eigen's
-// SelfAdjointEigenSolver and ComplexSchur instantiated in a header cost every translation unit
-// that names a group's casimirs or log several seconds, again for each fixed size
-// (docs/results/compile-costs.md, "Dense decompositions compiled once").
+// Two decompositions of dense complex normal matrices that the matrix groups' Casimirs,
+// logarithms and SO(N)'s adRadius rest on (groups/skew_hermitian_group.h,
+// groups/special_orthogonal.h), compiled once in the library
+// (core/detail/normal_matrix_functions.cc): at the dynamic size, and for adRadius, which a step
+// calls, at a fixed capacity. Eigen's SelfAdjointEigenSolver and ComplexSchur instantiated in a
+// header cost every translation unit that names a group's casimirs or log several seconds, again
+// for each fixed size (docs/results/compile-costs.md, "Dense decompositions compiled once").
 #pragma once
 
 #include <Eigen/Core>
