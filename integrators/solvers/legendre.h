@@ -136,8 +136,12 @@ class DiscreteLegendreSolver {
 
   /// Solves without copying out: the solution p is solution(), ξ = velocity(), valid until the
   /// next solve (MatrixLegendreSolver's interface, which the DDB steps use on every group).
+  /// Always inlined into the step that calls it: out of line, a rigid-body ddb-cay step took
+  /// 109-112 ns against 101 ns, the same bits (docs/results/benchmarks.md, "The small
+  /// Legendre solve inlined into its step").
   template <class Target>
-  void solveInPlace(const Target& target, const Dual& near, double t, double h) {
+  EIGEN_ALWAYS_INLINE void solveInPlace(const Target& target, const Dual& near, double t,
+                                        double h) {
     // The solve on locals, which stay in registers (members would be reloaded around every
     // evaluation of the target, which may refer to any memory), copied out at the end.
     Dual p;
