@@ -129,7 +129,7 @@ class DiscreteLegendreSolver {
   /// relative tolerance.
   template <class Target>
   Algebra solve(const Target& target, const Dual& near, double t, double h, Dual& p) {
-    solveInPlace(target, near, t, h);
+    solveOutOfLine(target, near, t, h);
     p = p_;
     return xi_;
   }
@@ -237,6 +237,15 @@ class DiscreteLegendreSolver {
     return false;
   }
   static constexpr double square(double x) { return x * x; }
+
+  // solve()'s call of the solve, kept out of line: inlined into solve() (the paper's symmetric
+  // DDB solves through it), a rigid-body sddb-paper-cay step took 1.6 % longer, the same bits
+  // (docs/results/benchmarks.md, "The small Legendre solve inlined into its step").
+  template <class Target>
+  EIGEN_DONT_INLINE void solveOutOfLine(const Target& target, const Dual& near, double t,
+                                        double h) {
+    solveInPlace(target, near, t, h);
+  }
 
   // Corrections and rates scale with h, and a composition's stages (Φ_{γ₁h} ∘ Φ_{γ₂h} ∘ …)
   // each follow their own smooth sequence, interleaved: a slot of corrections per stage, which
