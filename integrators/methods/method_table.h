@@ -472,10 +472,27 @@ using SE3Composed = SemidirectProduct<SO3, DefiningRepresentation<SO3>>;
   PREFIX template std::unique_ptr<::ddb::OneStepMethod<G>> ddb::makeMethod<G>(      \
       std::string_view, std::shared_ptr<const ::ddb::LiePoissonSystem<G>>)
 
+// Declared for each table the library compiled: CMake's DDB_METHOD_TABLES, all by default,
+// defines DDB_NO_COMPILED_METHOD_TABLE_<NAME> for each one it left out, whose methods a program
+// then instantiates itself (CMakeLists.txt).
+#ifndef DDB_NO_COMPILED_METHOD_TABLE_SE2
 DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SE2);
+#endif
+#ifndef DDB_NO_COMPILED_METHOD_TABLE_SO3
 DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SO3);
+#endif
+#ifndef DDB_NO_COMPILED_METHOD_TABLE_SE3
 DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SE3);
+#endif
+#ifndef DDB_NO_COMPILED_METHOD_TABLE_SON
 DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SON);
+#endif
+#ifndef DDB_NO_COMPILED_METHOD_TABLE_SUN
 DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::SUN);
+#endif
+#ifndef DDB_NO_COMPILED_METHOD_TABLE_DUAL_NUMBER_SUN
 DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::DualNumberSUN);
+#endif
+#ifndef DDB_NO_COMPILED_METHOD_TABLE_SE3_COMPOSED
 DDB_METHOD_TABLE_INSTANCE(extern, ::ddb::detail::SE3Composed);
+#endif
