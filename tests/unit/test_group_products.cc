@@ -9,9 +9,10 @@
 // the closed-form minimum on its orbit, and the fitted orders. Semidirect products by another
 // representation: the ready-made ones and a user's own are representations, Ad on SO(3) gives SE(3)
 // through the generic formulas, and a body on SO(3) ⋉ Sym(3) relaxes to the closed-form minimum
-// on its orbit keeping tr Γ, tr Γ², tr Γ³, with the fitted orders. The groups' defining identities
-// (Jacobi, the duals of ad and Ad, the Cayley map against the block matrices' Cayley map, exp
-// against Eigen's matrix exponential) are the generic suites' (test_groups.cc,
+// on its orbit keeping tr Γ, tr Γ², tr Γ³, with the fitted orders. The products' retraction
+// Jacobians against central differences (retraction_jacobian_suite.h). The groups' defining
+// identities (Jacobi, the duals of ad and Ad, the Cayley map against the block matrices' Cayley
+// map, exp against Eigen's matrix exponential) are the generic suites' (test_groups.cc,
 // test_retractions.cc).
 #include <ddb/groups/direct_product.h>
 #include <ddb/groups/special_euclidean.h>
@@ -35,6 +36,7 @@
 #include <vector>
 
 #include "order_fit.h"
+#include "retraction_jacobian_suite.h"
 #include "test_support.h"
 
 namespace ddb::test {
@@ -723,6 +725,16 @@ TEST(SemidirectProduct, CayleyStepsPastTheSingularSetOfAUserRepresentationSolveO
   EXPECT_GT(solved_past, 0);  // the runs cross |hω| = 2 (at h = 4.75: |hω| up to 2.9)
   EXPECT_GT(failed, 0);
 }
+
+// The retraction Jacobian suite (retraction_jacobian_suite.h) on the products' retractions, in
+// this unit, which instantiates their Newton solves' Jacobians for the method tables already.
+using ProductRetractions =
+    ::testing::Types<Cayley<SE3Composed>, Exponential<SE3Composed>, Cayley<DirectProduct<SO3, SE2>>,
+                     Exponential<DirectProduct<SO3, SE2>>, Cayley<SpecialEuclidean<4>>,
+                     Exponential<SpecialEuclidean<4>>,
+                     Cayley<SemidirectProduct<SO3, SymmetricMatrices>>,
+                     Exponential<SemidirectProduct<SO3, SymmetricMatrices>>>;
+INSTANTIATE_TYPED_TEST_SUITE_P(RetractionJacobianTest, RetractionJacobianTest, ProductRetractions);
 
 }  // namespace group_products_tests
 }  // namespace ddb::test

@@ -1,7 +1,8 @@
 // The analytic Jacobian of the small Legendre equation (integrators/solvers/legendre_equation.h)
 // and its parts, each against central differences and against Jets through the
 // scalar-generic formula it differentiates:
-//   ∂_x[(dτ^{-1}_x)* mu] of every fixed-size retraction, the SO(3) and SE(3) closed forms
+//   ∂_x[(dτ^{-1}_x)* mu] of the basic groups' retractions (retraction_jacobian_suite.h; the
+//   products' in test_group_products.cc), the SO(3) and SE(3) closed forms
 //   against LieGroupBase's Jet versions; the assembled ∂r/∂u in both forms, for DDB's
 //   fixed target and the symmetric method's half-force target, on the rigid body, the
 //   heavy top, the Kirchhoff body and a user system given by its Lagrangian alone.
@@ -12,66 +13,19 @@
 #include <ddb/integrators/solvers/legendre_equation.h>
 #include <ddb/systems/paper_scenarios.h>
 
+#include "retraction_jacobian_suite.h"
 #include "test_support.h"
 
 namespace ddb::test {
 namespace legendre_jacobian_tests {
 
-// Central differences of a map R^n → R^n at x, step eps·(1 + |x|).
-template <int N, class Map>
-Eigen::Matrix<double, N, N> centralDifferences(const Map& f, const Eigen::Matrix<double, N, 1>& x) {
-  const double eps = 1e-6 * (1.0 + x.norm());
-  Eigen::Matrix<double, N, N> jacobian;
-  for (int j = 0; j < N; ++j) {
-    Eigen::Matrix<double, N, 1> step = Eigen::Matrix<double, N, 1>::Zero();
-    step(j) = eps;
-    const Eigen::Matrix<double, N, 1> plus = x + step, minus = x - step;
-    jacobian.col(j) = (f(plus) - f(minus)) / (2 * eps);
-  }
-  return jacobian;
-}
-
-template <class R>
-class RetractionJacobianTest : public ::testing::Test {};
-using FixedRetractions = ::testing::Types<
-    Cayley<SO2>, Exponential<SO2>, Cayley<SO3>, Exponential<SO3>, TruncatedExponential<SO3>,
-    Cayley<SE2>, Exponential<SE2>, TruncatedExponential<SE2>, Cayley<SE3>, Exponential<SE3>,
-    TruncatedExponential<SE3>, Cayley<SemidirectProduct<SO3>>, Exponential<SemidirectProduct<SO3>>,
-    Cayley<DirectProduct<SO3, SE2>>, Exponential<DirectProduct<SO3, SE2>>,
-    Cayley<SpecialEuclidean<4>>, Exponential<SpecialEuclidean<4>>,
-    Cayley<SemidirectProduct<SO3, SymmetricMatrices>>,
-    Exponential<SemidirectProduct<SO3, SymmetricMatrices>>>;
-TYPED_TEST_SUITE(RetractionJacobianTest, FixedRetractions);
-
-TYPED_TEST(RetractionJacobianTest, MatchesCentralDifferences) {
-  using G = typename TypeParam::Group;
-  using V = Eigen::Matrix<double, G::kDim, 1>;
-  const TypeParam retraction;
-  Sampler s;
-  // Small (the series branches), O(1), and up to |ω| = 3 (exp's poles are at 2π).
-  for (double size : {1e-4, 0.09, 0.11, 0.5, 1.0, 2.0, 3.0}) {
-    const V x = size * s.vector<V>().normalized(), mu = s.vector<V>();
-    const auto analytic = retraction.dTauInverseDualJacobian(x, mu);
-    const auto numeric = centralDifferences<G::kDim>(
-        [&](const V& y) { return V(retraction.dTauInverseDual(y, mu)); }, x);
-    EXPECT_LT((analytic - numeric).norm(), 1e-8 * (1 + x.squaredNorm()) * mu.norm())
-        << "|x| = " << size;
-  }
-}
-
-// (dτ^{-1}_x)* as a matrix against the map it represents, for every retraction.
-TYPED_TEST(RetractionJacobianTest, MatrixRepresentsTheDual) {
-  using G = typename TypeParam::Group;
-  using V = Eigen::Matrix<double, G::kDim, 1>;
-  const TypeParam retraction;
-  Sampler s;
-  for (double size : {1e-4, 0.5, 3.0}) {
-    const V x = size * s.vector<V>().normalized(), mu = s.vector<V>();
-    EXPECT_LT((retraction.dTauInverseDualMatrix(x) * mu - retraction.dTauInverseDual(x, mu)).norm(),
-              1e-14 * (1 + x.squaredNorm()) * mu.norm())
-        << "|x| = " << size;
-  }
-}
+// The suite of every basic group's retractions; the products' are test_group_products.cc's.
+using BasicRetractions = ::testing::Types<Cayley<SO2>, Exponential<SO2>, Cayley<SO3>,
+                                          Exponential<SO3>, TruncatedExponential<SO3>, Cayley<SE2>,
+                                          Exponential<SE2>, TruncatedExponential<SE2>, Cayley<SE3>,
+                                          Exponential<SE3>, TruncatedExponential<SE3>>;
+// The prefix is the suite's name, which ctest's names keep (gtest_discover_tests).
+INSTANTIATE_TYPED_TEST_SUITE_P(RetractionJacobianTest, RetractionJacobianTest, BasicRetractions);
 
 // The closed forms against Jets through the formula they differentiate
 // (core/retraction_jacobians.h).
