@@ -5,9 +5,11 @@
 #pragma once
 
 #include <ddb/core/errors.h>
+#include <ddb/core/group_traits.h>
 #include <ddb/core/matrix_backend.h>
 #include <ddb/core/matrix_traits.h>
 
+#include <optional>
 #include <string>
 
 namespace ddb {
@@ -23,6 +25,12 @@ class DissipationMetric {
   virtual Algebra sharp(const Dual& mu) const = 0;
   /// k♯(mu) into `out` (already of mu's size); override for large algebras.
   virtual void sharpInto(const Dual& mu, Algebra& out) const { out = sharp(mu); }
+  /// α where k♯ = α·R, R the Riesz map of G's pairing onto its coordinates' inner product
+  /// (rieszMapInPlace, core/group_traits.h: the identity but on SU(N) ⋉ su(N)*); nothing for any
+  /// other metric. The linearly implicit DDB needs one: its dissipative factor is a Newton step
+  /// in that inner product whose explicit Euler step is DDB's hk♯(ad*_ξ μ)
+  /// (integrators/methods/linearly_implicit_ddb.h).
+  virtual std::optional<double> scalarMultiple() const { return std::nullopt; }
 };
 
 /// k♯ = α · identity (coordinates of g* identified with those of g by the basis,
@@ -51,6 +59,15 @@ class ScaledIdentityMetric final : public DissipationMetric<G> {
     }
   }
   double alpha() const { return alpha_; }
+  /// α, unless G's pairing is not its coordinates' inner product: α·I is then no multiple of
+  /// the Riesz map (SU(N) ⋉ su(N)*'s metric is SwappedPartsMetric).
+  std::optional<double> scalarMultiple() const override {
+    if constexpr (detail::HasIndefinitePairing<G>::value) {
+      return std::nullopt;
+    } else {
+      return alpha_;
+    }
+  }
 
  private:
   double alpha_;

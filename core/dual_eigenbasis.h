@@ -28,8 +28,8 @@
 // six for the ε-part (Â₀, Â₁ and back) and one per node; compute() two more (x̂₁). Where x₁ or
 // A₀ is zero the ε-part is x₀'s application alone, with its bits (the magnetic fluid with
 // Θ = 0 is the fluid, systems/zeitlin_mhd.h).
-// Not here: the weights of the Newton search's preconditioner (setWeights, applyWeights), so the
-// methods that need it do not run on dual-number matrices (method_table.h).
+// Not here: the weights of the Newton search's preconditioner (setWeights, applyWeights); on
+// dual-number matrices the search takes the shift's (integrators/solvers/orbit_preconditioner.h).
 #pragma once
 
 #include <ddb/core/detail/gauss_legendre.h>

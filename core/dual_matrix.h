@@ -16,9 +16,9 @@
 // state with one part zero costs X's one product per product, with X's bits (the magnetic fluid
 // with Θ = 0 is the fluid, systems/zeitlin_mhd.h).
 // On the dense and distributed complex parts the backend's Eigenbasis is DualEigenbasis
-// (core/dual_eigenbasis.h, which its users include): the exponential methods run on it; the
-// Newton search's preconditioner it has not (method_table.h says so by name). Other parts (CUDA's)
-// have no Eigenbasis.
+// (core/dual_eigenbasis.h, which its users include): the exponential methods run on it, and the
+// Newton search with the shift's preconditioner (DualEigenbasis weighs no entries:
+// integrators/solvers/orbit_preconditioner.h). Other parts (CUDA's) have no Eigenbasis.
 #pragma once
 
 #include <ddb/core/binary_record.h>
@@ -69,10 +69,6 @@ struct DualEigenbasisMember<X, std::enable_if_t<HasEigenbasisCoordinates<X>::val
   using Eigenbasis = DualEigenbasis<X>;
 };
 }  // namespace detail
-
-/// DualEigenbasis weighs no entries: no orbit preconditioner (core/matrix_backend.h).
-template <class X>
-struct HasOrbitPreconditioner<DualMatrix<X>, void> : std::false_type {};
 
 template <class X>
 struct MatrixBackend<DualMatrix<X>, void> : detail::DualEigenbasisMember<X> {

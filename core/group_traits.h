@@ -60,6 +60,17 @@ struct HasIndefinitePairing<G, std::enable_if_t<G::kIndefinitePairing>> : std::t
 }  // namespace detail
 /// \endcond
 
+/// x ← its Riesz representer: the element ν of the same coordinates with
+/// innerProduct(ν, η) = ⟨x, η⟩ for every η, ⟨·,·⟩ G's pairing. The identity where the pairing is
+/// the inner product of the coordinates; G::rieszMap where G says it is another (SU(N) ⋉ su(N)*
+/// swaps the parts, groups/dual_number_sun.h). It turns a differential ⟨g, ·⟩ into the gradient
+/// that the solvers' inner product sees (integrators/solvers/orbit_newton.h), and α times it is
+/// the metric k♯ = α·I of such a group (core/dissipation_metric.h).
+template <class G, class X>
+void rieszMapInPlace(X& x) {
+  if constexpr (detail::HasIndefinitePairing<G>::value) G::rieszMap(x);
+}
+
 /// Compile-time facts about a group G, and the check of its minimum API.
 template <class G>
 struct GroupTraits {

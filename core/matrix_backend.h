@@ -362,10 +362,10 @@ struct HasEigenbasis : std::false_type {};
 template <class X>
 struct HasEigenbasis<X, std::void_t<typename MatrixBackend<X>::Eigenbasis>> : std::true_type {};
 
-/// Whether X's Eigenbasis also weighs entries (setWeights, applyWeights, diagonalPhasesOf), as
-/// the Newton search's preconditioner on the orbit needs
-/// (integrators/solvers/orbit_preconditioner.h): every Eigenbasis does but the dual numbers'
-/// (core/dual_matrix.h).
+/// Whether X's states have the Newton search's preconditioner on the orbit
+/// (integrators/solvers/orbit_preconditioner.h), which the linearly implicit methods and the
+/// search need: where X has an Eigenbasis (the entries' weights where it weighs them, the shift's
+/// on the dual numbers', core/dual_eigenbasis.h).
 template <class X, class = void>
 struct HasOrbitPreconditioner : HasEigenbasis<X> {};
 

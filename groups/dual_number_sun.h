@@ -27,9 +27,10 @@ namespace ddb {
 /// SU(N) ⋉ su(N)* with its states in two of a backend's matrices X (DualMatrix<X>): the closed
 /// forms of SkewHermitianGroup in dual-number arithmetic. As for SUNOn<X>, what runs is what is
 /// written against the matrix backend: the system's in-place evaluations, integrate(), and the
-/// methods of the method table, the exponential ones on dense parts (their spectral calculus is
-/// core/dual_eigenbasis.h); not the linearly implicit ones or the Newton search, which need a
-/// preconditioner the dual numbers have not (method_table.h). The Casimirs need dense parts.
+/// methods of the method table, the exponential ones, the linearly implicit ones and the Newton
+/// search on dense and distributed parts (their spectral calculus is core/dual_eigenbasis.h;
+/// the search's preconditioner is the shift's, integrators/solvers/orbit_preconditioner.h). The
+/// Casimirs need dense parts.
 template <class X>
 struct DualNumberSUNOn : SkewHermitianGroup<DualNumberSUNOn<X>, detail::ComplexScalar> {
   using Base = SkewHermitianGroup<DualNumberSUNOn<X>, detail::ComplexScalar>;
@@ -48,6 +49,10 @@ struct DualNumberSUNOn : SkewHermitianGroup<DualNumberSUNOn<X>, detail::ComplexS
     using P = MatrixBackend<X>;
     return P::innerProduct(mu.real, xi.eps) + P::innerProduct(mu.eps, xi.real);
   }
+
+  /// x ← its Riesz representer for the backend's innerProduct, ν₀ + εν₁ ↦ ν₁ + εν₀ (pairing
+  /// above): the parts exchanged, no entry copied (rieszMapInPlace, core/group_traits.h).
+  static void rieszMap(DualMatrix<X>& x) { x.real.swap(x.eps); }
 
   /// The orthogonal projection onto su(N) ⊗ R[ε], part by part, in place (SUNOn's on each).
   static void projectToAlgebra(DualMatrix<X>& x) {

@@ -11,6 +11,8 @@
 #include <ddb/core/errors.h>
 #include <ddb/groups/dual_number_sun.h>
 
+#include <optional>
+
 namespace ddb {
 
 template <class X>
@@ -31,6 +33,8 @@ class SwappedPartsMetric final : public DissipationMetric<DualNumberSUNOn<X>> {
     MatrixBackend<X>::scale(alpha_, mu.real, out.eps);
   }
   double alpha() const { return alpha_; }
+  /// α: the swap is the pairing's Riesz map (DualNumberSUNOn::rieszMap).
+  std::optional<double> scalarMultiple() const override { return alpha_; }
 
  private:
   double alpha_;

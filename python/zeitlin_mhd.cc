@@ -126,7 +126,8 @@ void bindZeitlinMhd(py::module_& m) {
       "Magnetohydrodynamics on the sphere at resolution N (2 <= N <= 4096) with double-bracket "
       "coefficient alpha (any finite sign; alpha > 0 lowers the total energy E_kin + E_mag to "
       "a magnetic equilibrium, keeping tr Theta^k and tr(W Theta^k)). States: complex arrays "
-      "(2, N, N), [W, Theta]; methods: the Cayley family, rk4 and lobatto3c (system.methods()).");
+      "(2, N, N), [W, Theta]; methods: every one of the matrix groups but 'reference' "
+      "(system.methods()).");
 }
 
 }  // namespace ddb::python

@@ -229,9 +229,7 @@ Settings settings(const CLI::App& cli, const Options& o) {
     std::string list;
     for (const std::string& name : methods) list += (list.empty() ? "" : ", ") + name;
     app::usageError("--method", o.method,
-                    "does not run on SU(N) x| su(N)* (it needs the metric alpha * identity and "
-                    "the Newton search's preconditioner, or is for other groups); valid: " +
-                        list);
+                    "does not run on SU(N) x| su(N)* (it is for other groups); valid: " + list);
   }
   app::requireChoice("--method", o.method, methods);
   s.alpha = app::parseNumber("--alpha", o.alpha, o.alpha);

@@ -4,7 +4,9 @@
 // explicit dissipative one, τ(hφ) with φ = k♯(ad*_ξ μ) (eq. (4.12)); the explicit factor is
 // stable only for h|α| below a bound set by the largest curvature of H on the orbit, beyond
 // which the energy rises (docs/design/architecture.md, "Large N: the step's stability bound").
-// Here, with k♯ = α·I and f = σH (σ = sign α: the flow lowers f):
+// Here, with k♯ = α·I and f = σH (σ = sign α: the flow lowers f; on a group whose pairing is
+// not its coordinates' inner product, k♯ = α·R with R the pairing's Riesz map, and ∇f, J are
+// taken in that inner product: DissipationMetric::scalarMultiple, OrbitNewton):
 //   (i)  μ̃ = the DDB step of the system without dissipation (the same Legendre solve);
 //   (ii) μ_{k+1} = Ad*_{cay(s v)} μ̃, v ≈ −(J + I/τ)⁻¹ ∇f at μ̃, τ = h|α|,
 // where ∇f and J are the gradient and Hessian of f(Ad*_{cay x} μ̃) at x = 0: one Newton step of
@@ -25,6 +27,7 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace ddb {
@@ -35,7 +38,7 @@ class LinearlyImplicitDdb : public Ddb<R> {
   using typename Ddb<R>::G;
   using typename Ddb<R>::Dual;
 
-  /// `system` must have the metric k♯ = α·I (ScaledIdentityMetric).
+  /// `system` must have the metric k♯ = α·I (DissipationMetric::scalarMultiple).
   LinearlyImplicitDdb(std::shared_ptr<const LiePoissonSystem<G>> system, R retraction = R(),
                       LegendreForm form = LegendreForm::kLagrangian, SolverOptions options = {})
       : Ddb<R>(system->withoutDissipation(), std::move(retraction), form, options),
@@ -66,12 +69,12 @@ class LinearlyImplicitDdb : public Ddb<R> {
 
  private:
   static double scalarMetricOf(const LiePoissonSystem<G>& system) {
-    const auto* metric = asScalarMetric(system.metric());
-    if (metric == nullptr) {
+    const std::optional<double> alpha = system.metric().scalarMultiple();
+    if (!alpha) {
       throwInvalid("method", "ddb-*-implicit",
                    "needs the metric alpha * identity, which '" + system.name() + "' has not");
     }
-    return metric->alpha();
+    return *alpha;
   }
 
   std::shared_ptr<const LiePoissonSystem<G>> with_dissipation_;  // Ddb's system has none

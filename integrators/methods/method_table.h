@@ -77,7 +77,7 @@ struct MethodInfo {
   /// round-off and, with α > 0, the energy falls (the apps watch it).
   bool keeps_casimirs;
   bool needs_lagrangian;     ///< evaluates ∂l/∂ξ at a midpoint, so the system needs l
-  bool needs_scalar_metric;  ///< needs k♯ = α·I (ScaledIdentityMetric)
+  bool needs_scalar_metric;  ///< needs k♯ = α·I (DissipationMetric::scalarMultiple)
   /// Order in μ with α ≠ 0 (docs/reference/conventions.md §2); 0 for the adaptive reference,
   /// whose error is set by its tolerance, not by h.
   int order;
@@ -172,7 +172,7 @@ constexpr bool groupHasEigenbasis() {
   return detail::statesHave<HasEigenbasis, G>();
 }
 
-/// Whether G's states have the orbit preconditioner: not SU(N) ⋉ su(N)*'s (core/dual_matrix.h).
+/// Whether G's states have the orbit preconditioner (HasOrbitPreconditioner, matrix_backend.h).
 template <class G>
 constexpr bool groupHasOrbitPreconditioner() {
   return detail::statesHave<HasOrbitPreconditioner, G>();
@@ -260,7 +260,7 @@ bool methodApplies(const MethodInfo& method, const LiePoissonSystem<G>& system) 
          (groupHasEigenbasis<G>() || !needsEigenbasis(method)) &&
          (groupHasOrbitPreconditioner<G>() || !needsOrbitPreconditioner(method)) &&
          (!method.needs_lagrangian || system.lagrangian() != nullptr) &&
-         (!method.needs_scalar_metric || asScalarMetric(system.metric()) != nullptr);
+         (!method.needs_scalar_metric || system.metric().scalarMultiple().has_value());
 }
 
 /// methodApplies for a name; false for a name that is not in the table.
@@ -381,7 +381,7 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(const MethodInfo& method,
   if (method.needs_lagrangian && system->lagrangian() == nullptr) {
     throwInvalid("method", name, "needs a Lagrangian, which '" + system->name() + "' has not");
   }
-  if (method.needs_scalar_metric && asScalarMetric(system->metric()) == nullptr) {
+  if (method.needs_scalar_metric && !system->metric().scalarMultiple()) {
     throwInvalid("method", name,
                  "needs the metric alpha * identity, which '" + system->name() + "' has not");
   }

@@ -24,12 +24,16 @@
 // path, not the flow's limit from μ₀ (docs/guide/steady-states.md compares them).
 // On matrix groups every operation is the backend's (docs/design/matrix-backend.md): the
 // brackets are products and adjoints, the CG's vectors combine by its element-wise
-// operations and pair by its innerProduct, the preconditioner is its Eigenbasis.
+// operations and pair by its innerProduct, the preconditioner is its Eigenbasis. ∇f and J are
+// those of that inner product: the pairing's differentials −σ ad*_ξ μ and J v through the
+// pairing's Riesz map (rieszMapInPlace: the identity, but on SU(N) ⋉ su(N)*, whose pairing
+// swaps the parts).
 #pragma once
 
 #include <ddb/core/binary_record.h>
 #include <ddb/core/detail/energy_round_off.h>
 #include <ddb/core/errors.h>
+#include <ddb/core/group_traits.h>
 #include <ddb/core/lie_poisson_system.h>
 #include <ddb/core/matrix_backend.h>
 #include <ddb/integrators/solvers/cayley_conjugation.h>
@@ -154,7 +158,7 @@ class OrbitNewton {
   }
 
  private:
-  // At μ: ξ, the argument the Hamiltonian saw (matrix groups: Pμ) and ∇f = −σ ad*_ξ μ, with
+  // At μ: ξ, the argument the Hamiltonian saw (matrix groups: Pμ) and ∇f = −σ R ad*_ξ μ, with
   // relative = ‖∇f‖/(‖ξ‖ ‖μ‖), the residual r of SteadyStateProbe.
   struct Evaluation {
     Dual argument;
@@ -170,11 +174,12 @@ class OrbitNewton {
     system_.velocityInto(mu, e.argument, e.xi);
     system_.coadjointInto(e.xi, e.argument, product_, e.gradient);
     scale(-sigma_, e.gradient, e.gradient);
+    rieszMapInPlace<G>(e.gradient);
     const double size = norm(e.xi) * norm(e.argument);
     e.relative = size > 0 ? norm(e.gradient) / size : 0.0;
   }
 
-  // out = J v at e: −σ(ad*_ξ δμ + ad*_{δξ} μ), δμ = ad*_v μ, δξ = D²H(μ)[δμ].
+  // out = J v at e: −σR(ad*_ξ δμ + ad*_{δξ} μ), δμ = ad*_v μ, δξ = D²H(μ)[δμ].
   void hessianTimes(const Evaluation& e, const Algebra& v, Algebra& out) {
     system_.coadjointInto(v, e.argument, product_, moved_);
     system_.velocityDerivativeInto(e.argument, moved_, product_, dxi_);
@@ -182,6 +187,7 @@ class OrbitNewton {
     system_.coadjointInto(dxi_, e.argument, product_, added_);
     B::axpy(1.0, added_, out);
     scale(-sigma_, out, out);
+    rieszMapInPlace<G>(out);
   }
 
   // v: truncated preconditioned CG on (J + shift) v = −∇f within ‖v‖ ≤ radius. Returns its

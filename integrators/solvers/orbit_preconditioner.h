@@ -64,30 +64,45 @@ class OrbitPreconditioner {
   Eigen::VectorXd pi_;
 };
 
-/// The small groups' preconditioner: the identity for the search, 1/shift for the minimizing
-/// movement (its first CG direction is then the explicit step −τ∇f).
-template <class G>
-class FixedSizeOrbitPreconditioner {
+/// The preconditioner of states whose Eigenbasis weighs no entries, or that have none: the
+/// small groups' coordinate vectors, and SU(N) ⋉ su(N)*'s dual-number matrices, whose
+/// Hessian on the orbit has no closed form in μ's eigenbasis (the entry (a, b)'s weight of
+/// OrbitPreconditioner becomes, over the dual numbers, a 2×2 block of both signs: the curvature
+/// alone is indefinite). The identity for the search (unpreconditioned CG), 1/shift for the
+/// minimizing movement (its first CG direction is then the explicit step −τ∇f). Through the
+/// backend's arithmetic, as every vector OrbitNewton combines.
+template <class Matrix>
+class ShiftOrbitPreconditioner {
  public:
-  using Algebra = typename G::template Algebra<double>;
-  using Dual = typename G::template Dual<double>;
-
-  bool refresh(const Dual&, const Algebra&, double shift = 0.0) {
+  bool refresh(const Matrix&, const Matrix&, double shift = 0.0) {
     shift_ = shift;
     return true;
   }
-  void apply(const Algebra& in, Algebra& out) const {
-    out = shift_ > 0 ? Algebra(in / shift_) : in;
+  /// out may be in.
+  void apply(const Matrix& in, Matrix& out) const {
+    MatrixBackend<Matrix>::copy(in, out);
+    if (shift_ > 0) MatrixBackend<Matrix>::divide(out, shift_);
   }
 
  private:
   double shift_ = 0.0;
 };
 
-/// OrbitNewton's preconditioner for G, chosen by its traits.
+namespace detail {
+/// Whether X's Eigenbasis weighs entries (setWeights, applyWeights), as OrbitPreconditioner needs.
+template <class X, class = void>
+struct EigenbasisWeighsEntries : std::false_type {};
+template <class X>
+struct EigenbasisWeighsEntries<X,
+                               std::void_t<decltype(&MatrixBackend<X>::Eigenbasis::applyWeights)>>
+    : std::true_type {};
+}  // namespace detail
+
+/// OrbitNewton's preconditioner for G's states, chosen by their backend.
 template <class G>
 using OrbitPreconditionerFor =
-    std::conditional_t<isDynamicGroup<G>, OrbitPreconditioner<typename G::template Dual<double>>,
-                       FixedSizeOrbitPreconditioner<G>>;
+    std::conditional_t<detail::EigenbasisWeighsEntries<typename G::template Dual<double>>::value,
+                       OrbitPreconditioner<typename G::template Dual<double>>,
+                       ShiftOrbitPreconditioner<typename G::template Dual<double>>>;
 
 }  // namespace ddb

@@ -886,6 +886,12 @@ static_assert(std::is_same_v<ddb::DualNumberSUN, ddb::DualNumberSUNOn<Eigen::Mat
 static_assert(std::is_same_v<Dual<ddb::DualNumberSUN>, ddb::DualMatrix<Eigen::MatrixXcd>>);
 static_assert(std::is_base_of_v<ddb::DissipationMetric<ddb::DualNumberSUN>,
                                 ddb::SwappedPartsMetric<Eigen::MatrixXcd>>);
+// Its Newton search and linearly implicit methods (docs/guide/steady-states.md): the shift's
+// preconditioner, the gradient through the pairing's Riesz map; the fluid's weighs entries.
+static_assert(std::is_same_v<ddb::OrbitPreconditionerFor<ddb::DualNumberSUN>,
+                             ddb::ShiftOrbitPreconditioner<ddb::DualMatrix<Eigen::MatrixXcd>>>);
+static_assert(std::is_same_v<ddb::OrbitPreconditionerFor<ddb::SUN>,
+                             ddb::OrbitPreconditioner<Eigen::MatrixXcd>>);
 [[maybe_unused]] void magnetohydrodynamics() {
   const SystemPtr<ddb::DualNumberSUN> mhd = ddb::makeZeitlinMhd(8, 0.5);
   const auto& h = dynamic_cast<const ddb::ZeitlinMhdHamiltonian&>(mhd->hamiltonian());
@@ -899,7 +905,9 @@ static_assert(std::is_base_of_v<ddb::DissipationMetric<ddb::DualNumberSUN>,
       diagnostics.crossHelicity(mu), diagnostics.equilibriumResidual(mu),
       ddb::DualNumberSUN::casimirs(mu), ddb::needsEigenbasis(ddb::kMethods[0]),
       ddb::needsOrbitPreconditioner(ddb::kMethods[0]),
-      ddb::HasOrbitPreconditioner<ddb::DualMatrix<Eigen::MatrixXcd>>::value);
+      ddb::HasOrbitPreconditioner<ddb::DualMatrix<Eigen::MatrixXcd>>::value,
+      mhd->metric().scalarMultiple());
+  ddb::rieszMapInPlace<ddb::DualNumberSUN>(mu);
   // The exponential methods' spectral calculus on dual-number matrices.
   ddb::DualEigenbasis<Eigen::MatrixXcd> basis;
   if (basis.compute(mu)) {

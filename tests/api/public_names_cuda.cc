@@ -7,6 +7,7 @@
 #include <ddb/cuda/cuda_zeitlin_fluid.h>
 #include <ddb/integrators/drivers/relax.h>
 #include <ddb/integrators/methods/method_table.h>
+#include <ddb/integrators/solvers/orbit_preconditioner.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 // CudaError's own header, and CudaMatrix's.
 #include <ddb/cuda/cuda_context.h>
@@ -37,6 +38,10 @@ using MethodPtr = std::unique_ptr<ddb::OneStepMethod<ddb::CudaSUN>>;
 static_assert(std::is_same_v<ddb::CudaSUN, ddb::SUNOn<ddb::CudaMatrix>>);
 static_assert(std::is_same_v<ddb::CudaSUN::Dual<double>, ddb::CudaMatrix>);
 static_assert(std::is_same_v<ddb::CudaSUN::Algebra<double>, ddb::CudaMatrix>);
+// The Newton search's preconditioner weighs the entries of the backend's eigenbasis
+// (docs/guide/steady-states.md, "Newton on the orbit"), not the shift's alone.
+static_assert(std::is_same_v<ddb::OrbitPreconditionerFor<ddb::CudaSUN>,
+                             ddb::OrbitPreconditioner<ddb::CudaMatrix>>);
 
 // docs/guide/gpu.md
 [[maybe_unused]] void gpuOwnProgram() {

@@ -13,6 +13,7 @@
 #include <ddb/groups/sun.h>
 #include <ddb/integrators/drivers/relax.h>
 #include <ddb/integrators/methods/method_table.h>
+#include <ddb/integrators/solvers/orbit_preconditioner.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <ddb/systems/zeitlin_step_size.h>
 #include <mpi.h>
@@ -36,6 +37,10 @@ using MethodPtr = std::unique_ptr<ddb::OneStepMethod<ddb::DistributedSUN>>;
 static_assert(std::is_same_v<ddb::DistributedSUN, ddb::SUNOn<ddb::DistributedMatrix>>);
 static_assert(std::is_same_v<ddb::DistributedSUN::Dual<double>, ddb::DistributedMatrix>);
 static_assert(std::is_same_v<ddb::DistributedSUN::Algebra<double>, ddb::DistributedMatrix>);
+// The Newton search's preconditioner weighs the entries of the backend's eigenbasis
+// (docs/guide/steady-states.md, "Newton on the orbit"), not the shift's alone.
+static_assert(std::is_same_v<ddb::OrbitPreconditionerFor<ddb::DistributedSUN>,
+                             ddb::OrbitPreconditioner<ddb::DistributedMatrix>>);
 
 // docs/guide/cluster.md: a process grid over MPI_COMM_WORLD, a seeded random vorticity scattered
 // over it, makeMethod<ddb::DistributedSUN> on makeDistributedZeitlinFluid, the gathered W; the

@@ -34,8 +34,9 @@ BUILT_NOT_RUN = "built, not yet run on a GPU"
 # the mark of a method that runs there): systems/*.h and systems/zeitlin_fluid_on_backend.h; the
 # heavy top has no regular Lagrangian, the heavy top and the Kirchhoff bodies have
 # k♯ = α diag(k); the magnetic fluid's dual-number matrices have the spectral calculus
-# (core/dual_eigenbasis.h) but not the preconditioner, and its metric swaps their parts
-# (systems/zeitlin_mhd.h). The GPU's column stays
+# (core/dual_eigenbasis.h) and the shift's preconditioner, and its metric, which swaps their
+# parts, is α times its pairing's identity (DissipationMetric::scalarMultiple,
+# systems/zeitlin_mhd.h). The GPU's column stays
 # BUILT_NOT_RUN until the device tests have run on a GPU (docs/results/gpu.md).
 SYSTEMS = [
     ("rigid body", 1, True, True, True, True, RUNS),
@@ -46,7 +47,7 @@ SYSTEMS = [
     ("fluid, SU(N)", 2, False, True, True, True, RUNS),
     ("fluid on MPI ranks", 4, False, True, True, True, RUNS),
     ("fluid on one GPU", 4, False, True, True, True, BUILT_NOT_RUN),
-    ("MHD, SU(N) ⋉ su(N)*", 4, False, False, True, False, RUNS),
+    ("MHD, SU(N) ⋉ su(N)*", 4, False, True, True, True, RUNS),
 ]
 
 ROW = re.compile(

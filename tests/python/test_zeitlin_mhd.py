@@ -16,23 +16,33 @@ def skew_hermitian_traceless(rng, n):
     return x - np.trace(x) / n * np.eye(n)
 
 
-def test_states_are_w_then_theta_and_methods_all_but_the_linearly_implicit():
+def test_states_are_w_then_theta_and_methods_all_of_the_matrix_groups_but_the_reference():
     mhd = ddb.zeitlin_mhd(8, 0.1)
     assert mhd.state_shape == (2, 8, 8)
     assert mhd.n == 8
-    assert mhd.methods() == ["ddb-cay", "ddb-exp", "ddb-exp-exact", "sddb-cay", "sddb-exp",
-                             "ddb4-cay", "ddb4-exp", "ddb6-exp", "rk4", "lobatto3c"]
+    assert mhd.methods() == ["ddb-cay", "ddb-exp", "ddb-exp-exact", "ddb-cay-implicit",
+                             "ddb-exp-implicit", "sddb-cay", "sddb-exp", "ddb4-cay", "ddb4-exp",
+                             "ddb6-exp", "rk4", "lobatto3c"]
 
 
 def test_without_magnetic_field_it_is_the_fluid_to_the_bit():
     n = 10
     W0 = ddb.zeitlin_vorticity("random", n, 3)
     fluid, mhd = ddb.zeitlin(n, 0.5), ddb.zeitlin_mhd(n, 0.5)
+    _, fluid_explicit = ddb.integrate(fluid, "ddb-cay", W0, 0.02, 15)
     for method in mhd.methods():
         _, fluid_states = ddb.integrate(fluid, method, W0, 0.02, 15)
         _, mhd_states = ddb.integrate(mhd, method, np.stack([W0, np.zeros_like(W0)]), 0.02, 15)
         assert mhd_states.shape == (16, 2, n, n)
-        assert np.array_equal(mhd_states[:, 0], fluid_states), method
+        if method.endswith("-implicit"):
+            # Their factor's CG is preconditioned otherwise on the dual numbers (by the shift, on
+            # the fluid by mu's eigenbasis): W is the fluid's to its tolerance, closer than the
+            # fluid's DDB step with the explicit factor, which differs by O(h^2) a step.
+            distance = np.linalg.norm(mhd_states[1:, 0] - fluid_states[1:], axis=(1, 2))
+            scale = np.linalg.norm(fluid_explicit[1:] - fluid_states[1:], axis=(1, 2))
+            assert np.all(distance < scale), method
+        else:
+            assert np.array_equal(mhd_states[:, 0], fluid_states), method
         assert not np.any(mhd_states[:, 1]), method
     # The kinetic energy is the fluid's energy.
     assert mhd.kinetic_energy(np.stack([W0, 0 * W0])) == pytest.approx(fluid.fluid_energy(W0),
@@ -97,8 +107,8 @@ def test_bad_inputs_name_the_parameter():
     nan[2, 3] = np.nan
     with pytest.raises(ValueError, match=r"mu0\[0\] \(W\)"):
         ddb.integrate(mhd, "ddb-cay", np.stack([nan, W]), 0.1, 1)
-    with pytest.raises(ValueError, match=r"method.*ddb-cay-implicit.*preconditioner"):
-        ddb.integrate(mhd, "ddb-cay-implicit", np.stack([W, W]), 0.1, 1)
+    with pytest.raises(ValueError, match=r"method.*reference"):
+        ddb.integrate(mhd, "reference", np.stack([W, W]), 0.1, 1)
     with pytest.raises(ValueError, match="N"):
         ddb.zeitlin_mhd(1, 0.1)
     with pytest.raises(ValueError, match="alpha"):

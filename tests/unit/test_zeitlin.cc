@@ -169,7 +169,9 @@ TEST(ZeitlinInitialConditions, LowModesHaveOnlyTheirDegreesAndTheOthersScale) {
       laplacian.apply(rest, next);
       rest = next + double(l * (l + 1)) * rest;
       bound *= double(l_max * (l_max + 1) + l * (l + 1));
-      if (l < l_max) EXPECT_GT(rest.norm(), 1e-3 * W.norm()) << "degree " << l + 1 << " is there";
+      if (l < l_max) {
+        EXPECT_GT(rest.norm(), 1e-3 * W.norm()) << "degree " << l + 1 << " is there";
+      }
     }
     EXPECT_LT(rest.norm(), 1e-13 * bound) << "l_max " << l_max;
   }
