@@ -49,7 +49,7 @@ def test_without_magnetic_field_it_is_the_fluid_to_the_bit():
                                                                        rel=1e-13)
 
 
-@pytest.mark.parametrize("method", ["ddb-cay", "sddb-exp"])
+@pytest.mark.parametrize("method", ["ddb-cay", "sddb-exp", "ddb-cay-implicit"])
 def test_relaxation_keeps_both_invariant_families_and_lowers_the_energy(method):
     n, alpha = 12, 0.5
     rng = np.random.default_rng(5)
