@@ -203,6 +203,22 @@ TEST(MhdRelax, AKilledOrInterruptedRunResumesToTheByte) {
   fs::remove_all(longer);
 }
 
+// The linearly implicit method (its dissipative factor a Newton step on the orbit, which keeps no
+// state between steps) continued past a finished run's cap: the longer run's files.
+TEST(MhdRelax, ALinearlyImplicitRunContinuedIsTheLongerRun) {
+  const std::string flags = "--quiet --n 16 --method ddb-cay-implicit --h 0.2 --every 3 ";
+  const fs::path longer = freshFolder("mhd_relax_test_", "implicit-longer");
+  ASSERT_EQ(run(flags + "--steps 40 --out " + longer.string()).status, 0);
+  const fs::path out = freshFolder("mhd_relax_test_", "implicit");
+  ASSERT_EQ(run(flags + "--steps 20 --out " + out.string()).status, 0);
+  const AppResult more = run("--quiet --resume " + out.string() + " --steps 40");
+  ASSERT_EQ(more.status, 0) << more.output;
+  expectSameFiles(longer, out);
+  EXPECT_EQ(readJson(out / "summary.json")["method"], "ddb-cay-implicit");
+  fs::remove_all(longer);
+  fs::remove_all(out);
+}
+
 TEST(MhdRelax, AResumeRefusesWhatWouldChangeTheRun) {
   const fs::path out = freshFolder("mhd_relax_test_", "refused");
   ASSERT_EQ(run("--quiet --n 8 --steps 10 --out " + out.string()).status, 0);
