@@ -133,6 +133,18 @@ class OrbitNewton {
     return lineSearch(mu, energy, slope, slope, false, report).has_value();
   }
 
+  /// ∇f and J v at mu, in the backend's inner product, as the search takes them (for checks
+  /// against differences along the orbit: tests/unit/test_zeitlin_mhd.cc). The next advance
+  /// evaluates its state anew.
+  void gradientAndHessianProduct(const Dual& mu, const Algebra& v, Algebra& gradient, Algebra& jv) {
+    evaluate(mu, now_);
+    evaluated_ = false;
+    B::zeroLike(gradient, mu);
+    B::zeroLike(jv, mu);
+    copy(now_.gradient, gradient);
+    hessianTimes(now_, v, jv);
+  }
+
   /// r at the state of the last evaluation (the last accepted state, or the unchanged one).
   double residual() const { return now_.relative; }
 

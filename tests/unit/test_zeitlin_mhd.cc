@@ -10,6 +10,7 @@
 #include <ddb/integrators/drivers/relax.h>
 #include <ddb/integrators/drivers/steady_state_probe.h>
 #include <ddb/integrators/methods/method_table.h>
+#include <ddb/integrators/solvers/orbit_newton.h>
 #include <ddb/systems/hoppe_yau_laplacian.h>
 #include <ddb/systems/spherical_harmonic_basis.h>
 #include <ddb/systems/zeitlin_fluid.h>
@@ -634,6 +635,40 @@ TEST(ZeitlinMhd, TheNewtonSearchLowersTheEnergyOnTheOrbit) {
       });
   ASSERT_TRUE(result.ok()) << result.failure;
   EXPECT_LT(result.last.residual, 1e-3 * residual0);
+}
+
+// Ad*_{cay x} μ = cay(x)ᴴ μ cay(x) in dual-number arithmetic, through the block matrices (the
+// adjoint part by part: the block map does not carry it).
+State cayleyConjugate(const State& mu, const State& x) {
+  const Matrix X = block(x);
+  const Matrix I = Matrix::Identity(X.rows(), X.cols());
+  const State g = fromBlock((I - 0.5 * X).inverse() * (I + 0.5 * X));
+  return fromBlock(block(State{g.real.adjoint(), g.eps.adjoint()}) * block(mu) * block(g));
+}
+
+// The Newton search's gradient and Hessian product on the dual numbers, in the inner product its
+// CG uses, against central differences along the orbit μ(x) = Ad*_{cay x} μ: ⟨∇f, w⟩ against
+// f = H's own, J v against ∇f's. Without the pairing's Riesz map in either, they differ by O(1).
+TEST(ZeitlinMhd, TheNewtonSearchsGradientAndHessianAreDifferencesAlongTheOrbit) {
+  const Eigen::Index n = 8;
+  const auto mhd = makeZeitlinMhd(n, 0.5);
+  const State mu = zeitlinMhdState(randomVorticity(n, 3), 0.3 * randomVorticity(n, 4));
+  const State v = zeitlinMhdState(randomVorticity(n, 5), randomVorticity(n, 6));
+  const State w = zeitlinMhdState(randomVorticity(n, 7), randomVorticity(n, 8));
+  OrbitNewton<DualNumberSUN> newton(*mhd, 1.0);
+  State gradient, jv, plus, minus, unused;
+  newton.gradientAndHessianProduct(mu, v, gradient, jv);
+  const double s = 1e-4;
+  const auto scaled = [](double a, const State& x) { return State{a * x.real, a * x.eps}; };
+  const double slope = (mhd->energy(cayleyConjugate(mu, scaled(s, w))) -
+                        mhd->energy(cayleyConjugate(mu, scaled(-s, w)))) /
+                       (2 * s);
+  EXPECT_NEAR(Dense::innerProduct(gradient, w), slope,
+              1e-6 * Dense::frobeniusNorm(gradient) * Dense::frobeniusNorm(w));
+  newton.gradientAndHessianProduct(cayleyConjugate(mu, scaled(s, v)), v, plus, unused);
+  newton.gradientAndHessianProduct(cayleyConjugate(mu, scaled(-s, v)), v, minus, unused);
+  const State difference = scaled(0.5 / s, State{plus.real - minus.real, plus.eps - minus.eps});
+  EXPECT_LT(distance(difference, jv), 1e-6 * Dense::frobeniusNorm(jv));
 }
 
 TEST(ZeitlinMhd, DiagnosticsAreTheirClosedForms) {
