@@ -23,9 +23,7 @@ void bindMethods(py::module_& m) {
             groups.insert(groups.end(), {SO3::kName, SE2::kName, SE3::kName});
           }
           if (method.groups & kMatrixGroups) groups.insert(groups.end(), {SON::kName, SUN::kName});
-          if ((method.groups & kBackendMatrixGroups) && !needsOrbitPreconditioner(method)) {
-            groups.emplace_back(DualNumberSUN::kName);
-          }
+          if (method.groups & kBackendMatrixGroups) groups.emplace_back(DualNumberSUN::kName);
           py::dict row;
           row["name"] = std::string(method.name);
           row["description"] = std::string(method.description);

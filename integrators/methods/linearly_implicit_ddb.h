@@ -72,7 +72,9 @@ class LinearlyImplicitDdb : public Ddb<R> {
     const std::optional<double> alpha = system.metric().scalarMultiple();
     if (!alpha) {
       throwInvalid("method", "ddb-*-implicit",
-                   "needs the metric alpha * identity, which '" + system.name() + "' has not");
+                   "needs the metric alpha * identity (on SU(N) x| su(N)*, alpha times the swap of "
+                   "its parts), which '" +
+                       system.name() + "' has not");
     }
     return *alpha;
   }

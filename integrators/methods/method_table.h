@@ -383,7 +383,9 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(const MethodInfo& method,
   }
   if (method.needs_scalar_metric && !system->metric().scalarMultiple()) {
     throwInvalid("method", name,
-                 "needs the metric alpha * identity, which '" + system->name() + "' has not");
+                 "needs the metric alpha * identity (on SU(N) x| su(N)*, alpha times the swap of "
+                 "its parts), which '" +
+                     system->name() + "' has not");
   }
   LegendreForm form = LegendreForm::kHamiltonian;
   if constexpr (!isDynamicGroup<G>) {

@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <type_traits>
+#include <utility>
 
 namespace ddb {
 
@@ -93,9 +94,9 @@ namespace detail {
 template <class X, class = void>
 struct EigenbasisWeighsEntries : std::false_type {};
 template <class X>
-struct EigenbasisWeighsEntries<X,
-                               std::void_t<decltype(&MatrixBackend<X>::Eigenbasis::applyWeights)>>
-    : std::true_type {};
+struct EigenbasisWeighsEntries<
+    X, std::void_t<decltype(std::declval<typename MatrixBackend<X>::Eigenbasis&>().applyWeights(
+           std::declval<const X&>(), std::declval<X&>()))>> : std::true_type {};
 }  // namespace detail
 
 /// OrbitNewton's preconditioner for G's states, chosen by their backend.

@@ -892,6 +892,8 @@ static_assert(std::is_same_v<ddb::OrbitPreconditionerFor<ddb::DualNumberSUN>,
                              ddb::ShiftOrbitPreconditioner<ddb::DualMatrix<Eigen::MatrixXcd>>>);
 static_assert(std::is_same_v<ddb::OrbitPreconditionerFor<ddb::SUN>,
                              ddb::OrbitPreconditioner<Eigen::MatrixXcd>>);
+static_assert(std::is_same_v<ddb::OrbitPreconditionerFor<ddb::SON>,
+                             ddb::OrbitPreconditioner<Eigen::MatrixXd>>);
 [[maybe_unused]] void magnetohydrodynamics() {
   const SystemPtr<ddb::DualNumberSUN> mhd = ddb::makeZeitlinMhd(8, 0.5);
   const auto& h = dynamic_cast<const ddb::ZeitlinMhdHamiltonian&>(mhd->hamiltonian());

@@ -24,6 +24,8 @@ def test_methods_are_the_table():
     assert "sddb-paper-cay" not in ddb.heavy_top().methods()
     matrix = [r["name"] for r in rows if "SU(N)" in r["groups"]]
     assert ddb.zeitlin(4, 0.5).methods() == matrix
+    magnetic = [r["name"] for r in rows if "SU(N) x| su(N)*" in r["groups"]]
+    assert ddb.zeitlin_mhd(4, 0.5).methods() == magnetic
 
 
 @pytest.mark.parametrize("method", ["ddb-cay", "sddb-exp", "ddb4-cay", "ddb6-exp"])

@@ -366,9 +366,9 @@ TEST(ZeitlinMhd, WithoutMagneticFieldEveryMethodIsTheFluidToTheBit) {
     // The linearly implicit methods' dissipative factor solves its Newton equation by CG to a
     // tolerance, preconditioned on the fluid by the weights of μ's eigenbasis and on the dual
     // numbers by the shift alone (integrators/solvers/orbit_preconditioner.h): at Θ = 0 its
-    // iterates stay in the ε-part (Θ stays exactly zero), and W is the fluid's to that
-    // tolerance, not to the bit: closer to it than the fluid's own DDB step with the explicit
-    // factor, which differs from it by O(h²) a step.
+    // direction rotates by its 1-part only and the state stays in the ε-part (Θ stays exactly
+    // zero), and W is the fluid's to that tolerance, not to the bit: closer to it than the
+    // fluid's own DDB step with the explicit factor, which differs from it by O(h²) a step.
     const bool implicit = needsOrbitPreconditioner(*findMethod(name));
     auto fluid_method = makeMethod<SUN>(name, fluid);
     auto fluid_explicit = makeMethod<SUN>("ddb-cay", fluid);
