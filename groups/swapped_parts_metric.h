@@ -28,9 +28,10 @@ class SwappedPartsMetric final : public DissipationMetric<DualNumberSUNOn<X>> {
     sharpInto(mu, out);
     return out;
   }
+  /// α times the pairing's Riesz map (DualNumberSUNOn::rieszMap, no entry copied). out may be mu.
   void sharpInto(const D& mu, D& out) const override {
-    MatrixBackend<X>::scale(alpha_, mu.eps, out.real);
-    MatrixBackend<X>::scale(alpha_, mu.real, out.eps);
+    MatrixBackend<D>::scale(alpha_, mu, out);
+    DualNumberSUNOn<X>::rieszMap(out);
   }
   double alpha() const { return alpha_; }
   /// α: the swap is the pairing's Riesz map (DualNumberSUNOn::rieszMap).

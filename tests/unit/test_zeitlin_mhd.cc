@@ -60,6 +60,12 @@ State fromBlock(const Matrix& b) {
   return {b.topLeftCorner(n, n), b.bottomLeftCorner(n, n)};
 }
 
+// Ad*_g μ = gᴴμg in dual-number arithmetic, through the block matrices (gᴴ part by part: the
+// block map does not carry the adjoint).
+State coadjointAction(const State& g, const State& mu) {
+  return fromBlock(block(State{g.real.adjoint(), g.eps.adjoint()}) * block(mu) * block(g));
+}
+
 bool sameBits(const Matrix& a, const Matrix& b) {
   return a.rows() == b.rows() && a.cols() == b.cols() &&
          std::memcmp(a.data(), b.data(), sizeof(std::complex<double>) * a.size()) == 0;
@@ -342,9 +348,7 @@ TEST(ZeitlinMhd, TheCasimirsAreThePowerTracesOfThetaAndOfWTheta) {
   // Invariant under Ad*_g μ = gᴴμg for g = U(I + εb) with U unitary, b skew-Hermitian.
   const Matrix U = randomUnitary(n, 3);
   const Matrix b = randomVorticity(n, 4);
-  const State g{U, U * b};
-  const State gh{g.real.adjoint(), g.eps.adjoint()};
-  const State moved = fromBlock(block(gh) * block(mu) * block(g));
+  const State moved = coadjointAction(State{U, U * b}, mu);
   const Eigen::VectorXd c_moved = DualNumberSUN::casimirs(moved);
   for (Eigen::Index k = 0; k < c.size(); ++k) {
     EXPECT_NEAR(c_moved(k), c(k), 1e-11 * (1 + std::abs(c(k)))) << k;
@@ -637,13 +641,11 @@ TEST(ZeitlinMhd, TheNewtonSearchLowersTheEnergyOnTheOrbit) {
   EXPECT_LT(result.last.residual, 1e-3 * residual0);
 }
 
-// Ad*_{cay x} μ = cay(x)ᴴ μ cay(x) in dual-number arithmetic, through the block matrices (the
-// adjoint part by part: the block map does not carry it).
+// Ad*_{cay x} μ = cay(x)ᴴ μ cay(x) in dual-number arithmetic, through the block matrices.
 State cayleyConjugate(const State& mu, const State& x) {
   const Matrix X = block(x);
   const Matrix I = Matrix::Identity(X.rows(), X.cols());
-  const State g = fromBlock((I - 0.5 * X).inverse() * (I + 0.5 * X));
-  return fromBlock(block(State{g.real.adjoint(), g.eps.adjoint()}) * block(mu) * block(g));
+  return coadjointAction(fromBlock((I - 0.5 * X).inverse() * (I + 0.5 * X)), mu);
 }
 
 // The Newton search's gradient and Hessian product on the dual numbers, in the inner product its
