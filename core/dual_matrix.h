@@ -16,9 +16,10 @@
 // state with one part zero costs X's one product per product, with X's bits (the magnetic fluid
 // with Θ = 0 is the fluid, systems/zeitlin_mhd.h).
 // On the dense and distributed complex parts the backend's Eigenbasis is DualEigenbasis
-// (core/dual_eigenbasis.h, which its users include): the exponential methods run on it, and the
-// Newton search with the shift's preconditioner (DualEigenbasis weighs no entries:
-// integrators/solvers/orbit_preconditioner.h). Other parts (CUDA's) have no Eigenbasis.
+// (core/dual_eigenbasis.h, which its users include): the exponential methods run on it. Other
+// parts (CUDA's) have no Eigenbasis. On every part the Newton search and the linearly implicit
+// Cayley step run with the shift's preconditioner, the backend's arithmetic alone (no entries'
+// weights over the dual numbers: integrators/solvers/orbit_preconditioner.h).
 #pragma once
 
 #include <ddb/core/binary_record.h>
@@ -69,6 +70,11 @@ struct DualEigenbasisMember<X, std::enable_if_t<HasEigenbasisCoordinates<X>::val
   using Eigenbasis = DualEigenbasis<X>;
 };
 }  // namespace detail
+
+/// The shift's preconditioner (ShiftOrbitPreconditioner) needs only the arithmetic, which every
+/// part's backend has: on dual-number matrices of any part the search runs.
+template <class X>
+struct HasOrbitPreconditioner<DualMatrix<X>> : std::true_type {};
 
 template <class X>
 struct MatrixBackend<DualMatrix<X>, void> : detail::DualEigenbasisMember<X> {

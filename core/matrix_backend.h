@@ -355,8 +355,8 @@ struct MatrixBackend {
   }
 };
 
-/// Whether X's backend has the spectral calculus `Eigenbasis`, which the exponential methods and
-/// the Newton search need (method_table.h; a backend may go without it: core/dual_matrix.h).
+/// Whether X's backend has the spectral calculus `Eigenbasis`, which the exponential methods need
+/// (method_table.h; a backend may go without it: core/dual_matrix.h).
 template <class X, class = void>
 struct HasEigenbasis : std::false_type {};
 template <class X>
@@ -364,8 +364,8 @@ struct HasEigenbasis<X, std::void_t<typename MatrixBackend<X>::Eigenbasis>> : st
 
 /// Whether X's states have the Newton search's preconditioner on the orbit
 /// (integrators/solvers/orbit_preconditioner.h), which the linearly implicit methods and the
-/// search need: where X has an Eigenbasis (the entries' weights where it weighs them, the shift's
-/// on the dual numbers', core/dual_eigenbasis.h).
+/// search need: where X has an Eigenbasis (its entries' weights where it weighs them), and on
+/// dual-number matrices of any part (the shift's, core/dual_matrix.h).
 template <class X, class = void>
 struct HasOrbitPreconditioner : HasEigenbasis<X> {};
 

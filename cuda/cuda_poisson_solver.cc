@@ -16,6 +16,7 @@ namespace ddb {
 
 struct CudaPoissonSolver::Device {
   long n = 0;
+  double kappa_squared = 0.0;
   CudaMatrix sheared;  // (2N − 1) × N: column c of the layout is row c of this matrix
   double* lower = nullptr;
   double* inverse_pivot = nullptr;
@@ -33,6 +34,7 @@ CudaPoissonSolver::CudaPoissonSolver(long n, double kappa_squared,
   HoppeYauLaplacian::requireShift(kappa_squared);
   Device& d = *device_;
   d.n = n;
+  d.kappa_squared = kappa_squared;
   d.sheared = CudaMatrix(skewed::width(n), n, std::move(context));
   std::vector<double> lower, inverse_pivot;
   skewed::shearedFactors(n, kappa_squared, lower, inverse_pivot);
@@ -52,15 +54,20 @@ const std::shared_ptr<CudaContext>& CudaPoissonSolver::context() const {
   return device_->sheared.context();
 }
 
+void CudaPoissonSolver::requireOperand(const CudaMatrix& x, const char* name) const {
+  const Device& d = *device_;
+  if (x.rows() != d.n || x.cols() != d.n) {
+    throwInvalid(
+        "matrix", std::to_string(x.rows()) + "x" + std::to_string(x.cols()),
+        "must be " + std::to_string(d.n) + "x" + std::to_string(d.n) + " for this Poisson solver");
+  }
+  requireContext(x, d.sheared.context(), name, "the Poisson solver's context");
+}
+
 void CudaPoissonSolver::solve(const CudaMatrix& W, CudaMatrix& out) {
   using B = MatrixBackend<CudaMatrix>;
   Device& d = *device_;
-  if (W.rows() != d.n || W.cols() != d.n) {
-    throwInvalid(
-        "matrix", std::to_string(W.rows()) + "x" + std::to_string(W.cols()),
-        "must be " + std::to_string(d.n) + "x" + std::to_string(d.n) + " for this Poisson solver");
-  }
-  requireContext(W, d.sheared.context(), "W", "the Poisson solver's context");
+  requireOperand(W, "W");
   CudaContext::State& state = d.sheared.context()->state();
   // The means as parts divided by N (tr/N rounded once in each part).
   const auto meanOf = [&](const CudaMatrix& x) {
@@ -76,6 +83,17 @@ void CudaPoissonSolver::solve(const CudaMatrix& W, CudaMatrix& out) {
     out = CudaMatrix(d.n, d.n, W.context());
   cuda_kernels::fromSkewed(state, d.n, sheared, reinterpret_cast<double*>(out.deviceData()));
   B::addToDiagonal(out, -meanOf(out));
+}
+
+void CudaPoissonSolver::apply(const CudaMatrix& P, CudaMatrix& out) {
+  Device& d = *device_;
+  requireOperand(P, "P");
+  if (&out == &P) throwInvalid("out", "P itself", "must be another matrix than P");
+  if (!MatrixBackend<CudaMatrix>::sameShape(out, P) || out.context() != P.context())
+    out = CudaMatrix(d.n, d.n, P.context());
+  cuda_kernels::applyLaplacian(d.sheared.context()->state(), d.n, d.kappa_squared,
+                               reinterpret_cast<const double*>(P.deviceData()),
+                               reinterpret_cast<double*>(out.deviceData()));
 }
 
 }  // namespace ddb

@@ -20,6 +20,7 @@
 #include <ddb/core/errors.h>
 #include <ddb/core/parallel_passes.h>
 #include <ddb/core/thread_pool.h>
+#include <ddb/systems/hoppe_yau_coefficients.h>
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -83,9 +84,8 @@ class HoppeYauLaplacian {
     diagonal.resize(length);
     off.resize(length);
     for (Eigen::Index k = 0; k < length; ++k) {
-      const double i = double(k), j = double(k + offset), N = double(n);
-      diagonal(k) = -((N - 1) * (i + j + 1) - 2 * i * j);
-      off(k) = k == 0 ? 0.0 : std::sqrt(i * (N - i) * j * (N - j));
+      diagonal(k) = hoppe_yau::diagonalCoefficient(n, k, offset);
+      off(k) = hoppe_yau::coupling(n, k, offset);
     }
   }
 

@@ -6,6 +6,7 @@
 #include <ddb/cuda/detail/cuda_check.h>
 #include <ddb/cuda/detail/cuda_context_state.h>
 #include <ddb/cuda/detail/cuda_kernels.h>
+#include <ddb/cuda/detail/laplacian_entries.h>
 #include <ddb/cuda/detail/poisson_kernels.h>
 #include <ddb/cuda/detail/skewed_diagonals.h>
 
@@ -309,7 +310,7 @@ long countNotZero(CudaContext::State& ctx, long count, const double* x) {
       ctx, count, [=] __device__(long k) { return x[k] != 0.0 ? 1.0 : 0.0; }, Add(), 0.0));
 }
 
-// ---- The Poisson solve's passes (cuda/detail/poisson_kernels.h). ----
+// ---- The Poisson solve's and apply's passes (cuda/detail/poisson_kernels.h). ----
 
 void toSkewed(CudaContext::State& ctx, long n, const double* w, double mean_real, double mean_imag,
               double* skewed) {
@@ -348,6 +349,13 @@ void fromSkewed(CudaContext::State& ctx, long n, const double* skewed, double* o
     const long i = linear % n, j = linear / n, at = skewed::indexOf(n, i, j);
     out[2 * linear] = skewed[2 * at];
     out[2 * linear + 1] = skewed[2 * at + 1];
+  });
+}
+
+void applyLaplacian(CudaContext::State& ctx, long n, double kappa_squared, const double* p,
+                    double* out) {
+  launch(ctx, n * n, [=] __device__(long linear) {
+    laplacian_entries::applyAt(n, kappa_squared, linear % n, linear / n, p, out);
   });
 }
 

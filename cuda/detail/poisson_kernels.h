@@ -1,4 +1,4 @@
-// The passes of the CUDA Poisson solve (cuda/cuda_poisson_solver.h) on device addresses,
+// The passes of the CUDA Poisson solve and apply (cuda/cuda_poisson_solver.h) on device addresses,
 // complex entries as (re, im) pairs, the sheared layout of cuda/detail/skewed_diagonals.h.
 #pragma once
 
@@ -14,5 +14,8 @@ void sweepDiagonals(CudaContext::State& ctx, long n, double* skewed, const doubl
                     const double* inverse_pivot);
 /// out ← the N×N matrix of the sheared array.
 void fromSkewed(CudaContext::State& ctx, long n, const double* skewed, double* out);
+/// out ← (Δ − κ²) p, entry by entry (laplacian_entries::applyAt); out is not p.
+void applyLaplacian(CudaContext::State& ctx, long n, double kappa_squared, const double* p,
+                    double* out);
 
 }  // namespace ddb::cuda_kernels

@@ -7,13 +7,7 @@
 // that the host tests check them (tests/cuda/test_cuda_poisson_layout.cc).
 #pragma once
 
-#ifdef __CUDACC__
-#define DDB_HOST_DEVICE __host__ __device__
-#define DDB_UNROLL _Pragma("unroll")
-#else
-#define DDB_HOST_DEVICE
-#define DDB_UNROLL
-#endif
+#include <ddb/core/detail/host_device.h>
 
 namespace ddb::skewed {
 

@@ -143,12 +143,12 @@ inline constexpr std::array<MethodInfo, 15> kMethods{{
 // clang-format on
 
 /// Whether the entry needs the matrices' spectral calculus (MatrixBackend<X>::Eigenbasis): the
-/// exponential retractions' sweeps and conjugations, the linearly implicit factor's Newton search
-/// (its preconditioner), and compositions of such entries.
+/// exponential retractions' sweeps and conjugations, and compositions of such entries.
 inline bool needsEigenbasis(const MethodInfo& method);
 
-/// Whether the entry needs the Newton search's preconditioner on the orbit (its Eigenbasis's
-/// weights): the linearly implicit factor, and compositions of it.
+/// Whether the entry needs the Newton search's preconditioner on the orbit (HasOrbitPreconditioner:
+/// the Eigenbasis's weights, or the shift's on dual-number matrices): the linearly implicit
+/// factor, and compositions of it.
 inline bool needsOrbitPreconditioner(const MethodInfo& method);
 
 namespace detail {
@@ -208,8 +208,7 @@ inline const MethodInfo* recipeOf(const MethodInfo& method) {
 
 inline bool needsEigenbasis(const MethodInfo& method) {
   const MethodInfo* recipe = detail::recipeOf(method);
-  return recipe != nullptr && (recipe->kind == MethodKind::kLinearlyImplicitDdb ||
-                               recipe->retraction == RetractionKind::kExponential ||
+  return recipe != nullptr && (recipe->retraction == RetractionKind::kExponential ||
                                recipe->retraction == RetractionKind::kTruncatedExponential2);
 }
 
@@ -308,8 +307,7 @@ std::string buildableMethodList() {
 template <class G>
 [[noreturn]] void throwNeedsEigenbasis(const std::string& name) {
   throwInvalid("method", name,
-               "needs the spectral calculus of the matrices (the exponential map, or the Newton "
-               "search's preconditioner), which " +
+               "needs the spectral calculus of the matrices (the exponential map), which " +
                    std::string(G::kName) +
                    "'s have not; these run on it: " + buildableMethodList<G>());
 }

@@ -15,6 +15,10 @@
 #include <ddb/cuda/cuda_matrix.h>
 // docs/guide/gpu.md, "Run": the damping and forcing for the device's states.
 #include <ddb/cuda/cuda_zeitlin_exact_flows.h>
+// docs/guide/gpu.md, "The magnetic fluid": its header, the GPU's Laplacian and the host's.
+#include <ddb/cuda/cuda_poisson_solver.h>
+#include <ddb/cuda/cuda_zeitlin_mhd.h>
+#include <ddb/systems/hoppe_yau_laplacian.h>
 
 #include <Eigen/Core>
 #include <memory>
@@ -42,6 +46,34 @@ static_assert(std::is_same_v<ddb::CudaSUN::Algebra<double>, ddb::CudaMatrix>);
 // (docs/guide/steady-states.md, "Newton on the orbit"), not the shift's alone.
 static_assert(std::is_same_v<ddb::OrbitPreconditionerFor<ddb::CudaSUN>,
                              ddb::OrbitPreconditioner<ddb::CudaMatrix>>);
+
+// The magnetic fluid's Newton search takes the shift's preconditioner on the GPU as on the host
+// (docs/guide/steady-states.md).
+static_assert(std::is_same_v<ddb::CudaDualNumberSUN, ddb::DualNumberSUNOn<ddb::CudaMatrix>>);
+static_assert(std::is_same_v<ddb::OrbitPreconditionerFor<ddb::CudaDualNumberSUN>,
+                             ddb::ShiftOrbitPreconditioner<ddb::DualMatrix<ddb::CudaMatrix>>>);
+
+// docs/guide/gpu.md, "The magnetic fluid" (the method table's calls are the fluid's, below).
+[[maybe_unused]] void gpuMagneticFluid() {
+  const auto mhd = ddb::makeCudaZeitlinMhd(64, 0.5);
+  const ddb::DualMatrix<ddb::CudaMatrix> mu =
+      ddb::toDevice(ddb::zeitlinMhdState(ddb::randomVorticity(64, 1), ddb::randomVorticity(64, 2)));
+  const ddb::DualMatrix<Eigen::MatrixXcd> back = ddb::toHost(mu);
+  use(mhd->energy(mu), back);
+  ddb::CudaPoissonSolver laplacian(64);
+  ddb::CudaMatrix current;
+  laplacian.apply(mu.real, current);
+  Eigen::MatrixXcd host_current;
+  ddb::HoppeYauLaplacian(64).apply(back.real, host_current);
+  use(ddb::makeCudaZeitlinMhd(64, 0.5, ddb::CudaContext::ofThisThread()),
+      ddb::toDevice(back, ddb::CudaContext::ofThisThread()));
+  // The Newton search, with the shift's preconditioner (docs/guide/gpu.md, "The magnetic fluid").
+  ddb::RelaxOptions options;
+  options.newton = true;
+  ddb::Relaxation<ddb::CudaDualNumberSUN> search(*mhd, mu, options);
+  while (search.advance()) {
+  }
+}
 
 // docs/guide/gpu.md
 [[maybe_unused]] void gpuOwnProgram() {

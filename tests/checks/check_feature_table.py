@@ -3,10 +3,9 @@
 
 The rows of kMethods (integrators/methods/method_table.h) give each method's group families,
 whether it needs a Lagrangian or the metric α·I, its orders, whether it keeps the Casimirs and
-whether it needs the matrices' spectral calculus (an exponential retraction, the linearly implicit
-factor's Newton search, or a composition of such a row: method_table.h's needsEigenbasis) and
-whether it needs the orbit preconditioner's weights too (the linearly implicit factor:
-needsOrbitPreconditioner); the systems below give their family, whether they have a Lagrangian,
+whether it needs the matrices' spectral calculus (an exponential retraction, or a composition of
+such a row: method_table.h's needsEigenbasis) and whether it needs the orbit preconditioner (the
+linearly implicit factor: needsOrbitPreconditioner); the systems below give their family, whether they have a Lagrangian,
 whether their metric is α·I and whether their matrices have the spectral calculus and the
 preconditioner. From these this script makes the table the README must hold between its two markers.
 A method that runs on a system is marked ✓, or, on the GPU, "built, not yet run on a GPU": the
@@ -74,8 +73,7 @@ def methods(root):
 
     def spectral(name):
         kind, retraction = recipe(name)
-        return kind == "kLinearlyImplicitDdb" or retraction in ("kExponential",
-                                                                "kTruncatedExponential2")
+        return retraction in ("kExponential", "kTruncatedExponential2")
 
     def preconditioned(name):
         return recipe(name)[0] == "kLinearlyImplicitDdb"

@@ -5,7 +5,9 @@
 // kBackendMatrixGroups family on Zeitlin's fluid (within 1e-12 of the dense run after 100 steps,
 // or 10 times the dense run's own motion from a W0 moved by one ulp where the flow amplifies
 // rounding more: GPU reductions and products add in another order) and the spectrum kept over
-// 1000 steps at N = 1024, the damped and forced fluid, and the contexts (cuda/cuda_context.h).
+// 1000 steps at N = 1024, the damped and forced fluid, the magnetic fluid (its Laplacian to the
+// bit, every method that runs on SU(N) ⋉ su(N)* following the dense run and keeping the Casimirs),
+// and the contexts (cuda/cuda_context.h).
 // Without a GPU every test but CudaDevice's and CudaContext's first is skipped, by ctest's skip,
 // naming why (GTEST_SKIP).
 #include <ddb/core/skew_hermitian_eigenbasis.h>
@@ -15,12 +17,14 @@
 #include <ddb/cuda/cuda_poisson_solver.h>
 #include <ddb/cuda/cuda_zeitlin_exact_flows.h>
 #include <ddb/cuda/cuda_zeitlin_fluid.h>
+#include <ddb/cuda/cuda_zeitlin_mhd.h>
 #include <ddb/integrators/drivers/relax.h>
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/integrators/methods/strang_splitting.h>
 #include <ddb/systems/hoppe_yau_laplacian.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
+#include <ddb/systems/zeitlin_mhd.h>
 #include <ddb/systems/zeitlin_step_size.h>
 #include <gmock/gmock.h>
 
@@ -33,6 +37,8 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "mhd_casimir_drift.h"
 
 namespace ddb {
 namespace {
@@ -373,6 +379,27 @@ TEST(CudaPoissonSolver, AgreesWithTheHostSolve) {
   EXPECT_THROW(CudaPoissonSolver(1), InvalidArgument);
 }
 
+// The magnetic fluid's current B = ΔΘ: the host apply's bits (the same operations in the same
+// order, no fused multiply-add, a correctly rounded square root).
+TEST(CudaPoissonSolver, AppliesTheLaplacianWithTheHostsBits) {
+  SKIP_WITHOUT_GPU();
+  for (const Eigen::Index n : {2, 3, 16, 33, 128}) {
+    const Matrix Theta =
+        randomVorticity(n, 23) + Matrix::Identity(n, n) * std::complex<double>(0.1, 0.3);
+    Matrix expected(n, n);
+    HoppeYauLaplacian(n).apply(Theta, expected);
+    CudaPoissonSolver solver(n);
+    CudaMatrix out;
+    solver.apply(toDevice(Theta), out);
+    EXPECT_TRUE(sameBits(toHost(out), expected))
+        << "N = " << n << ", largest difference " << (toHost(out) - expected).cwiseAbs().maxCoeff();
+  }
+  CudaPoissonSolver solver(4);
+  CudaMatrix theta = toDevice(Matrix::Zero(4, 4)), wrong = toDevice(Matrix::Zero(5, 5)), out;
+  EXPECT_THROW(solver.apply(wrong, out), InvalidArgument);
+  EXPECT_THROW(solver.apply(theta, theta), InvalidArgument);
+}
+
 // W0 with the real and imaginary part of every entry moved by one ulp, up or down at random
 // (seeded), made skew-Hermitian again: a start that differs from W0 by rounding alone.
 Matrix movedByOneUlp(const Matrix& W0) {
@@ -455,6 +482,55 @@ TEST(CudaRelaxation, TheNewtonSearchReachesTheDenseSearchsSteadyState) {
   ASSERT_EQ(dense.result().stop, RelaxStop::kSteady) << dense.result().failure;
   EXPECT_EQ(device.result().stop, RelaxStop::kSteady) << device.result().failure;
   EXPECT_LE(relativeDifference(toHost(device.current()), dense.current()), 1e-8);
+}
+
+// Every method that runs on the dense magnetic fluid but the exponential ones, 20 steps of
+// h = 0.01 on the GPU and on the dense backend from the same (W0, Θ0), as on MPI ranks
+// (tests/mpi/test_distributed_mhd.cc): the same states to 1e-12 of each part's largest entry, or to
+// 10 times what the dense run moves from a start moved by one ulp where the flow amplifies rounding
+// more (as for the fluid, above); the Casimirs tr Θᵏ and tr(WΘᵏ) of the GPU's state, computed on
+// the host, to 1e-12 of their scales.
+static_assert(!groupHasEigenbasis<CudaDualNumberSUN>() &&
+              groupHasOrbitPreconditioner<CudaDualNumberSUN>());
+TEST(CudaMhd, EveryMethodFollowsTheDenseRunAndKeepsTheCasimirs) {
+  SKIP_WITHOUT_GPU();
+  for (const Eigen::Index n : {16, 33}) {
+    const double alpha = 0.5, h = 0.01;
+    const Matrix W0 = randomVorticity(n, 1), Theta0 = 0.02 / double(n) * randomVorticity(n, 2);
+    const DualMatrix<Matrix> mu0 = zeitlinMhdState(W0, Theta0),
+                             moved = zeitlinMhdState(movedByOneUlp(W0), movedByOneUlp(Theta0));
+    const auto dense_mhd = makeZeitlinMhd(n, alpha);
+    const auto device_mhd = makeCudaZeitlinMhd(n, alpha);
+    const auto twentySteps = [&](auto& method, auto mu) {
+      for (int k = 0; k < 20; ++k) method.advance(mu, k * h, h);
+      return mu;
+    };
+    for (const MethodInfo& m : kMethods) {
+      if (!methodApplies(m, *dense_mhd)) continue;
+      const std::string what = std::string(m.name) + ", N = " + std::to_string(n);
+      // The exponential rows need the dual numbers' eigenbasis, which takes its part's eigenbasis
+      // in that basis's own coordinates (core/dual_eigenbasis.h): the CUDA eigenbasis has none,
+      // so they are refused here; every other row runs (the linearly implicit Cayley step with
+      // the shift's preconditioner, as on the host).
+      const bool runs_here = !needsEigenbasis(m);
+      ASSERT_EQ(methodApplies(m, *device_mhd), runs_here) << what;
+      if (!runs_here) continue;
+      // A method of its own for each run: a method keeps its last solves for its next guess.
+      const DualMatrix<Matrix> dense = twentySteps(*makeMethod<DualNumberSUN>(m, dense_mhd), mu0);
+      const DualMatrix<Matrix> dense_moved =
+          twentySteps(*makeMethod<DualNumberSUN>(m, dense_mhd), moved);
+      const auto device_method = makeMethod<CudaDualNumberSUN>(m, device_mhd);
+      const DualMatrix<Matrix> device = toHost(twentySteps(*device_method, toDevice(mu0)));
+      for (const auto& [part, name] :
+           {std::pair{&DualMatrix<Matrix>::eps, "W"}, {&DualMatrix<Matrix>::real, "Theta"}}) {
+        const double rounding = relativeDifference(dense_moved.*part, dense.*part);
+        EXPECT_LE(relativeDifference(device.*part, dense.*part), std::max(1e-12, 10 * rounding))
+            << what << ", " << name << " (the dense run moves by " << rounding << ")";
+      }
+      EXPECT_GT(relativeDifference(device.eps, W0), 1e-4) << what;
+      if (m.keeps_casimirs) EXPECT_LT(test::mhdCasimirDrift(mu0, device), 1e-12) << what;
+    }
+  }
 }
 
 // On one device a run repeats to the bit (the reductions add in a fixed tree; cuBLAS and

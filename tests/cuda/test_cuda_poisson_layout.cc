@@ -1,14 +1,18 @@
-// The CUDA Poisson solve's per-diagonal work on the host (no GPU needed): the sheared layout
+// The CUDA Poisson solve's per-diagonal work and the apply's per-entry work on the host (no GPU
+// needed): the sheared layout
 // (cuda/detail/skewed_diagonals.h) holds every entry of an N×N matrix once, at its diagonal's
 // column and its place along it, and sweeping every column with HoppeYauLaplacian's factors,
-// the means removed as its solve removes them, gives that solve's bits. The kernels run these
+// the means removed as its solve removes them, gives that solve's bits; applying Δ − κ² entry by
+// entry gives HoppeYauLaplacian::apply's bits. The kernels run these
 // same functions (cuda/detail/cuda_kernels.cu).
+#include <ddb/cuda/detail/laplacian_entries.h>
 #include <ddb/cuda/detail/sheared_factors.h>
 #include <ddb/cuda/detail/skewed_diagonals.h>
 #include <ddb/systems/hoppe_yau_laplacian.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <complex>
 #include <cstring>
 #include <set>
@@ -76,6 +80,29 @@ TEST(SkewedDiagonals, SweepingEveryColumnGivesTheHostSolvesBits) {
       EXPECT_EQ(std::memcmp(solved.data(), expected.data(), sizeof(solved(0)) * solved.size()), 0)
           << "N = " << n << ", kappa^2 = " << kappa_squared << ", largest difference "
           << (solved - expected).cwiseAbs().maxCoeff();
+    }
+}
+
+// Every entry's apply (the magnetic fluid's current B = ΔΘ on the GPU) on a column-major array of
+// (re, im) pairs: HoppeYauLaplacian::apply to the bit, for the Laplacian and for Δ − κ².
+TEST(LaplacianEntries, ApplyingEveryEntryGivesTheHostApplysBits) {
+  for (const double kappa_squared : {0.0, 0.7})
+    for (const long n : {2L, 3L, 16L, 33L, 70L}) {
+      const Eigen::MatrixXcd P =
+          randomVorticity(n, 6) + Eigen::MatrixXcd::Identity(n, n) * std::complex<double>(0.1, 0.2);
+      Eigen::MatrixXcd expected(n, n);
+      HoppeYauLaplacian(n, kappa_squared).apply(P, expected);
+      Eigen::MatrixXcd applied = Eigen::MatrixXcd::Constant(n, n, {NAN, NAN});
+      for (long j = 0; j < n; ++j)
+        for (long i = 0; i < n; ++i) {
+          laplacian_entries::applyAt(n, kappa_squared, i, j,
+                                     reinterpret_cast<const double*>(P.data()),
+                                     reinterpret_cast<double*>(applied.data()));
+        }
+      EXPECT_EQ(std::memcmp(applied.data(), expected.data(), sizeof(applied(0)) * applied.size()),
+                0)
+          << "N = " << n << ", kappa^2 = " << kappa_squared << ", largest difference "
+          << (applied - expected).cwiseAbs().maxCoeff();
     }
 }
 

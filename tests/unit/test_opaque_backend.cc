@@ -8,6 +8,9 @@
 // the exponential's sweep in the backend's eigenbasis, the transports and the conjugations),
 // integrate() and Relaxation with its step control, probe and record, and the Newton search;
 // they take the dense backend's bits state by state. The other methods are refused by name.
+// The magnetic fluid on DualMatrix<OpaqueMatrix>, whose parts' eigenbasis has no coordinates of
+// its own (as the CUDA backend's: cuda/cuda_zeitlin_mhd.h), runs every method of the dense
+// magnetic fluid but the exponential ones, and the Newton search, with the dense bits.
 #include <ddb/core/matrix_backend.h>
 #include <ddb/core/skew_hermitian_eigenbasis.h>
 #include <ddb/groups/sun.h>
@@ -15,6 +18,7 @@
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/systems/zeitlin_fluid.h>
 #include <ddb/systems/zeitlin_initial_conditions.h>
+#include <ddb/systems/zeitlin_mhd.h>
 #include <gmock/gmock.h>
 
 #include <complex>
@@ -374,6 +378,92 @@ TEST(OpaqueBackend, ARelaxationResumedFromItsRecordContinuesToTheBit) {
   EXPECT_TRUE(
       sameBits(OpaqueKernels::reveal(second.current()), OpaqueKernels::reveal(whole.current())));
   EXPECT_TRUE(sameBits(second.state().t, whole.state().t));
+}
+
+/// The magnetic fluid's Poisson solve and Laplacian on opaque matrices: the dense ones on the
+/// entries (what CudaPoissonSolver is to the CUDA backend).
+struct OpaquePoisson {
+  HoppeYauLaplacian dense;
+  void solve(const OpaqueMatrix& W, OpaqueMatrix& out) const {
+    dense.solve(OpaqueKernels::reveal(W), OpaqueKernels::reveal(out));
+  }
+  void apply(const OpaqueMatrix& P, OpaqueMatrix& out) const {
+    dense.apply(OpaqueKernels::reveal(P), OpaqueKernels::reveal(out));
+  }
+};
+
+using OpaqueDualNumberSUN = DualNumberSUNOn<OpaqueMatrix>;
+using OpaqueDual = DualMatrix<OpaqueMatrix>;
+
+OpaqueDual wrap(const DualMatrix<Eigen::MatrixXcd>& mu) {
+  return {OpaqueKernels::wrap(mu.real), OpaqueKernels::wrap(mu.eps)};
+}
+bool sameBits(const OpaqueDual& a, const DualMatrix<Eigen::MatrixXcd>& b) {
+  return sameBits(OpaqueKernels::reveal(a.real), b.real) &&
+         sameBits(OpaqueKernels::reveal(a.eps), b.eps);
+}
+
+// SU(N) ⋉ su(N)* on parts whose eigenbasis works in no coordinates of its own, as the GPU's:
+// the dual numbers have no spectral calculus there, so the exponential rows are refused by name;
+// every other row of the dense magnetic fluid (the Cayley family, the linearly implicit Cayley
+// step with the shift's preconditioner, rk4, lobatto3c) takes the dense magnetic fluid's steps to
+// the bit, 20 steps at N = 16 and 33; so does the Newton search, iterate by iterate.
+TEST(OpaqueBackend, TheMagneticFluidOnPartsWithoutCoordinatesTakesTheDenseBits) {
+  static_assert(!groupHasEigenbasis<OpaqueDualNumberSUN>() &&
+                groupHasOrbitPreconditioner<OpaqueDualNumberSUN>());
+  for (const Eigen::Index n : {16, 33}) {
+    const double alpha = 0.5, h = 0.01;
+    const DualMatrix<Eigen::MatrixXcd> mu0 =
+        zeitlinMhdState(randomVorticity(n, 1), 0.02 / double(n) * randomVorticity(n, 2));
+    const auto dense_mhd = makeZeitlinMhd(n, alpha);
+    const auto opaque_mhd =
+        makeZeitlinMhdOn<OpaqueMatrix>(OpaquePoisson{HoppeYauLaplacian(n)}, n, alpha);
+    int ran = 0;
+    for (const MethodInfo& m : kMethods) {
+      if (!methodApplies(m, *dense_mhd)) continue;
+      const std::string what = std::string(m.name) + ", N = " + std::to_string(n);
+      if (needsEigenbasis(m)) {
+        EXPECT_FALSE(methodApplies(m, *opaque_mhd)) << what;
+        EXPECT_THAT([&] { makeMethod<OpaqueDualNumberSUN>(m, opaque_mhd); },
+                    ::testing::ThrowsMessage<InvalidArgument>(
+                        ::testing::AllOf(::testing::HasSubstr("method = " + std::string(m.name)),
+                                         ::testing::HasSubstr("needs the spectral calculus"))))
+            << what;
+        continue;
+      }
+      ASSERT_TRUE(methodApplies(m, *opaque_mhd)) << what;
+      ++ran;
+      const auto dense_method = makeMethod<DualNumberSUN>(m, dense_mhd);
+      const auto opaque_method = makeMethod<OpaqueDualNumberSUN>(m, opaque_mhd);
+      DualMatrix<Eigen::MatrixXcd> mu = mu0;
+      OpaqueDual nu = wrap(mu0);
+      for (int k = 0; k < 20; ++k) {
+        dense_method->advance(mu, k * h, h);
+        opaque_method->advance(nu, k * h, h);
+        ASSERT_TRUE(sameBits(nu, mu)) << what << ", step " << k;
+      }
+      EXPECT_GT((mu.eps - mu0.eps).norm(), 1e-4 * mu0.eps.norm()) << what;
+    }
+    // ddb-cay, ddb-cay-implicit, sddb-cay, ddb4-cay, rk4, lobatto3c.
+    EXPECT_EQ(ran, 6) << "N = " << n;
+
+    RelaxOptions options;
+    options.newton = true;
+    options.tolerance = 1e-10;
+    options.max_steps = 30;
+    Relaxation<DualNumberSUN> dense(*dense_mhd, mu0, options);
+    Relaxation<OpaqueDualNumberSUN> opaque(*opaque_mhd, wrap(mu0), options);
+    int iterations = 0;
+    for (bool more = true; more; ++iterations) {
+      ASSERT_TRUE(sameBits(opaque.current(), dense.current())) << "newton, iterate " << iterations;
+      ASSERT_TRUE(sameBits(opaque.state().energy, dense.state().energy));
+      more = dense.advance();
+      ASSERT_EQ(opaque.advance(), more) << "newton, iterate " << iterations;
+    }
+    EXPECT_EQ(opaque.result().stop, dense.result().stop) << "N = " << n;
+    EXPECT_GT(iterations, 10) << "N = " << n;
+    EXPECT_LT(dense.state().energy, dense_mhd->energy(mu0)) << "N = " << n;
+  }
 }
 
 }  // namespace opaque_backend_tests
