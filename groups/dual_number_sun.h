@@ -19,6 +19,8 @@
 #include <ddb/groups/sun.h>
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
 #include <complex>
 #include <string>
 
@@ -53,6 +55,43 @@ struct DualNumberSUNOn : SkewHermitianGroup<DualNumberSUNOn<X>, detail::ComplexS
   /// x ← its Riesz representer for the backend's innerProduct, ν₀ + εν₁ ↦ ν₁ + εν₀ (pairing
   /// above): the parts exchanged, no entry copied (rieszMapInPlace, core/group_traits.h).
   static void rieszMap(DualMatrix<X>& x) { x.real.swap(x.eps); }
+
+  /// SkewHermitianGroup::cayleyFrozenErrors over the dual numbers, part by part: the frozen map
+  /// L(x) = −[a, x] + a x a is block-triangular, its 1-part L₀x₀ by a₀ alone (rate λ₀ ≤ 2‖a₀‖ +
+  /// ‖a₀‖²) and its ε-part L₀x₁ + L₁x₀ (‖L₁‖ ≤ μ₁ = 2‖a₁‖ + 2‖a₀‖‖a₁‖), so only λ₀ < 1 is needed
+  /// where the generic bound, through ‖a‖₁ = ‖a₀‖₁ + ‖a₁‖₁, needs a small ε-part too (the
+  /// current's ΔΘ weighs high degrees by l(l + 1)). With u = next − p and e = p̃ − next = L(e + u):
+  ///   ‖e₀‖ ≤ λ₀/(1 − λ₀)‖u₀‖,  ‖e₁‖ ≤ (λ₀‖u₁‖ + μ₁(‖e₀‖ + ‖u₀‖))/(1 − λ₀);
+  /// the refined q = M − [a, next] + a p a has p̃ − q = −[a, e] + a(e + u)a, of parts at most
+  ///   d₀ = 2‖a₀‖‖e₀‖ + ‖a₀‖²(‖e₀‖ + ‖u₀‖),
+  ///   d₁ = 2‖a₀‖‖e₁‖ + ‖a₀‖²(‖e₁‖ + ‖u₁‖) + 2‖a₁‖‖e₀‖ + 2‖a₀‖‖a₁‖(‖e₀‖ + ‖u₀‖);
+  /// and 2[a, d] has parts at most 4‖a₀‖d₀ and 4(‖a₀‖d₁ + ‖a₁‖d₀), whose sum bounds its norm over
+  /// both parts (the solver's, against which rounding is measured). Both bounds hold, so each
+  /// error is the smaller of this and the generic one (which is smaller where a₁ is small and both
+  /// parts moved). Each is written as the generic one in ‖a₀‖ and ‖u₁‖ plus what a₁, u₀ and e₀
+  /// add, so that with Θ = 0 (u₀ = e₀ = 0, a₁ = 0) it is the fluid's, to the bit.
+  static void cayleyFrozenErrors(const DualMatrix<X>& a, const DualMatrix<X>& p,
+                                 const DualMatrix<X>& next, double update, double& next_error,
+                                 double& refined_error) {
+    using P = MatrixBackend<X>;
+    Base::cayleyFrozenErrors(a, p, next, update, next_error, refined_error);
+    const double a0 = P::oneNorm(a.real), a1 = P::oneNorm(a.eps);
+    const double lambda = 2.0 * a0 + a0 * a0;
+    if (!(lambda < 1.0)) return;  // the generic bounds are infinite too
+    const double u0 = P::frobeniusDistance(next.real, p.real);
+    const double u1 = P::frobeniusDistance(next.eps, p.eps);
+    const double mu1 = 2.0 * a1 + 2.0 * a0 * a1;
+    const double e0 = lambda / (1.0 - lambda) * u0;
+    const double e1_added = mu1 * (e0 + u0) / (1.0 - lambda);  // ‖e₁‖ ≤ λ₀/(1 − λ₀)‖u₁‖ + this
+    next_error = std::min(next_error, 4.0 * a0 * lambda / (1.0 - lambda) * u1 +
+                                          (4.0 * (a0 * e1_added + a1 * e0) + 4.0 * a0 * e0));
+    const double d0 = 2.0 * a0 * e0 + a0 * a0 * (e0 + u0);
+    const double d1_added =
+        2.0 * a0 * e1_added + a0 * a0 * e1_added + 2.0 * a1 * e0 + 2.0 * a0 * a1 * (e0 + u0);
+    refined_error =
+        std::min(refined_error, 4.0 * a0 * (2.0 * a0 * lambda + a0 * a0) / (1.0 - lambda) * u1 +
+                                    (4.0 * (a0 * d1_added + a1 * d0) + 4.0 * a0 * d0));
+  }
 
   /// The orthogonal projection onto su(N) ⊗ R[ε], part by part, in place (SUNOn's on each).
   static void projectToAlgebra(DualMatrix<X>& x) {

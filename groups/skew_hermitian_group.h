@@ -213,6 +213,27 @@ struct SkewHermitianGroup : LieGroupBase<Derived> {
     B::addAdjoint(1.0, ap, out);
   }
 
+  /// How far M − 2[a, q] may miss Ad*_{cay(2a)} M = M − 2[a, p̃] (p̃ the solution of the frozen-a
+  /// equation (I + a) p̃ (I − a) = M, whose fixed-point map carried p to next, update = ‖next −
+  /// p‖): next_error for q = next, refined_error for q the frozen sweep after it (with a p a kept
+  /// from p); both infinite where the frozen map need not contract. With ‖a‖₂ ≤ ‖a‖₁ and the
+  /// map's rate λ ≤ 2‖a‖₂ + ‖a‖₂²: ‖p̃ − next‖ ≤ λ/(1 − λ)·update, ‖p̃ − q‖ ≤ (2‖a‖₂λ +
+  /// ‖a‖₂²)/(1 − λ)·update for the refined q, and the miss is 2‖[a, p̃ − q]‖ ≤ 4‖a‖₂‖p̃ − q‖
+  /// (MatrixLegendreSolver::certifyFrozenSolution compares them with rounding).
+  template <class X>
+  static void cayleyFrozenErrors(const X& a, const X&, const X&, double update, double& next_error,
+                                 double& refined_error) {
+    const double norm_a = MatrixBackend<X>::oneNorm(a);
+    const double lambda = 2.0 * norm_a + norm_a * norm_a;
+    if (!(lambda < 1.0)) {
+      next_error = refined_error = INFINITY;
+      return;
+    }
+    next_error = 4.0 * norm_a * lambda / (1.0 - lambda) * update;
+    refined_error =
+        4.0 * norm_a * (2.0 * norm_a * lambda + norm_a * norm_a) / (1.0 - lambda) * update;
+  }
+
   /// out = [p, a] = pa − ap = (ap)ᴴ − ap given the product ap. No product.
   template <class X>
   static void commutatorFromProduct(const X& ap, X& out) {

@@ -400,25 +400,22 @@ class MatrixLegendreSolver {
   }
 
   // With a = a(p) frozen, (I + a) p̃ (I − a) = M is linear in p̃, next = M − [a, p] + a p a
-  // is its fixed-point map, of rate λ ≤ 2‖a‖₂ + ‖a‖₂², and Ad*_{cay(2a)} M = M − 2[a, p̃]
-  // exactly. M − 2[a, q] misses it by 2‖[a, p̃ − q]‖ ≤ 4‖a‖₂‖p̃ − q‖, which must stay below
-  // rounding, u‖M‖. q is the next iterate (‖p̃ − next‖ ≤ λ/(1 − λ)‖next − p‖) or, one
-  // product more, the frozen sweep after it with a p a kept from p (it changes by
-  // a(next − p)a): ‖p̃ − q‖ ≤ (2‖a‖₂λ + ‖a‖₂²)/(1 − λ)‖next − p‖. ‖a‖₂ is bounded by ‖a‖₁
-  // (= ‖a‖_∞ for skew-Hermitian a). Returns whether frozen_ now holds a certified p̃.
+  // is its fixed-point map, and Ad*_{cay(2a)} M = M − 2[a, p̃] exactly. M − 2[a, q] misses it by
+  // 2‖[a, p̃ − q]‖, which must stay below rounding, u‖M‖. q is the next iterate or, one product
+  // more, the frozen sweep after it with a p a kept from p (it changes by a(next − p)a); the
+  // group bounds both misses (SkewHermitianGroup::cayleyFrozenErrors; over the dual numbers
+  // DualNumberSUNOn's, which uses that the ε-part does not feed back into the 1-part). Returns
+  // whether frozen_ now holds a certified p̃.
   bool certifyFrozenSolution(const Dual& M, double update, double scale) {
-    const double norm_a = B::oneNorm(a_);
-    const double lambda = 2.0 * norm_a + norm_a * norm_a;
     const double rounding = 0.5 * std::numeric_limits<double>::epsilon() * scale;
     frozen_exact_ = false;
-    if (!(lambda < 1.0)) return false;
-    if (4.0 * norm_a * lambda / (1.0 - lambda) * update <= rounding) {
+    double next_error = INFINITY, refined_error = INFINITY;
+    G::cayleyFrozenErrors(a_, p_, next_, update, next_error, refined_error);
+    if (next_error <= rounding) {
       frozen_.swap(next_);
       return frozen_exact_ = true;
     }
-    const double refined =
-        4.0 * norm_a * (2.0 * norm_a * lambda + norm_a * norm_a) / (1.0 - lambda);
-    if (refined * update > rounding) return false;
+    if (refined_error > rounding) return false;
     B::multiply(a_, next_, t1_);  // frozen_ = M − [a, next] + a p a
     B::sum(1.0, M, -1.0, t1_, 1.0, apa_, frozen_);
     B::addAdjoint(1.0, t1_, frozen_);

@@ -528,7 +528,9 @@ TEST(CudaMhd, EveryMethodFollowsTheDenseRunAndKeepsTheCasimirs) {
             << what << ", " << name << " (the dense run moves by " << rounding << ")";
       }
       EXPECT_GT(relativeDifference(device.eps, W0), 1e-4) << what;
-      if (m.keeps_casimirs) EXPECT_LT(test::mhdCasimirDrift(mu0, device), 1e-12) << what;
+      if (m.keeps_casimirs) {
+        EXPECT_LT(test::mhdCasimirDrift(mu0, device), 1e-12) << what;
+      }
     }
   }
 }

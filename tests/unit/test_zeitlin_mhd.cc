@@ -9,6 +9,7 @@
 #include <ddb/groups/dual_number_sun.h>
 #include <ddb/integrators/drivers/relax.h>
 #include <ddb/integrators/drivers/steady_state_probe.h>
+#include <ddb/integrators/methods/ddb.h>
 #include <ddb/integrators/methods/method_table.h>
 #include <ddb/integrators/solvers/orbit_newton.h>
 #include <ddb/systems/hoppe_yau_laplacian.h>
@@ -637,6 +638,90 @@ State cayleyConjugate(const State& mu, const State& x) {
   const Matrix X = block(x);
   const Matrix I = Matrix::Identity(X.rows(), X.cols());
   return coadjointAction(fromBlock((I - 0.5 * X).inverse() * (I + 0.5 * X)), mu);
+}
+
+// The Cayley step's certificate of its frozen solution over the dual numbers
+// (DualNumberSUNOn::cayleyFrozenErrors) against the misses themselves: with a = a₀ + εa₁ and M
+// given, the frozen equation's solution p̃ = (I + a)⁻¹M(I − a)⁻¹ through the block matrices, an
+// iterate p near it in both parts, next = M − [a, p] + a p a and the refined q = M − [a, next] +
+// a p a, the misses 2‖[a, p̃ − next]‖ and 2‖[a, p̃ − q]‖ (over both parts) stay below the bounds,
+// for a strong current (‖a₁‖₁ up to 2‖a₀‖₁), where the generic bound through ‖a₀‖₁ + ‖a₁‖₁ is
+// mostly more than twice as large. With a₁ = 0 and the 1-parts zero the bounds are the generic
+// ones to the bit (the magnetic fluid at Θ = 0 takes the fluid's steps).
+TEST(ZeitlinMhd, TheCayleyStepsFrozenSolutionBoundsHoldPartByPart) {
+  const Eigen::Index n = 12;
+  const auto commutatorNorm = [](const State& a, const State& x) {
+    const Matrix c = block(a) * block(x) - block(x) * block(a);
+    return 2.0 * std::hypot(fromBlock(c).real.norm(), fromBlock(c).eps.norm());
+  };
+  int tighter = 0;
+  for (unsigned seed = 1; seed <= 12; ++seed) {
+    const double a0_scale = 0.02 * (1 + seed % 4), current = 0.5 * (seed % 5);
+    const Matrix a0 = randomVorticity(n, seed), a1 = randomVorticity(n, seed + 100);
+    const State a{a0_scale * a0 / MatrixBackend<Matrix>::oneNorm(a0),
+                  current * a0_scale * a1 / MatrixBackend<Matrix>::oneNorm(a1)};
+    const Matrix A = block(a), I = Matrix::Identity(2 * n, 2 * n);
+    for (const double offset : {1e-6, 1e-10}) {
+      // p off the solution in both parts, or, with M's 1-part zero (the magnetic fluid at
+      // Θ = 0, where the 1-part stays exactly 0), in the ε-part alone.
+      for (const bool both : {true, false}) {
+        const State M{both ? randomVorticity(n, seed + 200) : Matrix::Zero(n, n),
+                      randomVorticity(n, seed + 300)};
+        const State exact = fromBlock((I + A).inverse() * block(M) * (I - A).inverse());
+        const State p{both ? Matrix(exact.real + offset * randomVorticity(n, seed + 400))
+                           : Matrix(Matrix::Zero(n, n)),
+                      exact.eps + offset * randomVorticity(n, seed + 500)};
+        const State ap = fromBlock(A * block(p)), apa = fromBlock(A * block(p) * A);
+        State next{M.real - ap.real + ap.real.adjoint() + apa.real,
+                   M.eps - ap.eps + ap.eps.adjoint() + apa.eps};
+        const State anext = fromBlock(A * block(next));
+        const State refined{M.real - anext.real + anext.real.adjoint() + apa.real,
+                            M.eps - anext.eps + anext.eps.adjoint() + apa.eps};
+        const double update = distance(next, p);
+        double next_bound = 0, refined_bound = 0, generic_next = 0, generic_refined = 0;
+        DualNumberSUN::cayleyFrozenErrors(a, p, next, update, next_bound, refined_bound);
+        DualNumberSUN::Base::cayleyFrozenErrors(a, p, next, update, generic_next, generic_refined);
+        const State miss_next{exact.real - next.real, exact.eps - next.eps};
+        const State miss_refined{exact.real - refined.real, exact.eps - refined.eps};
+        const std::string what = "seed " + std::to_string(seed) + ", offset " +
+                                 std::to_string(offset) + (both ? ", both parts" : ", eps part");
+        ASSERT_TRUE(std::isfinite(next_bound)) << what;
+        EXPECT_LE(commutatorNorm(a, miss_next), next_bound) << what;
+        EXPECT_LE(commutatorNorm(a, miss_refined), refined_bound) << what;
+        if (next_bound < 0.5 * generic_next) ++tighter;
+        if (current == 0.0 && !both) {
+          EXPECT_EQ(next_bound, generic_next) << what;
+          EXPECT_EQ(refined_bound, generic_refined) << what;
+        }
+      }
+    }
+  }
+  EXPECT_GT(tighter, 20);
+}
+
+// A conservative step at h = 0.2 ħ/‖P₀‖₂ (the step where quflow's fixed point takes 7 iterations,
+// docs/results/benchmarks.md) transports by the certified frozen solution, not an LU conjugation,
+// and its result is Ad*_{cay(2a)} μ through the block matrices to rounding.
+TEST(ZeitlinMhd, TheCayleyStepIsTheBlockMatricesConjugationByItsFrozenSolution) {
+  const Eigen::Index n = 32;
+  const State mu0 = zeitlinMhdState(lowModeVorticity(n, 6, 7), 0.05 * lowModeVorticity(n, 4, 8));
+  const auto mhd = makeZeitlinMhd(n, 0.0);
+  Matrix P;
+  HoppeYauLaplacian(n).solve(mu0.eps, P);
+  const double h = 0.2 * zeitlinHbar(n) / Eigen::JacobiSVD<Matrix>(P).singularValues()(0);
+  Ddb<Cayley<DualNumberSUN>> step(mhd, Cayley<DualNumberSUN>(), LegendreForm::kHamiltonian);
+  State mu = mu0;
+  int certified = 0;
+  for (int k = 0; k < 12; ++k) {
+    const State before = mu;
+    step.advance(mu, k * h, h);
+    if (step.legendreSolver().frozenSolution() != nullptr) ++certified;
+    const State a = step.legendreSolver().halfStep();
+    const State expected = cayleyConjugate(before, State{2.0 * a.real, 2.0 * a.eps});
+    EXPECT_LT(distance(mu, expected), 1e-14 * std::hypot(before.real.norm(), before.eps.norm()))
+        << "step " << k;
+  }
+  EXPECT_GE(certified, 10);
 }
 
 // The Newton search's gradient and Hessian product on the dual numbers, in the inner product its
