@@ -701,7 +701,10 @@ TEST(ZeitlinMhd, TheCayleyStepsFrozenSolutionBoundsHoldPartByPart) {
 
 // A conservative step at h = 0.2 ħ/‖P₀‖₂ (the step where quflow's fixed point takes 7 iterations,
 // docs/results/benchmarks.md) transports by the certified frozen solution, not an LU conjugation,
-// and its result is Ad*_{cay(2a)} μ through the block matrices to rounding.
+// and its result is Ad*_{cay(2a)} μ through the block matrices to rounding, part by part. With
+// the former bound through ‖a₀‖₁ + ‖a₁‖₁ one of the first 8 steps here was certified (measured
+// with a probe; docs/results/benchmarks.md, "Magnetohydrodynamics on the sphere: the Cayley step's
+// frozen solution certified part by part"), with the part-wise one all 8.
 TEST(ZeitlinMhd, TheCayleyStepIsTheBlockMatricesConjugationByItsFrozenSolution) {
   const Eigen::Index n = 32;
   const State mu0 = zeitlinMhdState(lowModeVorticity(n, 6, 7), 0.05 * lowModeVorticity(n, 4, 8));
@@ -718,8 +721,10 @@ TEST(ZeitlinMhd, TheCayleyStepIsTheBlockMatricesConjugationByItsFrozenSolution) 
     if (step.legendreSolver().frozenSolution() != nullptr) ++certified;
     const State a = step.legendreSolver().halfStep();
     const State expected = cayleyConjugate(before, State{2.0 * a.real, 2.0 * a.eps});
-    EXPECT_LT(distance(mu, expected), 1e-14 * std::hypot(before.real.norm(), before.eps.norm()))
-        << "step " << k;
+    // Each part against its own size: Θ is 5 % of the state, and the certificate bounds the miss
+    // over both parts together.
+    EXPECT_LT((mu.real - expected.real).norm(), 1e-14 * before.real.norm()) << "step " << k;
+    EXPECT_LT((mu.eps - expected.eps).norm(), 1e-14 * before.eps.norm()) << "step " << k;
   }
   EXPECT_GE(certified, 10);
 }
