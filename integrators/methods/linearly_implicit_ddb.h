@@ -32,6 +32,22 @@
 
 namespace ddb {
 
+namespace detail {
+/// α of the system's metric k♯ = α·R (DissipationMetric::scalarMultiple), which the linearly
+/// implicit factor needs; InvalidArgument naming `method` where the metric is no such multiple.
+template <class G>
+double requireScalarMetric(const LiePoissonSystem<G>& system, const std::string& method) {
+  const std::optional<double> alpha = system.metric().scalarMultiple();
+  if (!alpha) {
+    throwInvalid("method", method,
+                 "needs the metric alpha * identity (on SU(N) x| su(N)*, alpha times the swap of "
+                 "its parts), which '" +
+                     system.name() + "' has not");
+  }
+  return *alpha;
+}
+}  // namespace detail
+
 template <class R>
 class LinearlyImplicitDdb : public Ddb<R> {
  public:
@@ -43,7 +59,7 @@ class LinearlyImplicitDdb : public Ddb<R> {
                       LegendreForm form = LegendreForm::kLagrangian, SolverOptions options = {})
       : Ddb<R>(system->withoutDissipation(), std::move(retraction), form, options),
         with_dissipation_(std::move(system)),
-        alpha_(scalarMetricOf(*with_dissipation_)),
+        alpha_(detail::requireScalarMetric(*with_dissipation_, "ddb-*-implicit")),
         dissipative_factor_(*with_dissipation_, alpha_) {}
 
   std::string name() const override { return this->nameWith("ddb-") + "-implicit"; }
@@ -68,17 +84,6 @@ class LinearlyImplicitDdb : public Ddb<R> {
   long lastStepIterations() const override { return Ddb<R>::lastStepIterations() + factor_steps_; }
 
  private:
-  static double scalarMetricOf(const LiePoissonSystem<G>& system) {
-    const std::optional<double> alpha = system.metric().scalarMultiple();
-    if (!alpha) {
-      throwInvalid("method", "ddb-*-implicit",
-                   "needs the metric alpha * identity (on SU(N) x| su(N)*, alpha times the swap of "
-                   "its parts), which '" +
-                       system.name() + "' has not");
-    }
-    return *alpha;
-  }
-
   std::shared_ptr<const LiePoissonSystem<G>> with_dissipation_;  // Ddb's system has none
   double alpha_;
   OrbitNewton<G> dissipative_factor_;

@@ -379,12 +379,7 @@ std::unique_ptr<OneStepMethod<G>> makeMethod(const MethodInfo& method,
   if (method.needs_lagrangian && system->lagrangian() == nullptr) {
     throwInvalid("method", name, "needs a Lagrangian, which '" + system->name() + "' has not");
   }
-  if (method.needs_scalar_metric && !system->metric().scalarMultiple()) {
-    throwInvalid("method", name,
-                 "needs the metric alpha * identity (on SU(N) x| su(N)*, alpha times the swap of "
-                 "its parts), which '" +
-                     system->name() + "' has not");
-  }
+  if (method.needs_scalar_metric) detail::requireScalarMetric(*system, name);
   LegendreForm form = LegendreForm::kHamiltonian;
   if constexpr (!isDynamicGroup<G>) {
     if (system->lagrangian()) form = LegendreForm::kLagrangian;
