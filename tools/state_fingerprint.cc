@@ -1,7 +1,8 @@
 // The bits of every method on every system, as one FNV-1a hash per run: integrate() (advance),
 // two step() calls, relax() with the adaptive step control and the probe's residual and energy,
 // the Newton search, and the probe at the initial state, on the rigid body, the heavy top, the
-// Kirchhoff body, the Manakov body (SO(5)) and the fluid (SU(12)). A change that must keep every
+// Kirchhoff body, the Manakov body (SO(5)), the fluid (SU(12)) and the magnetic fluid
+// (SU(12) ⋉ su(12)*, both fields nonzero). A change that must keep every
 // state to the bit (a refactoring) prints the same lines before and after:
 //   scripts/state_fingerprint.sh build > before.txt   (at the old commit)
 //   scripts/state_fingerprint.sh build > after.txt && diff before.txt after.txt
@@ -20,6 +21,10 @@ std::uint64_t fnv(const M& m, std::uint64_t h = 1469598103934665603ull) {
     h *= 1099511628211ull;
   }
   return h;
+}
+// A dual-number state: its 1-part (Θ), then its ε-part (W).
+std::uint64_t fnv(const DualMatrix<Eigen::MatrixXcd>& m, std::uint64_t h = 1469598103934665603ull) {
+  return fnv(m.eps, fnv(m.real, h));
 }
 std::uint64_t fnvd(double d, std::uint64_t h) {
   Eigen::Matrix<double, 1, 1> x;
@@ -88,4 +93,8 @@ int main() {
     }
   run<SON>("manakov", makeManakovBody(J, 0.2), A, 0.05, 8);
   run<SUN>("fluid", makeZeitlinFluid(12, 0.5), randomVorticity(12, 7), 0.02, 6);
+  run<DualNumberSUN>(
+      "mhd", makeZeitlinMhd(12, 0.5),
+      DualMatrix<Eigen::MatrixXcd>{0.02 * randomVorticity(12, 8), randomVorticity(12, 7)}, 0.005,
+      6);
 }
