@@ -1,6 +1,6 @@
 // DualEigenbasis<X>: the spectral calculus of a skew-Hermitian matrix over the dual numbers,
 // x = x₀ + εx₁ (ε² = 0), MatrixBackend<DualMatrix<X>>::Eigenbasis for complex X whose own
-// Eigenbasis works in its coordinates (kEigenbasisCoordinates: the dense and the distributed
+// Eigenbasis works in its coordinates (kEigenbasisCoordinates: the dense, distributed and CUDA
 // backends; core/dual_matrix.h), on which the exponential methods run on SU(N) ⋉ su(N)*
 // (groups/dual_number_sun.h; docs/reference/conventions.md §1, "SU(N) over the dual numbers").
 // A function of ad_x over R[ε] is its Taylor series in dual-number arithmetic: with
@@ -27,19 +27,21 @@
 // An application with both parts of x and A nonzero costs x₀'s four products for the 1-part,
 // six for the ε-part (Â₀, Â₁ and back) and one per node; compute() two more (x̂₁). Where x₁ or
 // A₀ is zero the ε-part is x₀'s application alone, with its bits (the magnetic fluid with
-// Θ = 0 is the fluid, systems/zeitlin_mhd.h).
+// Θ = 0 is the fluid, systems/zeitlin_mhd.h). In the coordinates the part's eigenbasis weighs
+// entries by the named weights of core/eigenbasis_weights.h, Γ(τ) and D̄ among them, so that a
+// device backend applies them in its own kernels.
 // Not here: the weights of the Newton search's preconditioner (setWeights, applyWeights); on
 // dual-number matrices the search takes the shift's (integrators/solvers/orbit_preconditioner.h).
 #pragma once
 
 #include <ddb/core/detail/gauss_legendre.h>
 #include <ddb/core/dual_matrix.h>
+#include <ddb/core/eigenbasis_weights.h>
 #include <ddb/core/matrix_backend.h>
 #include <ddb/core/phase_function.h>
 
 #include <Eigen/Core>
 #include <cmath>
-#include <complex>
 
 namespace ddb {
 
@@ -47,7 +49,6 @@ template <class X>
 class DualEigenbasis {
   using D = DualMatrix<X>;
   using Part = MatrixBackend<X>;
-  using Complex = std::complex<double>;
 
  public:
   /// Decomposes x₀ and writes x₁ in its eigenbasis. Returns false when x is not finite.
@@ -70,12 +71,7 @@ class DualEigenbasis {
       real_.toBasis(in.real, real_hat_);
       derivativeInBasis(f, scale);  // sum_, the derivative term being sum_ − sum_ᴴ
       real_.toBasis(in.eps, hat_);
-      const Eigen::VectorXd& theta = real_.phases();
-      real_.mapEntries(hat_, [&](Eigen::Index a, Eigen::Index b, Complex value) {
-        double re, im;
-        phaseFunctionParts(f, scale * (theta(a) - theta(b)), re, im);
-        return value * Complex(re, im);
-      });
+      real_.weigh(PhaseFunctionWeights{f, scale}, hat_);
       Part::axpy(1.0, sum_, hat_);
       Part::addAdjoint(-1.0, sum_, hat_);
       real_.fromBasis(hat_, out.eps);
@@ -118,20 +114,10 @@ class DualEigenbasis {
 
   // sum_ += weight · D̄ Â₀ K, D = diag(e^{iτθ}), K = Γ(τ) ∘ x̂₁.
   void addConjugationDerivative(double tau, double weight) {
-    const Eigen::VectorXd& theta = real_.phases();
-    half_.resize(theta.size());
-    for (Eigen::Index a = 0; a < theta.size(); ++a)
-      half_(a) = std::polar(1.0, 0.5 * tau * theta(a));
     Part::copy(eps_hat_, kernel_);
-    real_.mapEntries(kernel_, [&](Eigen::Index a, Eigen::Index c, Complex value) {
-      const double u = 0.5 * tau * (theta(a) - theta(c));
-      const double sinc = u == 0.0 ? 1.0 : std::sin(u) / u;
-      return value * (half_(a) * half_(c) * (tau * sinc));
-    });
+    real_.weigh(ConjugationDerivativeWeights{tau}, kernel_);
     Part::copy(real_hat_, scaled_);
-    real_.mapEntries(scaled_, [&](Eigen::Index a, Eigen::Index, Complex value) {
-      return value * std::conj(half_(a) * half_(a));
-    });
+    real_.weigh(RowPhaseWeights{tau}, scaled_);
     Part::multiplyAdd(weight, scaled_, kernel_, sum_);
   }
 
@@ -139,7 +125,6 @@ class DualEigenbasis {
   bool eps_zero_ = true;            // x₁ = 0
   X eps_hat_;                       // x̂₁
   X real_hat_, hat_, sum_, kernel_, scaled_;
-  Eigen::VectorXcd half_;  // e^{iτθ/2}
 };
 
 }  // namespace ddb

@@ -15,11 +15,11 @@
 // A product whose factor is exactly zero is not formed: a part that is zero stays zero, and a
 // state with one part zero costs X's one product per product, with X's bits (the magnetic fluid
 // with Θ = 0 is the fluid, systems/zeitlin_mhd.h).
-// On the dense and distributed complex parts the backend's Eigenbasis is DualEigenbasis
-// (core/dual_eigenbasis.h, which its users include): the exponential methods run on it. Other
-// parts (CUDA's) have no Eigenbasis. On every part the Newton search and the linearly implicit
-// Cayley step run with the shift's preconditioner, the backend's arithmetic alone (no entries'
-// weights over the dual numbers: integrators/solvers/orbit_preconditioner.h).
+// On the dense, distributed and CUDA complex parts the backend's Eigenbasis is DualEigenbasis
+// (core/dual_eigenbasis.h, which its users include): the exponential methods run on it. Parts
+// whose eigenbasis has no coordinates have no Eigenbasis. On every part the Newton search and the
+// linearly implicit Cayley step run with the shift's preconditioner, the backend's arithmetic alone
+// (no entries' weights over the dual numbers: integrators/solvers/orbit_preconditioner.h).
 #pragma once
 
 #include <ddb/core/binary_record.h>

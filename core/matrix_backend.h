@@ -50,7 +50,7 @@ struct MatrixBackend {
   /// core/phase_function.h. Defined in core/skew_hermitian_eigenbasis.h, which its users
   /// include.
   using Eigenbasis = SkewHermitianEigenbasis<X>;
-  /// Eigenbasis works in its own coordinates too (toBasis, fromBasis, mapEntries), on which the
+  /// Eigenbasis works in its own coordinates too (toBasis, fromBasis, weigh), on which the
   /// dual numbers' eigenbasis is built (core/dual_eigenbasis.h).
   static constexpr bool kEigenbasisCoordinates = true;
 

@@ -6,17 +6,13 @@
 // device, a name can.
 #pragma once
 
+#include <ddb/core/detail/host_device.h>
+
 #include <cmath>
 #include <complex>
 
 // The formulas below compile for a CUDA device too (cuda/detail/cuda_kernels.cu applies them
 // there), on real and imaginary parts: std::complex has no device functions.
-#if defined(__CUDACC__)
-#define DDB_HOST_DEVICE __host__ __device__
-#else
-#define DDB_HOST_DEVICE
-#endif
-
 namespace ddb {
 
 /// e^{iη} − 1 as (real, imaginary) parts, without the cancellation of cos η − 1 at small η.
@@ -75,5 +71,3 @@ DDB_HOST_DEVICE inline void phaseFunctionParts(PhaseFunction f, double eta, doub
 }
 
 }  // namespace ddb
-
-#undef DDB_HOST_DEVICE

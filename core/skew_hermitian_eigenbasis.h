@@ -13,6 +13,7 @@
 #pragma once
 
 #include <ddb/core/detail/hermitian_eigensolver.h>
+#include <ddb/core/detail/weigh_on_host.h>
 #include <ddb/core/matrix_backend.h>
 #include <ddb/core/phase_function.h>
 
@@ -87,6 +88,13 @@ class SkewHermitianEigenbasis {
     for (Eigen::Index b = 0; b < m.cols(); ++b) {
       for (Eigen::Index a = 0; a < m.rows(); ++a) m(a, b) = f(a, b, m(a, b));
     }
+  }
+
+  /// m ← w ∘ m for the named weights of a matrix in the eigenbasis' coordinates
+  /// (core/eigenbasis_weights.h).
+  template <class Weights>
+  void weigh(const Weights& w, Complex& m) {
+    detail::weighOnHost(w, phases(), half_, [&](const auto& f) { mapEntries(m, f); });
   }
 
   /// out = V hat Vᴴ projected onto the skew-Hermitian matrices (two products); hat is
@@ -167,6 +175,7 @@ class SkewHermitianEigenbasis {
   HermitianEigensolver solver_;
   Complex hermitian_, product_, hat_;
   Eigen::MatrixXd weights_;  // of applyWeights, kept between bases of one size
+  Eigen::VectorXcd half_;    // weigh()'s half phases
   bool weighted_ = false;    // weights_ are this basis's
 };
 

@@ -33,6 +33,9 @@ struct MatrixBackend<CudaMatrix> {
   using Scalar = std::complex<double>;
   using Lu = CudaLu;
   using Eigenbasis = CudaEigenbasis;
+  /// CudaEigenbasis works in its own coordinates too (toBasis, fromBasis, weigh), on which the
+  /// dual numbers' eigenbasis is built (core/dual_eigenbasis.h).
+  static constexpr bool kEigenbasisCoordinates = true;
 
   // ---- Element-wise operations (the contract's table): the dense backend's expressions. ----
   static void copy(const X& x, X& out);

@@ -124,12 +124,12 @@ bool CudaEigenbasis::compute(const CudaMatrix& x) {
 }
 
 void CudaEigenbasis::apply(PhaseFunction f, double scale, const CudaMatrix& in, CudaMatrix& out) {
-  Workspace& w = *workspace_;
-  const auto weigh = [&] {
-    cuda_kernels::weighByPhases(w.state(), in.rows(), w.phases, scale, f,
-                                reinterpret_cast<double*>(w.hat.deviceData()));
-  };
-  transform(in, out, weigh, "apply");
+  transform(
+      in, out,
+      [&] {
+        weigh(PhaseFunctionWeights{f, scale}, workspace_->hat);
+      },
+      "apply");
 }
 
 void CudaEigenbasis::uploadWeights(const Eigen::MatrixXd& weights) {
@@ -183,6 +183,60 @@ void CudaEigenbasis::requireDecomposedContext(const CudaMatrix& x, const char* f
                  "the decomposed matrix's context");
 }
 
+void CudaEigenbasis::toBasis(const CudaMatrix& in, CudaMatrix& hat) {
+  conjugate(in, hat, CUBLAS_OP_C, "toBasis");
+}
+
+void CudaEigenbasis::fromBasis(const CudaMatrix& hat, CudaMatrix& out) {
+  conjugate(hat, out, CUBLAS_OP_N, "fromBasis");
+  if (out.rows() > 0) {
+    cuda_kernels::makeSkewHermitian(workspace_->state(), out.rows(),
+                                    reinterpret_cast<double*>(out.deviceData()));
+  }
+}
+
+void CudaEigenbasis::conjugate(const CudaMatrix& in, CudaMatrix& out, int op_a,
+                               const char* function) {
+  Workspace& w = *workspace_;
+  requireDecomposedSize(in.rows(), in.cols(), function);
+  if (out.rows() != in.rows() || out.cols() != in.cols() || out.context() != w.context) {
+    out = CudaMatrix(in.rows(), in.cols(), w.context);
+  }
+  if (in.rows() == 0) return;
+  requireDecomposedContext(in, function);
+  const auto op = static_cast<cublasOperation_t>(op_a);
+  const cublasOperation_t adjoint_op = op == CUBLAS_OP_N ? CUBLAS_OP_C : CUBLAS_OP_N;
+  gemm(w.state(), CUBLAS_OP_N, in, adjoint_op, w.vectors, w.product);  // in Aᴴ
+  gemm(w.state(), op, w.vectors, CUBLAS_OP_N, w.product, out);         // A in Aᴴ
+}
+
+template <class Kernel>
+void CudaEigenbasis::weighEntries(CudaMatrix& m, const Kernel& kernel) {
+  requireDecomposedSize(m.rows(), m.cols(), "weigh");
+  if (m.rows() == 0) return;
+  requireDecomposedContext(m, "weigh");
+  Workspace& w = *workspace_;
+  kernel(w.state(), m.rows(), w.phases, reinterpret_cast<double*>(m.deviceData()));
+}
+
+void CudaEigenbasis::weigh(const PhaseFunctionWeights& weights, CudaMatrix& m) {
+  weighEntries(m, [&](CudaContext::State& state, long n, const double* phases, double* x) {
+    cuda_kernels::weighByPhases(state, n, phases, weights.scale, weights.f, x);
+  });
+}
+
+void CudaEigenbasis::weigh(const ConjugationDerivativeWeights& weights, CudaMatrix& m) {
+  weighEntries(m, [&](CudaContext::State& state, long n, const double* phases, double* x) {
+    cuda_kernels::weighByConjugationDerivative(state, n, phases, weights.tau, x);
+  });
+}
+
+void CudaEigenbasis::weigh(const RowPhaseWeights& weights, CudaMatrix& m) {
+  weighEntries(m, [&](CudaContext::State& state, long n, const double* phases, double* x) {
+    cuda_kernels::weighRowsByPhase(state, n, phases, weights.tau, x);
+  });
+}
+
 template <class Weigh>
 void CudaEigenbasis::transform(const CudaMatrix& in, CudaMatrix& out, const Weigh& weigh,
                                const char* function) {
@@ -190,16 +244,9 @@ void CudaEigenbasis::transform(const CudaMatrix& in, CudaMatrix& out, const Weig
   requireDecomposedSize(in.rows(), in.cols(), function);
   if (in.rows() == 0) return;
   requireDecomposedContext(in, function);
-  CudaContext::State& state = w.state();
-  gemm(state, CUBLAS_OP_N, in, CUBLAS_OP_N, w.vectors, w.product);     // in V
-  gemm(state, CUBLAS_OP_C, w.vectors, CUBLAS_OP_N, w.product, w.hat);  // Vᴴ in V
-  weigh();                                                             // Â ← F ∘ Â
-  gemm(state, CUBLAS_OP_N, w.vectors, CUBLAS_OP_N, w.hat, w.product);  // V (F ∘ Â)
-  if (out.rows() != in.rows() || out.cols() != in.cols() || out.context() != w.context) {
-    out = CudaMatrix(in.rows(), in.cols(), w.context);
-  }
-  gemm(state, CUBLAS_OP_N, w.product, CUBLAS_OP_C, w.vectors, out);
-  cuda_kernels::makeSkewHermitian(state, out.rows(), reinterpret_cast<double*>(out.deviceData()));
+  toBasis(in, w.hat);  // Â = Vᴴ in V
+  weigh();             // Â ← F ∘ Â
+  fromBasis(w.hat, out);
 }
 
 }  // namespace ddb

@@ -1,10 +1,9 @@
 // Magnetohydrodynamics on the sphere (systems/zeitlin_mhd.h) on one GPU: SU(N) ⋉ su(N)* on
 // DualMatrix<CudaMatrix> (W and Θ in one context's memory), with CudaPoissonSolver's solve and
-// apply. The method table's rows that run on the dense magnetic fluid (makeMethod), but the
-// exponential ones, and Relaxation with the Newton search run on it: the dual numbers' spectral
-// calculus (core/dual_eigenbasis.h) takes its part's eigenbasis in that basis's own coordinates,
-// which CudaEigenbasis does not give, so those rows are refused by name (docs/guide/gpu.md, "The
-// magnetic fluid"). On MPI ranks every row runs (distributed/distributed_zeitlin_mhd.h).
+// apply. Every row of the method table that runs on the dense magnetic fluid (makeMethod) and
+// Relaxation with the Newton search run on it, the exponential ones through the dual numbers'
+// spectral calculus (core/dual_eigenbasis.h) on CudaEigenbasis's coordinates (docs/guide/gpu.md,
+// "The magnetic fluid"), as on MPI ranks (distributed/distributed_zeitlin_mhd.h).
 #pragma once
 
 #include <ddb/core/dual_matrix.h>

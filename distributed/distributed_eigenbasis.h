@@ -10,6 +10,7 @@
 // layout, then reused. All functions are collective.
 #pragma once
 
+#include <ddb/core/detail/weigh_on_host.h>
 #include <ddb/core/phase_function.h>
 #include <ddb/distributed/adjoint_exchange.h>
 #include <ddb/distributed/distributed_matrix.h>
@@ -109,6 +110,13 @@ class DistributedEigenbasis {
     }
   }
 
+  /// m ← w ∘ m for the named weights of a matrix in the eigenbasis' coordinates, this rank's
+  /// entries (core/eigenbasis_weights.h).
+  template <class Weights>
+  void weigh(const Weights& w, DistributedMatrix& m) {
+    detail::weighOnHost(w, phases_, half_, [&](const auto& f) { mapEntries(m, f); });
+  }
+
   /// out = V hat Vᴴ projected onto the skew-Hermitian matrices (two products); hat is left
   /// as it is. The inverse of toBasis on skew-Hermitian matrices.
   void fromBasis(DistributedMatrix& hat, DistributedMatrix& out) {
@@ -183,6 +191,7 @@ class DistributedEigenbasis {
   AdjointExchange adjoints_;
   Eigen::VectorXd phases_, diagonal_;
   Eigen::MatrixXd local_weights_;  // of applyWeights, at this rank's entries
+  Eigen::VectorXcd half_;          // weigh()'s half phases
   bool weighted_ = false;          // local_weights_ are this basis's
   std::vector<std::complex<double>> work_;
   std::vector<double> rwork_;

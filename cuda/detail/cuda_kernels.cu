@@ -132,6 +132,14 @@ __device__ double2 skewPart(double2 u, double2 l) {
   return make_double2(0.5 * (u.x - l.x), 0.5 * (u.y - (-l.y)));
 }
 
+// x_k ← w·x_k for complex entry k of x (re, im interleaved), w = (wr, wi): the host's
+// std::complex product, (ac − bd, ad + bc).
+__device__ void multiplyEntry(double* x, long k, double wr, double wi) {
+  const double xr = x[2 * k], xi = x[2 * k + 1];
+  x[2 * k] = xr * wr - xi * wi;
+  x[2 * k + 1] = xr * wi + xi * wr;
+}
+
 // Tile pair (I, J), I ≤ J: block (J, I) of the grid; the blocks below the diagonal exit.
 __global__ void makeSkewHermitianKernel(long n, double2* x) {
   if (blockIdx.y > blockIdx.x) return;
@@ -220,9 +228,29 @@ void weighByPhases(CudaContext::State& ctx, long n, const double* phases, double
     const long a = k % n, b = k / n;
     double fr, fi;
     phaseFunctionParts(f, scale * (phases[a] - phases[b]), fr, fi);
-    const double xr = x[2 * k], xi = x[2 * k + 1];
-    x[2 * k] = xr * fr - xi * fi;
-    x[2 * k + 1] = xr * fi + xi * fr;
+    multiplyEntry(x, k, fr, fi);
+  });
+}
+
+void weighByConjugationDerivative(CudaContext::State& ctx, long n, const double* phases, double tau,
+                                  double* x) {
+  launch(ctx, n * n, [=] __device__(long k) {
+    const long a = k % n, c = k / n;
+    double ar, ai, cr, ci, wr, wi;
+    halfPhaseParts(tau, phases[a], ar, ai);
+    halfPhaseParts(tau, phases[c], cr, ci);
+    conjugationDerivativeWeightParts(tau, phases[a], phases[c], ar, ai, cr, ci, wr, wi);
+    multiplyEntry(x, k, wr, wi);
+  });
+}
+
+void weighRowsByPhase(CudaContext::State& ctx, long n, const double* phases, double tau,
+                      double* x) {
+  launch(ctx, n * n, [=] __device__(long k) {
+    double hr, hi, wr, wi;
+    halfPhaseParts(tau, phases[k % n], hr, hi);
+    rowPhaseWeightParts(hr, hi, wr, wi);
+    multiplyEntry(x, k, wr, wi);
   });
 }
 

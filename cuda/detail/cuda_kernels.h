@@ -5,6 +5,7 @@
 // (cuda/cuda_context.h); the reductions use its scratch.
 #pragma once
 
+#include <ddb/core/eigenbasis_weights.h>
 #include <ddb/core/phase_function.h>
 #include <ddb/cuda/cuda_context.h>
 
@@ -37,6 +38,11 @@ void addToDiagonal(CudaContext::State& ctx, long rows, long count, double* x, do
 /// an eigenbasis's weights (core/phase_function.h, cuda/cuda_eigenbasis.h).
 void weighByPhases(CudaContext::State& ctx, long n, const double* phases, double scale,
                    PhaseFunction f, double* x);
+/// x(a, c) ← Γ(τ)_ac·x(a, c) and x(a, b) ← e^{−iτθ_a}·x(a, b) for the n×n x and the n phases θ
+/// (a device array): the dual numbers' eigenbasis weights (core/eigenbasis_weights.h).
+void weighByConjugationDerivative(CudaContext::State& ctx, long n, const double* phases, double tau,
+                                  double* x);
+void weighRowsByPhase(CudaContext::State& ctx, long n, const double* phases, double tau, double* x);
 /// x(a, b) ← w(a, b)·x(a, b) for the `count` entries of x and the reals w (device arrays).
 void weighEntrywise(CudaContext::State& ctx, long count, const double* weights, double* x);
 /// out(i) = Im x(i, i) for the n×n x (device arrays).

@@ -484,13 +484,14 @@ TEST(CudaRelaxation, TheNewtonSearchReachesTheDenseSearchsSteadyState) {
   EXPECT_LE(relativeDifference(toHost(device.current()), dense.current()), 1e-8);
 }
 
-// Every method that runs on the dense magnetic fluid but the exponential ones, 20 steps of
-// h = 0.01 on the GPU and on the dense backend from the same (W0, Θ0), as on MPI ranks
-// (tests/mpi/test_distributed_mhd.cc): the same states to 1e-12 of each part's largest entry, or to
-// 10 times what the dense run moves from a start moved by one ulp where the flow amplifies rounding
-// more (as for the fluid, above); the Casimirs tr Θᵏ and tr(WΘᵏ) of the GPU's state, computed on
-// the host, to 1e-12 of their scales.
-static_assert(!groupHasEigenbasis<CudaDualNumberSUN>() &&
+// Every method that runs on the dense magnetic fluid, 20 steps of h = 0.01 on the GPU and on the
+// dense backend from the same (W0, Θ0), as on MPI ranks (tests/mpi/test_distributed_mhd.cc): the
+// same states to 1e-12 of each part's largest entry, or to 10 times what the dense run moves from a
+// start moved by one ulp where the flow amplifies rounding more (as for the fluid, above); the
+// Casimirs tr Θᵏ and tr(WΘᵏ) of the GPU's state, computed on the host, to 1e-12 of their scales.
+// The exponential rows too: the dual numbers' eigenbasis takes the CUDA eigenbasis in its
+// coordinates, with the weights of core/eigenbasis_weights.h in the device's kernels.
+static_assert(groupHasEigenbasis<CudaDualNumberSUN>() &&
               groupHasOrbitPreconditioner<CudaDualNumberSUN>());
 TEST(CudaMhd, EveryMethodFollowsTheDenseRunAndKeepsTheCasimirs) {
   SKIP_WITHOUT_GPU();
@@ -508,13 +509,7 @@ TEST(CudaMhd, EveryMethodFollowsTheDenseRunAndKeepsTheCasimirs) {
     for (const MethodInfo& m : kMethods) {
       if (!methodApplies(m, *dense_mhd)) continue;
       const std::string what = std::string(m.name) + ", N = " + std::to_string(n);
-      // The exponential rows need the dual numbers' eigenbasis, which takes its part's eigenbasis
-      // in that basis's own coordinates (core/dual_eigenbasis.h): the CUDA eigenbasis has none,
-      // so they are refused here; every other row runs (the linearly implicit Cayley step with
-      // the shift's preconditioner, as on the host).
-      const bool runs_here = !needsEigenbasis(m);
-      ASSERT_EQ(methodApplies(m, *device_mhd), runs_here) << what;
-      if (!runs_here) continue;
+      ASSERT_TRUE(methodApplies(m, *device_mhd)) << what;
       // A method of its own for each run: a method keeps its last solves for its next guess.
       const DualMatrix<Matrix> dense = twentySteps(*makeMethod<DualNumberSUN>(m, dense_mhd), mu0);
       const DualMatrix<Matrix> dense_moved =

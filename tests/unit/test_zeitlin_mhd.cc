@@ -6,6 +6,7 @@
 // closed-form invariants (tr Θᵏ and tr(WΘᵏ)).
 #include <ddb/core/dual_eigenbasis.h>
 #include <ddb/core/dual_matrix.h>
+#include <ddb/core/eigenbasis_weights.h>
 #include <ddb/groups/dual_number_sun.h>
 #include <ddb/integrators/drivers/relax.h>
 #include <ddb/integrators/drivers/steady_state_probe.h>
@@ -288,6 +289,36 @@ TEST(DualEigenbasis, EachFunctionOfAdIsTheBlockMatricesExponential) {
   infinite.eps(0, 1) = NAN;
   DualEigenbasis<Matrix> basis;
   EXPECT_FALSE(basis.compute(infinite));
+}
+
+// The entry weights of core/eigenbasis_weights.h, which the CUDA kernels apply with the same
+// functions, against closed forms they do not use: Γ(τ)_ac is the divided difference of
+// λ ↦ e^{τλ} at iθ_a, iθ_c (the Daleckii–Krein weight of the exponential), τ e^{iτθ_a} where
+// θ_a = θ_c; the row weight is e^{−iτθ_a}. Well-separated, close (1e-9 apart) and equal phases.
+TEST(EigenbasisWeights, AreTheExponentialsDividedDifferencesAndConjugatePhases) {
+  using C = std::complex<double>;
+  const auto entry = [](double re, double im) { return C(re, im); };
+  for (const double tau : {-2.5, -0.3, 0.01, 0.7, 4.0}) {
+    for (const auto& [theta_a, theta_c] : {std::pair{0.4, -1.3}, std::pair{2.0, 2.0 + 1e-9},
+                                           std::pair{-0.8, -0.8}, std::pair{3.1, -2.9}}) {
+      double ar, ai, cr, ci, wr, wi;
+      halfPhaseParts(tau, theta_a, ar, ai);
+      halfPhaseParts(tau, theta_c, cr, ci);
+      EXPECT_LT(std::abs(entry(ar, ai) - std::exp(C(0, 0.5 * tau * theta_a))), 1e-15);
+      conjugationDerivativeWeightParts(tau, theta_a, theta_c, ar, ai, cr, ci, wr, wi);
+      const double gap = theta_a - theta_c;
+      // The divided difference, by its series where the phases are too close for the quotient.
+      const C expected =
+          std::abs(tau * gap) > 1e-4
+              ? (std::exp(C(0, tau * theta_a)) - std::exp(C(0, tau * theta_c))) / C(0, gap)
+              : tau * std::exp(C(0, 0.5 * tau * (theta_a + theta_c))) *
+                    (1.0 - tau * tau * gap * gap / 24.0);
+      EXPECT_LT(std::abs(entry(wr, wi) - expected), 1e-14 * (1.0 + std::abs(tau)))
+          << "tau " << tau << ", phases " << theta_a << ", " << theta_c;
+      rowPhaseWeightParts(ar, ai, wr, wi);
+      EXPECT_LT(std::abs(entry(wr, wi) - std::exp(C(0, -tau * theta_a))), 1e-15);
+    }
+  }
 }
 
 TEST(ZeitlinMhd, TheVectorFieldIsTheMhdEquations) {
