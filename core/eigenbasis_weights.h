@@ -59,4 +59,5 @@ DDB_HOST_DEVICE inline void rowPhaseWeightParts(double half_real, double half_im
   real = half_real * half_real - half_imag * half_imag;
   imag = -(half_real * half_imag + half_imag * half_real);
 }
+
 }  // namespace ddb

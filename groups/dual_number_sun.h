@@ -29,10 +29,10 @@ namespace ddb {
 /// SU(N) ⋉ su(N)* with its states in two of a backend's matrices X (DualMatrix<X>): the closed
 /// forms of SkewHermitianGroup in dual-number arithmetic. As for SUNOn<X>, what runs is what is
 /// written against the matrix backend: the system's in-place evaluations, integrate(), and the
-/// methods of the method table: the exponential ones on dense and distributed parts (their
-/// spectral calculus is core/dual_eigenbasis.h), the linearly implicit Cayley step and the Newton
-/// search on any part (their preconditioner is the shift's,
-/// integrators/solvers/orbit_preconditioner.h). The Casimirs need dense parts.
+/// methods of the method table: the exponential ones on parts whose eigenbasis has coordinates,
+/// the dense, distributed and CUDA ones (their spectral calculus is core/dual_eigenbasis.h), the
+/// linearly implicit Cayley step and the Newton search on any part (their preconditioner is the
+/// shift's, integrators/solvers/orbit_preconditioner.h). The Casimirs need dense parts.
 template <class X>
 struct DualNumberSUNOn : SkewHermitianGroup<DualNumberSUNOn<X>, detail::ComplexScalar> {
   using Base = SkewHermitianGroup<DualNumberSUNOn<X>, detail::ComplexScalar>;

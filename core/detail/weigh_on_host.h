@@ -58,6 +58,7 @@ void weighOnHost(const RowPhaseWeights& w, const Eigen::VectorXd& theta, Eigen::
     return value * std::complex<double>(re, im);
   });
 }
+
 }  // namespace detail
 
 }  // namespace ddb
