@@ -1,7 +1,8 @@
 // The device table's cuda row (built where the CUDA backend is): the run with its states on one
 // GPU (docs/guide/gpu.md), copied to this process's memory only for the history rows, the
 // checkpoints and the final files; the spectrum drift of the rows' states (as on MPI ranks), so
-// that no step waits for an eigensolver.
+// that no step waits for an eigensolver. Built as a module of its own, which fluid-relax loads
+// when --device cuda is asked (fluid_relax/device.h).
 #include <ddb/cuda/cuda_device.h>
 #include <ddb/cuda/cuda_zeitlin_exact_flows.h>
 #include <ddb/cuda/cuda_zeitlin_fluid.h>
@@ -51,12 +52,17 @@ class CudaPlacement : public OneProcess {
   std::shared_ptr<const LiePoissonSystem<SUN>> host_fluid_;
 };
 
-}  // namespace
-
 int relaxOnCuda(const Options& o, const Settings& s, const GivenFlags& given, Checkpoint* resume,
                 std::optional<app::RunFolderLock>& lock) {
   CudaPlacement where(s.W0.rows(), s.alpha, s.physics);
   return runFluidRelaxation(where, o, s, given, resume, lock);
 }
 
+}  // namespace
+
 }  // namespace ddb::fluid
+
+const ddb::fluid::CudaRun* ddbFluidRelaxCudaRun() {
+  static const ddb::fluid::CudaRun run{ddb::cudaUnavailable, ddb::fluid::relaxOnCuda};
+  return &run;
+}

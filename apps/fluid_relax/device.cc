@@ -1,40 +1,65 @@
 #include "fluid_relax/device.h"
 
 #include <ddb/groups/sun.h>
+#include <dlfcn.h>
 
 #include <array>
 
 #include "common/cli.h"
 #include "common/exit_status.h"
 
-#ifdef DDB_FLUID_RELAX_CUDA
-#include <ddb/cuda/cuda_device.h>
-#endif
-
 namespace ddb::fluid {
 
 namespace {
 
 std::optional<std::string> cpuUnavailable() { return std::nullopt; }
-std::string cpuDescription() { return "cpu"; }
 
-// The CUDA row: its run where the CUDA backend was built (the one place that asks).
-#ifdef DDB_FLUID_RELAX_CUDA
-std::optional<std::string> cudaRowUnavailable() { return cudaUnavailable(); }
-std::string cudaDescription() { return "cuda: " + cudaDeviceName(); }
-constexpr auto kCudaRelax = &relaxOnCuda;
+// The cuda row: its module, loaded once, where the CUDA backend was built (the one place that
+// asks), and kept for the life of the process.
+struct CudaModule {
+  const CudaRun* run = nullptr;
+  std::string why;  ///< why it is not there, if not
+};
+
+const CudaModule& cudaModule() {
+  static const CudaModule module = [] {
+    CudaModule m;
+#ifdef DDB_FLUID_RELAX_CUDA_MODULE
+    void* handle = ::dlopen(DDB_FLUID_RELAX_CUDA_MODULE, RTLD_NOW | RTLD_LOCAL);
+    void* entry = handle == nullptr ? nullptr : ::dlsym(handle, "ddbFluidRelaxCudaRun");
+    if (entry == nullptr) {
+      const char* error = ::dlerror();
+      m.why = std::string(
+                  "fluid-relax's CUDA part cannot be loaded (rebuild the target "
+                  "fluid-relax: docs/guide/gpu.md): ") +
+              (error != nullptr ? error : "no entry point");
+    } else {
+      m.run = reinterpret_cast<decltype(&ddbFluidRelaxCudaRun)>(entry)();
+    }
 #else
-std::optional<std::string> cudaRowUnavailable() {
-  return "this fluid-relax was built without the CUDA backend (configure ddb where CUDA's "
-         "toolkit is found: docs/guide/gpu.md)";
-}
-std::string cudaDescription() { return "cuda"; }
-constexpr decltype(&relaxOnCuda) kCudaRelax = nullptr;  // never run: unavailable says why
+    m.why =
+        "this fluid-relax was built without the CUDA backend (configure ddb where CUDA's "
+        "toolkit is found: docs/guide/gpu.md)";
 #endif
+    return m;
+  }();
+  return module;
+}
+
+std::optional<std::string> cudaRowUnavailable() {
+  const CudaModule& module = cudaModule();
+  if (module.run == nullptr) return module.why;
+  return module.run->unavailable();
+}
+
+int relaxOnCuda(const Options& o, const Settings& s, const GivenFlags& given, Checkpoint* resume,
+                std::optional<app::RunFolderLock>& lock) {
+  return cudaModule().run->relax(o, s, given, resume, lock);  // after cudaRowUnavailable()
+}
 
 const std::array<Device, 2> kDevices{{
-    {"cpu", "the CPU", kMaxN, cpuUnavailable, relaxOnCpu, cpuDescription},
-    {"cuda", "the GPU", SUN::kMaxN, cudaRowUnavailable, kCudaRelax, cudaDescription},
+    {"cpu", "the CPU", kMaxN, cpuUnavailable, relaxOnCpu},
+    {"cuda", "the GPU", SUN::kMaxN, cudaRowUnavailable, relaxOnCuda},
 }};
 
 }  // namespace

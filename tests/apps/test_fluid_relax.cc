@@ -591,6 +591,31 @@ TEST(FluidRelax, DeviceCudaFollowsTheCpuRunOrIsRefusedSayingWhy) {
   for (const fs::path& folder : {cpu, gpu, whole}) fs::remove_all(folder);
 }
 
+// A run on the CPU loads none of CUDA's libraries, whose start alone costs about 0.4 s and 260 MB
+// (apps/fluid_relax/device.h): the dynamic loader's list of the files it loads (LD_DEBUG=files)
+// names OpenBLAS and no cuBLAS, cuSOLVER or CUDA runtime. Where the CUDA backend is built,
+// --device cuda loads them (to ask for a GPU), so the list is one that would name them.
+TEST(FluidRelax, ARunOnTheCpuLoadsNoCudaLibrary) {
+  const fs::path out = freshFolder("no_cuda");
+  RunEnvironment loader;
+  loader.variables = {"LD_DEBUG=files"};
+  const AppResult r =
+      runProgram(FLUID_RELAX_PATH, "--quiet --n 4 --steps 2 --out " + out.string(), loader);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.error, ::testing::HasSubstr("file=libopenblas"));
+  for (const char* library : {"file=libcublas", "file=libcusolver", "file=libcudart"}) {
+    EXPECT_THAT(r.error, ::testing::Not(::testing::HasSubstr(library)));
+  }
+#ifdef DDB_FLUID_RELAX_HAS_CUDA_MODULE
+  const AppResult on_gpu =
+      runProgram(FLUID_RELAX_PATH,
+                 "--quiet --n 4 --steps 2 --device cuda --out " + out.string() + "_gpu", loader);
+  EXPECT_THAT(on_gpu.error, ::testing::HasSubstr("file=libcublas"));
+  fs::remove_all(out.string() + "_gpu");
+#endif
+  fs::remove_all(out);
+}
+
 // Under OpenBLAS's generic Prescott kernels on a CPU with AVX2 (what Debian 12's OpenBLAS picks on
 // CPUs newer than itself), a run says so once, naming OPENBLAS_CORETYPE; under Haswell's kernels
 // it says nothing; a refusal stays one line (docs/guide/performance.md, "OpenBLAS's kernels").

@@ -10,8 +10,9 @@ target_compile_options(public_names_distributed PRIVATE -O0)
 # they wait starve each other (on 2 busy cores one run on 3 ranks took over 60 s, alone
 # 4 s): the ranks yield when idle and no other test runs beside them (RUN_SERIAL). The
 # sanitizer build (scripts/test.sh) builds only its one program, so it turns DDB_BUILD_MPI
-# off rather than list these unbuilt.
-set(ddb_mpi_test_env "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1;OMPI_MCA_mpi_yield_when_idle=1;OPENBLAS_NUM_THREADS=1")
+# off rather than list these unbuilt. No grace period before mpiexec ends a job in which a rank
+# failed (tests/support/app_test_support.h, kMpiVariables, the same environment).
+set(ddb_mpi_test_env "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1;OMPI_MCA_mpi_yield_when_idle=1;OMPI_MCA_odls_base_sigkill_timeout=0;OPENBLAS_NUM_THREADS=1")
 add_library(ddb_mpi_test_main OBJECT support/mpi_test_main.cc)
 target_include_directories(ddb_mpi_test_main PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/support)
 target_link_libraries(ddb_mpi_test_main PUBLIC ddb_distributed GTest::gtest PRIVATE ddb_warnings)

@@ -47,11 +47,18 @@ struct RunEnvironment {
 };
 
 /// The environment of the apps started under mpiexec (as tests/mpi/tests.cmake's MPI tests):
-/// root allowed, more ranks than cores, idle ranks yielding, one BLAS thread per rank.
-inline const std::vector<std::string> kMpiVariables{
-    "OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1",
-    "OMPI_MCA_rmaps_base_oversubscribe=1", "OMPI_MCA_mpi_yield_when_idle=1",
-    "OPENBLAS_NUM_THREADS=1"};
+/// root allowed, more ranks than cores, idle ranks yielding, one BLAS thread per rank, and no
+/// grace period (odls_base_sigkill_timeout, 1 s by default) before mpiexec kills the other ranks
+/// of a job in which one exited with a status other than 0. Every rank of fluid-relax-mpi exits
+/// only after MPI_Finalize, so none is ever killed with its files unwritten; the grace period
+/// made each run that exits with 1 or 2 take 1-2 s more (docs/results/compile-costs.md,
+/// "The tests' time").
+inline const std::vector<std::string> kMpiVariables{"OMPI_ALLOW_RUN_AS_ROOT=1",
+                                                    "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1",
+                                                    "OMPI_MCA_rmaps_base_oversubscribe=1",
+                                                    "OMPI_MCA_mpi_yield_when_idle=1",
+                                                    "OMPI_MCA_odls_base_sigkill_timeout=0",
+                                                    "OPENBLAS_NUM_THREADS=1"};
 
 /// Runs `program` with the arguments `words`, without a shell, so that wait4() reports
 /// the app's own peak memory and an argument reaches the app as it is (spaces, quotes).
