@@ -8,7 +8,8 @@ packages=(cmake g++ make libeigen3-dev libceres-dev libspdlog-dev libboost-dev l
 if [ "${1:-}" != quickstart ]; then
   packages+=(libgtest-dev libgmock-dev libbenchmark-dev python3-scipy locales-all
              pybind11-dev python3-dev python3-numpy python3-pytest python3-h5py ffmpeg
-             libopenmpi-dev openmpi-bin libscalapack-openmpi-dev doxygen)
+             libopenmpi-dev openmpi-bin libscalapack-openmpi-dev doxygen
+             clang-14 libclang-rt-14-dev llvm-14)
 fi
 missing=()
 for p in "${packages[@]}"; do

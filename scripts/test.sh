@@ -37,14 +37,16 @@ for example in custom_system hamiltonian_observer; do
   "$scratch/$example/app"
 done
 # The distributed layer's example on 2 ranks, with the environment of the MPI tests in ctest
-# (tests/mpi/tests.cmake): root allowed, oversubscribed, idle ranks yield, one BLAS thread.
+# (tests/mpi/tests.cmake): root allowed, oversubscribed, idle ranks yield, Open MPI's own
+# point-to-point layer, one BLAS thread.
 if [[ -f "$scratch/prefix/share/ddb/cmake/ddbDistributedTargets.cmake" ]]; then
   echo "== examples/distributed against the installed package, on 2 ranks"
   cmake -S examples/distributed -B "$scratch/distributed" -DCMAKE_BUILD_TYPE=Release \
         -DCMAKE_PREFIX_PATH="$scratch/prefix"
   cmake --build "$scratch/distributed" -j2
   OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 \
-    OMPI_MCA_mpi_yield_when_idle=1 OPENBLAS_NUM_THREADS=1 mpiexec -n 2 "$scratch/distributed/app"
+    OMPI_MCA_mpi_yield_when_idle=1 OMPI_MCA_pml=ob1 OPENBLAS_NUM_THREADS=1 \
+    mpiexec -n 2 "$scratch/distributed/app"
 else
   echo "== examples/distributed skipped: the distributed layer was not built" \
     "(docs/design/distributed.md)"
@@ -76,17 +78,24 @@ done
 # and the matrix-free Legendre solvers, the matrix groups' OpenBLAS products) again under
 # AddressSanitizer and UndefinedBehaviorSanitizer (docs/reference/guarantees.md §4): -O1 with
 # Eigen's own assertions on (no NDEBUG), and -g1, the line tables a sanitizer's stack trace
-# names file:line from, inlined frames included (GCC 12 gives the same trace as at -g), without
-# -g's descriptions of every local and type, which took a third of this stage's compile time
-# (method_table_so3.cc: 64 s against 41 s). Only these two: a sanitized file takes about 3×
-# its Release compile time, and more would take .ci/run past 30 minutes. The library compiles
-# only the method tables they run (DDB_METHOD_TABLES, CMakeLists.txt), those of SO(3), SE(3),
-# SO(N) and SU(N); the others' methods no test here would call. Any finding stops the run.
-echo "== tests under ASan and UBSan"
-cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDDB_BUILD_APPS=OFF \
-      -DDDB_BUILD_BENCH=OFF -DDDB_BUILD_PYTHON=OFF -DDDB_BUILD_MPI=OFF -DDDB_BUILD_CUDA=OFF \
+# names file:line from, inlined frames included, without -g's descriptions of every local and
+# type, which took a third of this stage's compile time (method_table_so3.cc: 64 s against 41 s
+# with GCC). Compiled by Clang 14 (Debian 12's clang-14; llvm-14's llvm-symbolizer names the
+# frames): everything above builds with GCC, so this stage is also the check that the library
+# and these tests compile with the other compiler a user may have, and Clang builds it in two
+# thirds of GCC's time (153 s against 234 s, docs/results/compile-costs.md, "The sanitizer stage
+# with Clang"). Only these two programs: a sanitized file takes about 3× its Release compile time.
+# The library compiles only the method tables they run (DDB_METHOD_TABLES, CMakeLists.txt), those
+# of SO(3), SE(3), SO(N) and SU(N); the others' methods no test here would call. Any finding stops
+# the run. DDB_EXPECT_SANITIZERS turns on the positive controls (tests/unit/
+# test_sanitizer_controls.cc): the compile must have AddressSanitizer, and both sanitizers must
+# stop a planted error.
+echo "== tests under ASan and UBSan, compiled by Clang"
+cmake -S . -B build-sanitize -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DDDB_BUILD_APPS=OFF -DDDB_BUILD_BENCH=OFF -DDDB_BUILD_PYTHON=OFF -DDDB_BUILD_MPI=OFF \
+      -DDDB_BUILD_CUDA=OFF \
       -DDDB_METHOD_TABLES="so3;se3;son;sun" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
-      -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" \
+      -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined -DDDB_EXPECT_SANITIZERS" \
       -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined"
 cmake --build build-sanitize -j2 --target sanitizer_tests  # unit_failures, tests/CMakeLists.txt
 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 ASAN_OPTIONS=detect_leaks=1 \

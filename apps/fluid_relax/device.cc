@@ -6,7 +6,6 @@
 #include <array>
 
 #include "common/cli.h"
-#include "common/exit_status.h"
 
 namespace ddb::fluid {
 

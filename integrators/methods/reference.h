@@ -74,10 +74,13 @@ struct OdeintSystem {
 };
 
 // GCC 12 flags the copy of a default-constructed stepper inside odeint's
-// controlled_runge_kutta constructor (-Wuninitialized): a false positive in Boost.
+// controlled_runge_kutta constructor (-Wuninitialized): a false positive in Boost. Clang, which
+// reads GCC's pragmas too, knows no -Wmaybe-uninitialized and warned of an unknown option.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wuninitialized"
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 template <class G>
 class ReferenceSolver : public OneStepMethod<G> {
  public:

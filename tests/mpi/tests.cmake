@@ -10,9 +10,19 @@ target_compile_options(public_names_distributed PRIVATE -O0)
 # they wait starve each other (on 2 busy cores one run on 3 ranks took over 60 s, alone
 # 4 s): the ranks yield when idle and no other test runs beside them (RUN_SERIAL). The
 # sanitizer build (scripts/test.sh) builds only its one program, so it turns DDB_BUILD_MPI
-# off rather than list these unbuilt. No grace period before mpiexec ends a job in which a rank
-# failed (tests/support/app_test_support.h, kMpiVariables, the same environment).
-set(ddb_mpi_test_env "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1;OMPI_MCA_mpi_yield_when_idle=1;OMPI_MCA_odls_base_sigkill_timeout=0;OPENBLAS_NUM_THREADS=1")
+# off rather than list these unbuilt. No grace period (odls_base_sigkill_timeout, 1 s by default)
+# before mpiexec kills the other ranks of a job in which one exited with a status other than 0:
+# every rank of fluid-relax-mpi exits only after MPI_Finalize, so none is ever killed with its
+# files unwritten, and the grace period made each run that exits 1 or 2 take 1-2 s more
+# (docs/results/compile-costs.md, "The tests' time"). Open MPI's own point-to-point layer (pml
+# ob1, shared memory between the ranks of one machine): by default every rank probes UCX and OFI
+# for a network first, 0.2 s of every start (an empty program on 2 ranks: 0.42 s, with ob1
+# 0.21 s), and test_fluid_relax_mpi starts mpiexec 97 times (79 s against 58 s). The
+# test programs that start mpiexec themselves get the same list (DDB_MPI_TEST_ENVIRONMENT,
+# tests/support/app_test_support.h).
+set(ddb_mpi_test_env "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1;OMPI_MCA_mpi_yield_when_idle=1;OMPI_MCA_odls_base_sigkill_timeout=0;OMPI_MCA_pml=ob1;OPENBLAS_NUM_THREADS=1")
+# The same list as one word per variable: a list's semicolons would split a definition.
+string(JOIN " " ddb_mpi_test_env_words ${ddb_mpi_test_env})
 add_library(ddb_mpi_test_main OBJECT support/mpi_test_main.cc)
 target_include_directories(ddb_mpi_test_main PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/support)
 target_link_libraries(ddb_mpi_test_main PUBLIC ddb_distributed GTest::gtest PRIVATE ddb_warnings)
@@ -47,11 +57,12 @@ if(DDB_BUILD_APPS)
   target_compile_definitions(test_fluid_relax_mpi PRIVATE
     FLUID_RELAX_PATH="$<TARGET_FILE:fluid-relax>"
     FLUID_RELAX_MPI_PATH="$<TARGET_FILE:fluid-relax-mpi>"
-    MPIEXEC_PATH="${MPIEXEC_EXECUTABLE}")
+    MPIEXEC_PATH="${MPIEXEC_EXECUTABLE}" DDB_MPI_TEST_ENVIRONMENT="${ddb_mpi_test_env_words}")
   add_dependencies(test_fluid_relax_mpi fluid-relax fluid-relax-mpi)
   # The I/O faults of fluid-relax-mpi, under mpiexec (tests/apps/test_io_faults.cc).
   target_compile_definitions(apps_fluid_relax PRIVATE
-    FLUID_RELAX_MPI_PATH="$<TARGET_FILE:fluid-relax-mpi>" MPIEXEC_PATH="${MPIEXEC_EXECUTABLE}")
+    FLUID_RELAX_MPI_PATH="$<TARGET_FILE:fluid-relax-mpi>" MPIEXEC_PATH="${MPIEXEC_EXECUTABLE}"
+    DDB_MPI_TEST_ENVIRONMENT="${ddb_mpi_test_env_words}")
   add_dependencies(apps_fluid_relax fluid-relax-mpi)
   gtest_discover_tests(test_fluid_relax_mpi DISCOVERY_TIMEOUT 60 NO_PRETTY_VALUES
                        PROPERTIES TIMEOUT 300 PROCESSORS 2 RUN_SERIAL TRUE)

@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -46,19 +47,17 @@ struct RunEnvironment {
   unsigned timeout_s = 0;              // kill the app (SIGALRM) after this; 0: never
 };
 
-/// The environment of the apps started under mpiexec (as tests/mpi/tests.cmake's MPI tests):
-/// root allowed, more ranks than cores, idle ranks yielding, one BLAS thread per rank, and no
-/// grace period (odls_base_sigkill_timeout, 1 s by default) before mpiexec kills the other ranks
-/// of a job in which one exited with a status other than 0. Every rank of fluid-relax-mpi exits
-/// only after MPI_Finalize, so none is ever killed with its files unwritten; the grace period
-/// made each run that exits with 1 or 2 take 1-2 s more (docs/results/compile-costs.md,
-/// "The tests' time").
-inline const std::vector<std::string> kMpiVariables{"OMPI_ALLOW_RUN_AS_ROOT=1",
-                                                    "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1",
-                                                    "OMPI_MCA_rmaps_base_oversubscribe=1",
-                                                    "OMPI_MCA_mpi_yield_when_idle=1",
-                                                    "OMPI_MCA_odls_base_sigkill_timeout=0",
-                                                    "OPENBLAS_NUM_THREADS=1"};
+#ifdef DDB_MPI_TEST_ENVIRONMENT
+/// The environment of the apps started under mpiexec: the MPI tests' own (ddb_mpi_test_env,
+/// tests/mpi/tests.cmake, which says why each variable), given as DDB_MPI_TEST_ENVIRONMENT to the
+/// test programs that start mpiexec, so that one list serves ctest's runs and the tests' own.
+inline const std::vector<std::string> kMpiVariables = [] {
+  std::vector<std::string> variables;
+  std::stringstream ss(DDB_MPI_TEST_ENVIRONMENT);
+  for (std::string variable; ss >> variable;) variables.push_back(variable);
+  return variables;
+}();
+#endif
 
 /// Runs `program` with the arguments `words`, without a shell, so that wait4() reports
 /// the app's own peak memory and an argument reaches the app as it is (spaces, quotes).
@@ -147,12 +146,55 @@ inline nlohmann::ordered_json readJson(const fs::path& path) {
   return nlohmann::ordered_json::parse(readFile(path));
 }
 
+/// Removes the folders freshFolder() handed out once the test that asked for them has ended
+/// without a failure, or, for those a suite's SetUpTestSuite asked for, once the whole suite has;
+/// a failure's folders stay, named in the test's output, to be looked at. Without it each ctest run
+/// left about 1 200 folders under the temporary directory.
+class FreshFolderCleanup : public ::testing::EmptyTestEventListener {
+ public:
+  static FreshFolderCleanup& instance() {
+    // Owned by GoogleTest's listener list, which deletes it when the program ends.
+    static auto* const cleanup = [] {
+      auto* listener = new FreshFolderCleanup;
+      ::testing::UnitTest::GetInstance()->listeners().Append(listener);
+      return listener;
+    }();
+    return *cleanup;
+  }
+  void add(const fs::path& dir) {
+    const bool in_test = ::testing::UnitTest::GetInstance()->current_test_info() != nullptr;
+    (in_test ? test_folders_ : suite_folders_).push_back(dir);
+  }
+
+ private:
+  void OnTestEnd(const ::testing::TestInfo& info) override {
+    settle(test_folders_, !info.result()->Failed());
+  }
+  void OnTestSuiteEnd(const ::testing::TestSuite& suite) override {
+    settle(suite_folders_, !suite.Failed());
+  }
+  static void settle(std::vector<fs::path>& folders, bool passed) {
+    for (const fs::path& dir : folders) {
+      std::error_code ignored;
+      if (passed) {
+        fs::remove_all(dir, ignored);
+      } else if (fs::exists(dir, ignored)) {
+        std::printf("[ kept     ] %s\n", dir.c_str());
+      }
+    }
+    folders.clear();
+  }
+  std::vector<fs::path> test_folders_, suite_folders_;
+};
+
 /// An empty (removed) folder under the system's temporary directory, named for this process
-/// too, so that two suites run at once (ctest -j, two checkouts) never share one.
+/// too, so that two suites run at once (ctest -j, two checkouts) never share one. It is removed
+/// again once its test has passed (FreshFolderCleanup).
 inline fs::path freshFolder(const std::string& prefix, const std::string& name) {
   const fs::path dir =
       fs::temp_directory_path() / (prefix + std::to_string(::getpid()) + "_" + name);
   fs::remove_all(dir);
+  FreshFolderCleanup::instance().add(dir);
   return dir;
 }
 
