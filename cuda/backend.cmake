@@ -31,7 +31,7 @@ if(DDB_BUILD_CUDA)
   set(DDB_CUDA_LIBRARY_FILE ${CMAKE_STATIC_LIBRARY_PREFIX}ddb_cuda${CMAKE_STATIC_LIBRARY_SUFFIX})
   ddb_add_backend(cuda
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/cuda_backend.cc ${CMAKE_CURRENT_LIST_DIR}/cuda_context.cc
-            ${CMAKE_CURRENT_LIST_DIR}/cuda_device.cc
+            ${CMAKE_CURRENT_LIST_DIR}/cuda_device.cc ${CMAKE_CURRENT_LIST_DIR}/cuda_method_table.cc
             ${CMAKE_CURRENT_LIST_DIR}/cuda_eigenbasis.cc ${CMAKE_CURRENT_LIST_DIR}/cuda_lu.cc
             ${CMAKE_CURRENT_LIST_DIR}/cuda_poisson_solver.cc
             ${CMAKE_CURRENT_LIST_DIR}/detail/cuda_kernels.cu

@@ -6,6 +6,7 @@
 
 #include <ddb/cuda/cuda_backend.h>
 #include <ddb/cuda/cuda_device.h>
+#include <ddb/cuda/cuda_method_table.h>
 #include <ddb/cuda/cuda_poisson_solver.h>
 #include <ddb/groups/sun.h>
 #include <ddb/systems/zeitlin_fluid_on_backend.h>

@@ -9,6 +9,7 @@
 #include <ddb/core/dual_matrix.h>
 #include <ddb/cuda/cuda_backend.h>
 #include <ddb/cuda/cuda_device.h>
+#include <ddb/cuda/cuda_method_table.h>
 #include <ddb/cuda/cuda_poisson_solver.h>
 #include <ddb/groups/dual_number_sun.h>
 #include <ddb/systems/zeitlin_mhd.h>

@@ -1,7 +1,8 @@
 # The distributed layer (docs/design/distributed.md): matrices distributed block-cyclically over
 # MPI ranks with ScaLAPACK, built when MPI and Debian's ScaLAPACK for Open MPI are found; the
-# target ddb::distributed (an interface library) and the package's component `distributed`, in
-# an export set of its own so that a plain find_package(ddb) never looks for MPI
+# target ddb::distributed (a static library: the method table for its groups compiled once,
+# distributed/distributed_method_table.h) and the package's component `distributed`, in an
+# export set of its own so that a plain find_package(ddb) never looks for MPI
 # (cmake/DdbBackend.cmake).
 option(DDB_BUILD_MPI "Build the distributed layer and its tests when MPI and ScaLAPACK are found"
        ${PROJECT_IS_TOP_LEVEL})
@@ -15,7 +16,12 @@ if(DDB_BUILD_MPI)
     # Installed: the consumer's package config finds MPI and ScaLAPACK again (ddb::scalapack,
     # distributed/component.cmake.in). The C API only: Open MPI's mpi.h otherwise pulls in its
     # C++ bindings in C++ sources.
+    # The library's file name, which the package's config looks for
+    # (distributed/component.cmake.in).
+    set(DDB_DISTRIBUTED_LIBRARY_FILE
+        ${CMAKE_STATIC_LIBRARY_PREFIX}ddb_distributed${CMAKE_STATIC_LIBRARY_SUFFIX})
     ddb_add_backend(distributed
+      SOURCES ${CMAKE_CURRENT_LIST_DIR}/distributed_method_table.cc
       LINK MPI::MPI_C $<BUILD_INTERFACE:${DDB_SCALAPACK_LIBRARY}> $<INSTALL_INTERFACE:ddb::scalapack>
       DEFINITIONS OMPI_SKIP_MPICXX MPICH_SKIP_MPICXX
       TESTS mpi/tests.cmake)

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <ddb/distributed/distributed_backend.h>
+#include <ddb/distributed/distributed_method_table.h>
 #include <ddb/distributed/distributed_poisson_solver.h>
 #include <ddb/systems/zeitlin_fluid_on_backend.h>
 

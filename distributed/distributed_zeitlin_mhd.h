@@ -8,6 +8,7 @@
 
 #include <ddb/core/dual_matrix.h>
 #include <ddb/distributed/distributed_backend.h>
+#include <ddb/distributed/distributed_method_table.h>
 #include <ddb/distributed/distributed_poisson_solver.h>
 #include <ddb/groups/dual_number_sun.h>
 #include <ddb/systems/zeitlin_mhd.h>

@@ -467,6 +467,13 @@ using SE3Composed = SemidirectProduct<SO3, DefiningRepresentation<SO3>>;
   PREFIX template std::unique_ptr<::ddb::OneStepMethod<G>> ddb::makeMethod<G>(      \
       std::string_view, std::shared_ptr<const ::ddb::LiePoissonSystem<G>>)
 
+/// The same for a backend's groups, SU(N) and SU(N) ⋉ su(N)* with states of the matrix type X:
+/// declared by the backend's header and defined in its compiled library
+/// (cuda/cuda_method_table.h, distributed/distributed_method_table.h).
+#define DDB_BACKEND_METHOD_TABLES_INSTANCE(PREFIX, X) \
+  DDB_METHOD_TABLE_INSTANCE(PREFIX, ::ddb::SUNOn<X>); \
+  DDB_METHOD_TABLE_INSTANCE(PREFIX, ::ddb::DualNumberSUNOn<X>)
+
 // Declared for each table the library compiled: CMake's DDB_METHOD_TABLES, all by default,
 // defines DDB_NO_COMPILED_METHOD_TABLE_<NAME> for each one it left out, whose methods a program
 // then instantiates itself (CMakeLists.txt).

@@ -48,6 +48,7 @@ the few other programs' names in FOREIGN_NAMES and Python's built-ins.
                                                            wrong names, which it must find
 """
 import builtins
+import os
 import pathlib
 import re
 import sys
@@ -97,11 +98,23 @@ def names(title, cited):
     return any(title.startswith(cited + sep) for sep in (":", ".", ",", " ("))
 
 
+def tree_paths(root):
+    """The tree's files and folders, sorted, never entering the build folders at the top nor
+    .git: a check running beside this one creates and removes its scratch trees there, and a
+    walk that entered one could find a folder gone under it."""
+    found = []
+    for folder, subfolders, files in os.walk(root):
+        if pathlib.Path(folder) == root:
+            subfolders[:] = [d for d in subfolders
+                             if not (d.startswith(SKIPPED_PREFIX) or d == ".git")]
+        found += [pathlib.Path(folder) / name for name in subfolders + files]
+    return sorted(found)
+
+
 def scanned_files(root):
-    for path in sorted(root.rglob("*")):
+    for path in tree_paths(root):
         rel = path.relative_to(root).as_posix()
-        if (not path.is_file() or rel.split("/")[0].startswith(SKIPPED_PREFIX)
-                or any(rel == d or rel.startswith(d + "/") for d in SKIPPED_DIRS)):
+        if (not path.is_file() or any(rel == d or rel.startswith(d + "/") for d in SKIPPED_DIRS)):
             continue
         if path.suffix in SCANNED_SUFFIXES or path.name == "CMakeLists.txt":
             yield path, rel
@@ -211,10 +224,9 @@ class CodeIndex:
 
 
 def code_files(root):
-    for path in sorted(root.rglob("*")):
+    for path in tree_paths(root):
         rel = path.relative_to(root).as_posix()
-        top = rel.split("/")[0]
-        if not (top.startswith(SKIPPED_PREFIX) or top in {".git", "docs"}):
+        if rel.split("/")[0] != "docs":
             yield path, rel
 
 
