@@ -6,11 +6,13 @@
 # tests (tests/CMakeLists.txt includes each built backend's tests file) and the include check
 # (tests/checks/check_includes.cmake).
 
-# ddb_declare_backend(<name> WITHOUT <text>): the package's component <name> exists, and <text>
-# says what to do where this ddb was installed without it (the backend was not built).
+# ddb_declare_backend(<name> TITLE <title> WITHOUT <text>): the package's component <name>
+# exists, <title> names it in messages ("CUDA backend"), and <text> says what to do where this ddb
+# was installed without it (the backend was not built).
 function(ddb_declare_backend name)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "" "WITHOUT" "")
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "TITLE;WITHOUT" "")
   set_property(GLOBAL APPEND PROPERTY DDB_BACKEND_NAMES ${name})
+  set_property(GLOBAL PROPERTY DDB_BACKEND_TITLE_${name} "${arg_TITLE}")
   set_property(GLOBAL PROPERTY DDB_BACKEND_WITHOUT_${name} "${arg_WITHOUT}")
 endfunction()
 
@@ -26,7 +28,8 @@ endfunction()
 #     backend's dependencies again and includes the export set, or sets ddb_component_missing;
 #   - TESTS, a file of tests/ that tests/CMakeLists.txt includes (in its scope).
 # The static library's install is OPTIONAL behind a message: a tree where only the library was
-# built (cmake --build --target ddb) installs without the backend and says so.
+# built (cmake --build --target ddb) installs without the backend and says so, and the package's
+# config refuses the component, naming the missing file (ddb_library_<name>).
 function(ddb_add_backend name)
   cmake_parse_arguments(PARSE_ARGV 1 arg "" "TESTS" "SOURCES;LINK;DEFINITIONS")
   set(folder_path ${CMAKE_CURRENT_LIST_DIR})
@@ -48,6 +51,8 @@ function(ddb_add_backend name)
                      \"(cmake --build first to install the component ${name})\")
     endif()")
     install(TARGETS ddb_${name} EXPORT ${export_set} OPTIONAL)
+    set_property(GLOBAL PROPERTY DDB_BACKEND_LIBRARY_${name}
+                 ${CMAKE_STATIC_LIBRARY_PREFIX}ddb_${name}${CMAKE_STATIC_LIBRARY_SUFFIX})
   else()
     add_library(ddb_${name} INTERFACE)
     target_link_libraries(ddb_${name} INTERFACE ddb ${arg_LINK})
@@ -70,15 +75,20 @@ function(ddb_add_backend name)
 endfunction()
 
 # The lines of the package's config that name every declared component, those built, and what to
-# do without each: ddb_components, ddb_built_components and ddb_without_<name>
+# do without each: ddb_components, ddb_built_components, ddb_title_<name>, ddb_without_<name>
+# and, for a backend with a static library, its file's name ddb_library_<name>
 # (cmake/ddbConfig.cmake.in). The texts go in bracket arguments, taken as they are.
 function(ddb_backend_config_lines out)
   get_property(names GLOBAL PROPERTY DDB_BACKEND_NAMES)
   get_property(built GLOBAL PROPERTY DDB_BACKEND_BUILT)
   set(lines "set(ddb_components ${names})\nset(ddb_built_components ${built})\n")
   foreach(name IN LISTS names)
+    get_property(title GLOBAL PROPERTY DDB_BACKEND_TITLE_${name})
     get_property(without GLOBAL PROPERTY DDB_BACKEND_WITHOUT_${name})
-    string(APPEND lines "set(ddb_without_${name} [==[${without}]==])\n")
+    get_property(library GLOBAL PROPERTY DDB_BACKEND_LIBRARY_${name})
+    string(APPEND lines "set(ddb_title_${name} [==[${title}]==])\n"
+                        "set(ddb_without_${name} [==[${without}]==])\n"
+                        "set(ddb_library_${name} [==[${library}]==])\n")
   endforeach()
   set(${out} "${lines}" PARENT_SCOPE)
 endfunction()

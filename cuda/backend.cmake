@@ -17,7 +17,7 @@ option(DDB_BUILD_CUDA "Build the CUDA backend (cuda/) when CUDA's toolkit is fou
 if(DDB_BUILD_CUDA AND NOT ddb_cuda_found)
   message(FATAL_ERROR "DDB_BUILD_CUDA needs CUDA's toolkit with nvcc (CMake's CUDAToolkit)")
 endif()
-ddb_declare_backend(cuda WITHOUT
+ddb_declare_backend(cuda TITLE "CUDA backend" WITHOUT
   "this ddb was installed without its CUDA backend: configure ddb where CUDA's toolkit and nvcc are found (DDB_BUILD_CUDA) and install it again")
 if(DDB_BUILD_CUDA)
   # Hopper (H100, H200) unless asked otherwise, e.g. -DCMAKE_CUDA_ARCHITECTURES="80;90".
@@ -27,8 +27,6 @@ if(DDB_BUILD_CUDA)
   # Here, in the top-level directory's scope: CMake wants a language enabled where every target
   # that compiles or links it is below (the tests and the apps link ddb::cuda).
   enable_language(CUDA)
-  # The library's file name, which the package's config looks for (cuda/component.cmake.in).
-  set(DDB_CUDA_LIBRARY_FILE ${CMAKE_STATIC_LIBRARY_PREFIX}ddb_cuda${CMAKE_STATIC_LIBRARY_SUFFIX})
   ddb_add_backend(cuda
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/cuda_backend.cc ${CMAKE_CURRENT_LIST_DIR}/cuda_context.cc
             ${CMAKE_CURRENT_LIST_DIR}/cuda_device.cc ${CMAKE_CURRENT_LIST_DIR}/cuda_method_table.cc

@@ -6,7 +6,7 @@
 # (cmake/DdbBackend.cmake).
 option(DDB_BUILD_MPI "Build the distributed layer and its tests when MPI and ScaLAPACK are found"
        ${PROJECT_IS_TOP_LEVEL})
-ddb_declare_backend(distributed WITHOUT
+ddb_declare_backend(distributed TITLE "distributed layer" WITHOUT
   "this ddb was installed without its distributed layer: configure ddb with DDB_BUILD_MPI ON where MPI and ScaLAPACK are found (Debian: libopenmpi-dev, libscalapack-openmpi-dev) and install it again")
 if(DDB_BUILD_MPI)
   enable_language(C)
@@ -16,10 +16,6 @@ if(DDB_BUILD_MPI)
     # Installed: the consumer's package config finds MPI and ScaLAPACK again (ddb::scalapack,
     # distributed/component.cmake.in). The C API only: Open MPI's mpi.h otherwise pulls in its
     # C++ bindings in C++ sources.
-    # The library's file name, which the package's config looks for
-    # (distributed/component.cmake.in).
-    set(DDB_DISTRIBUTED_LIBRARY_FILE
-        ${CMAKE_STATIC_LIBRARY_PREFIX}ddb_distributed${CMAKE_STATIC_LIBRARY_SUFFIX})
     ddb_add_backend(distributed
       SOURCES ${CMAKE_CURRENT_LIST_DIR}/distributed_method_table.cc
       LINK MPI::MPI_C $<BUILD_INTERFACE:${DDB_SCALAPACK_LIBRARY}> $<INSTALL_INTERFACE:ddb::scalapack>
