@@ -271,9 +271,7 @@ class LiePoissonSystem {
   /// stalls: docs/design/architecture.md, "Explicit steps"). The bits of the sweep with
   /// vectorFieldInto, which this generic system runs.
   virtual void explicitStep(const ButcherTableau<4>& tableau, double h, ExplicitStages<G, 4>& w,
-                            Dual& mu) const {
-    explicitSweep(*this, tableau, h, w, mu);
-  }
+                            Dual& mu) const;
   /// The sweep of an explicit S-stage tableau (core/explicit_runge_kutta_sweep.h) with system's
   /// vectorFieldInto: explicitStep's body, and ExplicitRungeKutta's for other than four stages.
   /// With a TypedLiePoissonSystem, a final class, the field's calls are that class's own; always
@@ -312,13 +310,9 @@ class LiePoissonSystem {
  protected:
   /// μ̇ at a double μ. TypedLiePoissonSystem overrides it to call its Hamiltonian and metric
   /// through their concrete types.
-  virtual Dual fieldAt(const Dual& mu) const {
-    return vectorFieldOf<Hamiltonian<G>, DissipationMetric<G>, double>(*hamiltonian_, *metric_, mu);
-  }
+  virtual Dual fieldAt(const Dual& mu) const;
   /// fieldPartsInto's evaluation; TypedLiePoissonSystem overrides it like fieldAt.
-  virtual void fieldInto(const Dual& mu, FieldWorkspace<G>& w, Dual& out) const {
-    fieldPartsOf(*hamiltonian_, *metric_, mu, w, out);
-  }
+  virtual void fieldInto(const Dual& mu, FieldWorkspace<G>& w, Dual& out) const;
 
   // Eq. (3.4) for any Hamiltonian type H and metric type K: the base classes here, the
   // concrete ones in TypedLiePoissonSystem.
@@ -402,6 +396,28 @@ class LiePoissonSystem {
   std::shared_ptr<const Lagrangian<G>> lagrangian_;
 };
 
+// The generic system's virtual functions, defined out of the class: GCC compiles a member defined
+// in its class in every unit that builds the vtable, even where an `extern template` declares it,
+// and for SO(N) and SU(N) these three cost about 6 s and 4 s of a unit's compile. So the library
+// compiles them once for the group of each system it ships (DDB_LIE_POISSON_SYSTEM_INSTANCE below,
+// declared by the system's header; docs/results/compile-costs.md, "The generic system's virtual
+// functions compiled once").
+template <class G>
+void LiePoissonSystem<G>::explicitStep(const ButcherTableau<4>& tableau, double h,
+                                       ExplicitStages<G, 4>& w, Dual& mu) const {
+  explicitSweep(*this, tableau, h, w, mu);
+}
+
+template <class G>
+typename LiePoissonSystem<G>::Dual LiePoissonSystem<G>::fieldAt(const Dual& mu) const {
+  return vectorFieldOf<Hamiltonian<G>, DissipationMetric<G>, double>(*hamiltonian_, *metric_, mu);
+}
+
+template <class G>
+void LiePoissonSystem<G>::fieldInto(const Dual& mu, FieldWorkspace<G>& w, Dual& out) const {
+  fieldPartsOf(*hamiltonian_, *metric_, mu, w, out);
+}
+
 /// A LiePoissonSystem that knows the concrete types H of its Hamiltonian and K of its metric.
 /// Its double vector field calls `gradient` and `sharp` by name through those types, so that
 /// when they are `final` the compiler inlines ∂H/∂μ and k♯ into the field: one virtual call
@@ -456,3 +472,16 @@ std::shared_ptr<const LiePoissonSystem<typename HP::Group>> makeLiePoissonSystem
 }
 
 }  // namespace ddb
+
+/// The explicit instantiations of LiePoissonSystem<G>'s virtual functions: with `extern` it
+/// declares them (a system's header: systems/rigid_body.h), with nothing it defines them
+/// (instantiations/lie_poisson_systems.cc). G must be complete.
+#define DDB_LIE_POISSON_SYSTEM_INSTANCE(PREFIX, G)                                    \
+  PREFIX template void ddb::LiePoissonSystem<G>::explicitStep(                        \
+      const ::ddb::ButcherTableau<4>&, double, ::ddb::ExplicitStages<G, 4>&,          \
+      ::ddb::LiePoissonSystem<G>::Dual&) const;                                       \
+  PREFIX template ::ddb::LiePoissonSystem<G>::Dual ddb::LiePoissonSystem<G>::fieldAt( \
+      const ::ddb::LiePoissonSystem<G>::Dual&) const;                                 \
+  PREFIX template void ddb::LiePoissonSystem<G>::fieldInto(                           \
+      const ::ddb::LiePoissonSystem<G>::Dual&, ::ddb::FieldWorkspace<G>&,             \
+      ::ddb::LiePoissonSystem<G>::Dual&) const

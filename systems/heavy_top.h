@@ -106,3 +106,6 @@ std::shared_ptr<const LiePoissonSystem<SE3>> makeHeavyTop(
     const Eigen::Matrix<double, 6, 1>& metric);
 
 }  // namespace ddb
+
+// The generic system of SE(3) compiled once (instantiations/lie_poisson_systems.cc).
+DDB_LIE_POISSON_SYSTEM_INSTANCE(extern, ::ddb::SE3);

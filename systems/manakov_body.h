@@ -49,3 +49,6 @@ std::shared_ptr<const LiePoissonSystem<SON>> makeManakovBody(const Eigen::Vector
                                                              double alpha);
 
 }  // namespace ddb
+
+// The generic system of SO(N) compiled once (instantiations/lie_poisson_systems.cc).
+DDB_LIE_POISSON_SYSTEM_INSTANCE(extern, ::ddb::SON);

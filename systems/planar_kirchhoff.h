@@ -77,3 +77,6 @@ std::shared_ptr<const LiePoissonSystem<SE2>> makePlanarKirchhoffBody(double iner
                                                                      const Eigen::Vector3d& metric);
 
 }  // namespace ddb
+
+// The generic system of SE(2) compiled once (instantiations/lie_poisson_systems.cc).
+DDB_LIE_POISSON_SYSTEM_INSTANCE(extern, ::ddb::SE2);

@@ -77,3 +77,6 @@ std::shared_ptr<const LiePoissonSystem<SO3>> makeRigidBody(const Eigen::Vector3d
                                                            double alpha);
 
 }  // namespace ddb
+
+// The generic system of SO(3) compiled once (instantiations/lie_poisson_systems.cc).
+DDB_LIE_POISSON_SYSTEM_INSTANCE(extern, ::ddb::SO3);

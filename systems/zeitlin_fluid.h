@@ -72,3 +72,6 @@ std::shared_ptr<const LiePoissonSystem<SUN>> makeZeitlinFluid(Eigen::Index n, do
                                                               const ZeitlinPhysics& physics);
 
 }  // namespace ddb
+
+// The generic system of SU(N) compiled once (instantiations/lie_poisson_systems.cc).
+DDB_LIE_POISSON_SYSTEM_INSTANCE(extern, ::ddb::SUN);

@@ -139,3 +139,6 @@ class ZeitlinMhdDiagnostics {
 };
 
 }  // namespace ddb
+
+// The generic system of SU(N) ⋉ su(N)* compiled once (instantiations/lie_poisson_systems.cc).
+DDB_LIE_POISSON_SYSTEM_INSTANCE(extern, ::ddb::DualNumberSUN);
