@@ -398,7 +398,7 @@ class LiePoissonSystem {
 
 // The generic system's virtual functions, defined out of the class: GCC compiles a member defined
 // in its class in every unit that builds the vtable, even where an `extern template` declares it,
-// and for SO(N) and SU(N) these three cost about 6 s and 4 s of a unit's compile. So the library
+// and for SO(N) and SU(N) these three cost about 7 s and 4 s of a unit's compile. So the library
 // compiles them once for the group of each system it ships (DDB_LIE_POISSON_SYSTEM_INSTANCE below,
 // declared by the system's header; docs/results/compile-costs.md, "The generic system's virtual
 // functions compiled once").
