@@ -400,8 +400,8 @@ class LiePoissonSystem {
 // in its class in every unit that builds the vtable, even where an `extern template` declares it,
 // and for SO(N) and SU(N) these three cost about 7 s and 4 s of a unit's compile. So the library
 // compiles them once for the group of each system it ships (DDB_LIE_POISSON_SYSTEM_INSTANCE below,
-// declared by the system's header; docs/results/compile-costs.md, "The generic system's virtual
-// functions compiled once").
+// declared by the systems' headers and the method tables' units; docs/results/compile-costs.md,
+// "The generic system's virtual functions compiled once").
 template <class G>
 void LiePoissonSystem<G>::explicitStep(const ButcherTableau<4>& tableau, double h,
                                        ExplicitStages<G, 4>& w, Dual& mu) const {
@@ -474,7 +474,8 @@ std::shared_ptr<const LiePoissonSystem<typename HP::Group>> makeLiePoissonSystem
 }  // namespace ddb
 
 /// The explicit instantiations of LiePoissonSystem<G>'s virtual functions: with `extern` it
-/// declares them (a system's header: systems/rigid_body.h), with nothing it defines them
+/// declares them (a system's header: systems/rigid_body.h; the library's method tables'
+/// units, instantiations/method_table_so3.cc), with nothing it defines them
 /// (instantiations/lie_poisson_systems.cc). G must be complete.
 #define DDB_LIE_POISSON_SYSTEM_INSTANCE(PREFIX, G)                                    \
   PREFIX template void ddb::LiePoissonSystem<G>::explicitStep(                        \
